@@ -1,0 +1,42 @@
+// Closest-hit and any-hit queries over a whole scene.
+//
+// An Aggregate flattens the scene tree (geometry/object.h) into world-space
+// primitives once, at construction, and answers queries over that list.
+// BruteForce tests every primitive; Grid marches a uniform grid with 3D-DDA
+// (Amanatides & Woo) over the bounded primitives and tests unbounded ones
+// (planes) directly. Both return the same closest hit for every ray.
+#pragma once
+#include <array>
+#include <memory>
+#include <string>
+
+#include "geometry/object.h"
+
+namespace aliaslab {
+
+struct AggregateStats {
+  size_t primitives = 0;   ///< bounded + unbounded primitives after flattening
+  size_t unbounded = 0;    ///< primitives kept outside the grid
+  std::array<int, 3> cells{0, 0, 0};  ///< grid resolution (0 for brute force)
+  size_t references = 0;   ///< primitive references stored in grid cells
+};
+
+class Aggregate {
+ public:
+  virtual ~Aggregate() = default;
+  /// Closest hit with tmin < t < hit.t; same contract as Object::intersect.
+  virtual bool intersect(const Ray& ray, float tmin, Hit& hit) const = 0;
+  /// Any hit with tmin < t < tmax (shadow rays).
+  virtual bool occluded(const Ray& ray, float tmin, float tmax) const = 0;
+  virtual AggregateStats stats() const = 0;
+  virtual std::string describe() const = 0;
+};
+
+std::unique_ptr<Aggregate> makeBruteForce(const Object& root);
+
+/// A uniform grid of nx x ny x nz cells over the bounded primitives. A zero
+/// resolution is chosen automatically: about 3 * cbrt(N) cells along the
+/// longest axis for N primitives, proportionally fewer along shorter ones.
+std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, int nz = 0);
+
+}  // namespace aliaslab

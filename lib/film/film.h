@@ -1,0 +1,98 @@
+// The film: samples in, pixels out.
+//
+// A SampleBuffer holds one traced sample set: for each pixel (i, j), spp
+// samples stored contiguously at [(j * width + i) * spp, ... + spp). Each
+// sample is a film position (continuous pixel coordinates, pixel (i, j)
+// covers [i, i+1) x [j, j+1), y up), its radiance (linear, unclamped) and a
+// weight (1, except for filter importance sampling, where it is
+// sign(f) * integral |f|).
+//
+// Reconstruction turns a buffer into an Image and counts what went wrong
+// (ReconStats). The modes are defined in ../shared/guide/SCIENCE.md.
+#pragma once
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+#include "filter/filter.h"
+
+namespace aliaslab {
+
+struct FilmSample {
+  float x = 0, y = 0;          ///< film position
+  Color L = Color::Zero();     ///< radiance
+  float weight = 1.f;          ///< importance weight (1 unless filter importance sampling)
+};
+
+class SampleBuffer {
+ public:
+  SampleBuffer() = default;
+  SampleBuffer(int width, int height, int spp)
+      : width_(width), height_(height), spp_(spp), samples_(static_cast<size_t>(width) * height * spp) {}
+  int width() const { return width_; }
+  int height() const { return height_; }
+  int spp() const { return spp_; }
+  FilmSample* pixel(int i, int j) { return &samples_[(static_cast<size_t>(j) * width_ + i) * spp_]; }
+  const FilmSample* pixel(int i, int j) const { return &samples_[(static_cast<size_t>(j) * width_ + i) * spp_]; }
+  std::vector<FilmSample>& samples() { return samples_; }
+  const std::vector<FilmSample>& samples() const { return samples_; }
+
+ private:
+  int width_ = 0, height_ = 0, spp_ = 0;
+  std::vector<FilmSample> samples_;
+};
+
+/// What happened to the pixels of one reconstruction.
+struct ReconStats {
+  size_t undefinedPixels = 0;   ///< |sum of weights| below tolerance (documented fallback used)
+  size_t negativePixels = 0;    ///< some channel < 0 (kept as computed; see reconstruct())
+  size_t nanPixels = 0;         ///< a non-finite value was produced (documented fallback used)
+  size_t nonFiniteSamples = 0;  ///< samples with NaN/inf radiance (skipped)
+  ReconStats& operator+=(const ReconStats& o);
+};
+
+struct Reconstruction {
+  Image image;
+  ReconStats stats;
+};
+
+enum class ReconMode {
+  WeightedAverage,     ///< sum f L / sum f over every sample within the radius, clipped by the film edge
+  Classic,             ///< the course's gather: samples of pixels i-R..i+R with R = classicSupport(filter)
+  ImportanceSampled,   ///< sum w L / sum w over the pixel's own samples (weights from Filter::sample)
+  Supersample,         ///< spp = k^2 sub-pixel centres, 3x3 binomial blur, k x k box average
+};
+std::string toString(ReconMode mode);
+/// Parses "weighted", "classic", "importance", "supersample"; throws OptionError("--reconstruction").
+ReconMode parseReconMode(const std::string& name);
+
+/// The classic integer support: ceil(r - 0.5) for box and tent, ceil(2 sigma - 0.5) for the Gaussian.
+int classicSupport(const Filter& filter);
+
+/// Reconstructs with `mode`; `filter` is ignored by Supersample. Deterministic for any thread count.
+Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, ReconMode mode, int threads = 0);
+
+/// Streaming accumulation of the weighted average into several filters at
+/// once, in double precision, without storing samples: memory is
+/// width x height x filters x 4 doubles. add() may be called with any number
+/// of batches (each a SampleBuffer of the full image); the result equals
+/// reconstructing the union of all batches. Deterministic for any thread count.
+class Accumulator {
+ public:
+  Accumulator(int width, int height, std::vector<const Filter*> filters);
+  void add(const SampleBuffer& batch, int threads = 0);
+  /// Resolves filter k's image (same outcomes and counts as reconstruct()).
+  Reconstruction resolve(size_t k) const;
+  size_t samplesAdded() const { return samplesAdded_; }
+  size_t bytes() const;  ///< memory held by the accumulators
+
+ private:
+  int width_, height_;
+  std::vector<const Filter*> filters_;
+  std::vector<std::vector<double>> sums_;  ///< per filter: r, g, b, weight per pixel
+  size_t samplesAdded_ = 0;
+  size_t nonFinite_ = 0;
+};
+
+}  // namespace aliaslab

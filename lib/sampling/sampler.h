@@ -1,0 +1,61 @@
+// Pixel sampling patterns.
+//
+// Protocol: a Sampler is constructed for one sample count `spp` and one
+// `seed`, and is immutable after that. generate(px, py, out) writes exactly
+// spp points in [0,1)^2, the positions inside pixel (px, py) (add px, py to
+// get film coordinates). The points are a pure function of (seed, px, py):
+// calling generate for pixels in any order, on any thread, gives the same
+// points, and different pixels get decorrelated sets (independent
+// scrambles / permutations / jitter derived from core/hash.h).
+//
+// Counts a pattern does not naturally take (a non-square count for a grid
+// pattern, a non-power of two for a (0,2)-sequence) are handled explicitly:
+// either the pattern adapts in a documented way (e.g. an m x n grid with
+// m * n = spp), reported by warning(), or the factory throws OptionError.
+// Points never leave [0,1)^2 and the count is never rounded.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/math.h"
+
+namespace aliaslab {
+
+class Sampler {
+ public:
+  Sampler(int spp, uint64_t seed) : spp_(spp), seed_(seed) {}
+  virtual ~Sampler() = default;
+
+  /// Writes spp() points in [0,1)^2 for pixel (px, py) to out[0 .. spp()).
+  virtual void generate(int px, int py, Vec2* out) const = 0;
+
+  /// The factory name ("jittered", "sobol", ...).
+  virtual std::string name() const = 0;
+  /// One line for logs and CSV rows, e.g. "jittered 2x4 strata".
+  virtual std::string describe() const = 0;
+  /// Non-empty when spp is not a count this pattern naturally takes; says what it does instead.
+  virtual std::string warning() const { return {}; }
+
+  int spp() const { return spp_; }
+  uint64_t seed() const { return seed_; }
+
+ private:
+  int spp_;
+  uint64_t seed_;
+};
+
+/// Every registered name, in a fixed order (tests and the sweep iterate it).
+const std::vector<std::string>& samplerNames();
+
+/// Makes a sampler by name. Throws OptionError("--sampler", ...) listing the
+/// valid names for an unknown one, and OptionError("--spp", ...) for spp < 1
+/// or a count the pattern refuses.
+std::unique_ptr<Sampler> makeSampler(const std::string& name, int spp, uint64_t seed);
+
+/// The m x n grid (m columns, n rows, m <= n, m * n = spp, m as large as
+/// possible) that grid-based patterns use for any spp; square when spp is.
+void gridShape(int spp, int& columns, int& rows);
+
+}  // namespace aliaslab

@@ -1,0 +1,79 @@
+// Materials: how a surface point responds to light.
+//
+// The tracer asks a material, at a world-space hit point p with unit shading
+// normal n (already flipped towards the viewer when -shade_back applies):
+//   shade()       direct diffuse + specular light from one light,
+//   diffuse()     the colour the ambient light multiplies,
+//   reflective(), transparent(), indexOfRefraction()  for secondary rays.
+// Procedural materials blend two earlier materials point by point: each
+// query returns (1 - w) * first + w * second with the blend weight w(p) of
+// the pattern, so nested procedurals compose.
+#pragma once
+#include <memory>
+
+#include "core/math.h"
+
+namespace aliaslab {
+
+class Material {
+ public:
+  virtual ~Material() = default;
+  /// Diffuse + specular response to light of colour `lightColor` arriving
+  /// from unit direction `toLight`; `toViewer` is the unit direction back
+  /// along the incoming ray.
+  virtual Color shade(const Vec3& p, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
+                      const Color& lightColor) const = 0;
+  virtual Color diffuse(const Vec3& p) const = 0;
+  virtual Color reflective(const Vec3& p) const = 0;
+  virtual Color transparent(const Vec3& p) const = 0;
+  virtual float indexOfRefraction(const Vec3& p) const = 0;
+};
+
+/// PhongMaterial (alias Material). Blinn-Phong: for n.l > 0,
+///   shade = lightColor * (diffuse * (n.l) + specular * max(0, n.h)^exponent),
+/// h = normalize(toLight + toViewer); zero when n.l <= 0.
+struct PhongParams {
+  Color diffuse = Color::Ones();         ///< diffuseColor, default 1 1 1
+  Color specular = Color::Zero();        ///< specularColor, default 0
+  float exponent = 1.f;                  ///< exponent, default 1
+  Color reflective = Color::Zero();      ///< reflectiveColor, default 0
+  Color transparent = Color::Zero();     ///< transparentColor, default 0
+  float indexOfRefraction = 1.f;         ///< default 1
+};
+std::unique_ptr<Material> makePhong(const PhongParams& params);
+
+/// Checkerboard: unit cells in texture space (textureFromWorld * p),
+/// `first` where floor(x)+floor(y)+floor(z) is even, else `second`.
+std::unique_ptr<Material> makeCheckerboard(const Mat4& textureFromWorld, const Material* first,
+                                           const Material* second);
+
+/// Noise: w = clamp(N(q), 0, 1), N(q) = sum_{k<octaves} noise(2^k q) / 2^k,
+/// q = textureFromWorld * p, noise = Perlin's improved noise (2002).
+std::unique_ptr<Material> makeNoise(const Mat4& textureFromWorld, const Material* first,
+                                    const Material* second, int octaves);
+
+/// Marble: w = 0.5 + 0.5 * sin(frequency * q.x + amplitude * N(q)).
+std::unique_ptr<Material> makeMarble(const Mat4& textureFromWorld, const Material* first,
+                                     const Material* second, int octaves, float frequency,
+                                     float amplitude);
+
+/// Wood: rings around the texture-space y axis,
+/// w = 0.5 + 0.5 * sin(frequency * sqrt(q.x^2 + q.z^2) + amplitude * N(q)).
+std::unique_ptr<Material> makeWood(const Mat4& textureFromWorld, const Material* first,
+                                   const Material* second, int octaves, float frequency,
+                                   float amplitude);
+
+/// aliaslab extension for analytic aliasing test patterns, evaluated on
+/// texture-space (x, y):
+///   zoneplate  w = 0.5 + 0.5 * sin(frequency * (x^2 + y^2))
+///   sinc       w = 0.5 + 0.5 * sinc(frequency x) * sinc(frequency y), sinc(t) = sin(pi t)/(pi t)
+///   siemens    w = 1 when sin(frequency * atan2(y, x)) >= 0 else 0 (frequency = number of spoke pairs)
+///   stripes    w = 1 when sin(2 pi frequency x) >= 0 else 0
+enum class PatternKind { ZonePlate, Sinc, Siemens, Stripes };
+std::unique_ptr<Material> makePattern(const Mat4& textureFromWorld, const Material* first,
+                                      const Material* second, PatternKind kind, float frequency);
+
+/// Perlin's improved noise (2002) with his published permutation; in about [-1, 1].
+float perlinNoise(float x, float y, float z);
+
+}  // namespace aliaslab
