@@ -35,8 +35,11 @@ class Aggregate {
 std::unique_ptr<Aggregate> makeBruteForce(const Object& root);
 
 /// A uniform grid of nx x ny x nz cells over the bounded primitives. A zero
-/// resolution is chosen automatically: about 3 * cbrt(N) cells along the
-/// longest axis for N primitives, proportionally fewer along shorter ones.
+/// resolution is chosen automatically: ceil(2 * cbrt(N)) cells along the
+/// longest axis for N bounded primitives, proportionally fewer along shorter
+/// ones (at least 1, at most 256). 2 rather than 3 cube roots: fewer empty
+/// cells to step through, measured faster on vase, reflective_refractive and
+/// gem (results/tracing_speed.md).
 std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, int nz = 0);
 
 }  // namespace aliaslab

@@ -9,6 +9,21 @@
 //
 // Reconstruction turns a buffer into an Image and counts what went wrong
 // (ReconStats). The modes are defined in ../shared/guide/SCIENCE.md.
+//
+// Degenerate outcomes (every mode; no NaN ever reaches an Image):
+// - a sample with a non-finite position or radiance is skipped and counted
+//   in nonFiniteSamples;
+// - a pixel whose |sum of weights| is below the tolerance is undefined: it
+//   takes the plain mean of its own finite samples (0 if it has none) and is
+//   counted in undefinedPixels. Tolerance: 1e-8 * |f(0, 0)| (the filter's
+//   peak) for WeightedAverage and Accumulator, 1e-8 * |evalClassic(0, 0)|
+//   for Classic, 1e-8 * absIntegral() for ImportanceSampled. Supersample
+//   has no weights: a pixel with no finite sample is undefined (value 0);
+// - a result that is not finite in float (overflow, inf / inf) takes the same
+//   fallback and is counted in nanPixels;
+// - a pixel with a negative channel keeps it (it is what the filter made;
+//   the 8-bit writer clamps) and is counted in negativePixels.
+// FilmSample::weight is used by ImportanceSampled only.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -67,10 +82,18 @@ std::string toString(ReconMode mode);
 /// Parses "weighted", "classic", "importance", "supersample"; throws OptionError("--reconstruction").
 ReconMode parseReconMode(const std::string& name);
 
-/// The classic integer support: ceil(r - 0.5) for box and tent, ceil(2 sigma - 0.5) for the Gaussian.
+/// The classic integer support: ceil(2 sigma - 0.5) for the Gaussian, ceil(r - 0.5) for every other filter.
 int classicSupport(const Filter& filter);
 
-/// Reconstructs with `mode`; `filter` is ignored by Supersample. Deterministic for any thread count.
+/// Reconstructs with `mode`; `filter` is ignored by Supersample, which throws
+/// OptionError("--spp", ...) unless spp = k * k. Supersample puts each sample
+/// in the sub-pixel cell of the k-times finer grid that contains its
+/// position (a cell with several samples takes their mean, an empty cell
+/// the mean of its pixel's finite samples), blurs with [1 2 1]/4 x [1 2 1]/4
+/// (renormalised over the taps inside the image) and averages k x k blocks.
+/// Classic uses Filter::evalClassic over the samples of pixels i-R..i+R,
+/// j-R..j+R, R = classicSupport(filter). `threads`: 0 = all cores.
+/// Deterministic for any thread count.
 Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, ReconMode mode, int threads = 0);
 
 /// Streaming accumulation of the weighted average into several filters at
@@ -91,6 +114,7 @@ class Accumulator {
   int width_, height_;
   std::vector<const Filter*> filters_;
   std::vector<std::vector<double>> sums_;  ///< per filter: r, g, b, weight per pixel
+  std::vector<double> plain_;              ///< r, g, b, count of each pixel's own finite samples (fallback)
   size_t samplesAdded_ = 0;
   size_t nonFinite_ = 0;
 };

@@ -9,8 +9,15 @@
 // computed once at construction). Filters with negative lobes return
 // negative weights; nothing is clamped.
 //
+// Every filter is a 1-D profile g: separable filters are f = g(dx) g(dy) on
+// the square [-r, r]^2, radial ones f = g(sqrt(dx^2 + dy^2)) on the disc.
+//
 // Filters whose natural profile has a fixed support (Mitchell: 2, Lanczos:
 // tau lobes) are stretched to the radius: f_r(x) = f(x * natural / r).
+//
+// Protocol: filters are made only by makeFilter(), which builds the
+// importance-sampling table and the integral of |f| once, so a finished
+// Filter is immutable and safe to share between threads.
 #pragma once
 #include <map>
 #include <memory>
@@ -21,34 +28,64 @@
 
 namespace aliaslab {
 
+using FilterParams = std::map<std::string, double>;
+struct FilterTable;
+
 class Filter {
  public:
   explicit Filter(float radius) : radius_(radius) {}
-  virtual ~Filter() = default;
+  virtual ~Filter();
 
   float radius() const { return radius_; }
   virtual float eval(float dx, float dy) const = 0;
   virtual double integral() const = 0;
-  /// Integral of |f| (for filter importance sampling).
+  /// Integral of |f| (for filter importance sampling); numeric, computed by makeFilter.
   virtual double absIntegral() const;
   /// True when the support is a disc of radius r, false for the square [-r, r]^2.
   virtual bool radial() const = 0;
+  /// The 1-D profile g (see above); zero for |x| > r.
+  virtual float profile(float x) const = 0;
+
+  /// Weights of a whole footprint in one call (the film's fast path):
+  /// out[b * nx + a] = eval(dx[a], dy[b]) for a < nx, b < ny (up to float
+  /// rounding: the Gaussian multiplies per-axis exponentials).
+  virtual void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const;
+  /// The film's fast path, one call per sample at film position (x, y):
+  /// weights at the centres of pixel columns i0 .. i0+nx-1 and rows
+  /// j0 .. j0+ny-1, which the caller keeps inside the support's bounding
+  /// square (|dx| <= r and |dy| <= r, as eval() tests them):
+  /// out[b * footprintStride(nx) + a] = eval(x - (i0 + a + 0.5), y - (j0 + b + 0.5));
+  /// the row padding is scratch. Equal to eval() up to a few float ulps
+  /// (vectorised sqrt, cos, exp; the Gaussian is a product per axis).
+  virtual void evalFootprint(float x, float y, int i0, int nx, int j0, int ny, float* out) const;
+  /// Row stride of evalFootprint's output: nx rounded up to a multiple of 4.
+  static int footprintStride(int nx) { return (nx + 3) & ~3; }
+  /// The weight the course's classic gather uses: eval(), except that the
+  /// course's Gaussian is exp(-d^2 / 2 sigma^2) uncut (no radius, no edge term).
+  virtual float evalClassic(float dx, float dy) const { return eval(dx, dy); }
 
   virtual std::string name() const = 0;
-  /// One line: name, radius and every shape parameter, e.g. "mitchell r=2 B=0.333 C=0.333".
-  virtual std::string describe() const = 0;
+  /// Shape parameters (without the radius) and their values.
+  virtual FilterParams params() const { return {}; }
+  /// One line: name, radius and every shape parameter, e.g. "mitchell r=2 B=0.3333 C=0.3333".
+  virtual std::string describe() const;
 
   /// Filter importance sampling: maps u in [0,1)^2 to an offset with density
-  /// |f| / absIntegral(), and sets `weight` = sign(f(offset)) * absIntegral().
-  /// The default uses a tabulated 2-D distribution built on first use.
+  /// |f| / absIntegral() (up to the tabulation: |f| averaged over cells of
+  /// width r / 1024 along each separable axis, or along the radius of radial
+  /// filters), and sets `weight` = sign(f(offset)) * absIntegral().
+  /// Separable filters use u.x for dx and u.y for dy; radial ones u.x for
+  /// the distance and u.y for the angle.
   virtual Vec2 sample(const Vec2& u, float& weight) const;
 
  private:
-  float radius_;
-  mutable std::shared_ptr<const struct FilterTable> table_;
-};
+  friend std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params);
+  /// Builds table_ (called once by makeFilter on the finished object).
+  void prepare();
 
-using FilterParams = std::map<std::string, double>;
+  float radius_;
+  std::shared_ptr<const FilterTable> table_;
+};
 
 /// Every registered name, in a fixed order.
 const std::vector<std::string>& filterNames();
@@ -56,7 +93,7 @@ const std::vector<std::string>& filterNames();
 /// Makes a filter by name with support radius `radius` and shape `params`.
 /// Throws OptionError("--filter", ...) listing the valid names for an unknown
 /// name, OptionError("--radius", ...) for a radius that is not finite and
-/// positive, and OptionError naming the parameter for an unknown or
+/// positive, and OptionError("--filter-param", ...) naming the parameter for an unknown or
 /// out-of-range shape parameter (so a misspelt "sigmaa" cannot pass).
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params = {});
 

@@ -13,6 +13,16 @@
 // either the pattern adapts in a documented way (e.g. an m x n grid with
 // m * n = spp), reported by warning(), or the factory throws OptionError.
 // Points never leave [0,1)^2 and the count is never rounded.
+//
+// The order of the points within a pixel carries no meaning (grid patterns
+// write them cell by cell): do not split a pixel's points by index into
+// "independent halves"; use two seeds instead. Construction may precompute
+// (pmj02 and bluenoise build a pool of 16 sequences per seed); generate()
+// is const and safe to call from many threads at once.
+//
+// Names: see samplerNames(); each implementation file (lib/sampling/<name>.cpp)
+// opens with a table of what the pattern is, how it handles counts and when
+// to use it.
 #pragma once
 #include <cstdint>
 #include <memory>

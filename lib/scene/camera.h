@@ -3,6 +3,7 @@
 // 0..1 and the smaller one is centred inside it.
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/math.h"
 #include "core/ray.h"
@@ -16,6 +17,8 @@ class Camera {
   /// Smallest t a primary ray accepts: -infinity for orthographic cameras
   /// (everything along the viewing line is seen), 0 for perspective.
   virtual float tMin() const = 0;
+  /// One line: kind and every parameter, e.g. "perspective center (0 1 5) direction (0 0 -1) up (0 1 0) angle 40".
+  virtual std::string describe() const = 0;
 };
 
 /// Film position (continuous pixels, y up) to the camera's square screen.
@@ -24,10 +27,16 @@ inline Vec2 filmToScreen(float fx, float fy, int width, int height) {
   return Vec2((fx - 0.5f * width) / side + 0.5f, (fy - 0.5f * height) / side + 0.5f);
 }
 
-/// OrthographicCamera { center P direction D up U size S }
+// Both factories normalise D, make U perpendicular to D (Gram-Schmidt) and
+// take horizontal = D x U. They throw InputError("camera: ...") when D is
+// zero or U is zero or parallel to D (the parser adds the file and line).
+
+/// OrthographicCamera { center P direction D up U size S }: screen (sx, sy)
+/// gives origin P + (sx - 0.5) S horizontal + (sy - 0.5) S up, direction D.
 std::unique_ptr<Camera> makeOrthographicCamera(const Vec3& center, const Vec3& direction,
                                                const Vec3& up, float size);
-/// PerspectiveCamera { center P direction D up U angle A } (A: full field of view, degrees)
+/// PerspectiveCamera { center P direction D up U angle A } (A: full field of view, degrees):
+/// origin P, direction normalize(D + (2sx-1) tan(A/2) horizontal + (2sy-1) tan(A/2) up).
 std::unique_ptr<Camera> makePerspectiveCamera(const Vec3& center, const Vec3& direction,
                                               const Vec3& up, float angleDegrees);
 

@@ -3,6 +3,7 @@
 // (infinity for directional lights) so shadow rays know where to stop.
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/math.h"
 
@@ -12,6 +13,8 @@ class Light {
  public:
   virtual ~Light() = default;
   virtual void illuminate(const Vec3& p, Vec3& toLight, Color& color, float& distance) const = 0;
+  /// One line: kind and every parameter.
+  virtual std::string describe() const = 0;
 };
 
 /// DirectionalLight { direction D color C }: D is the direction light travels.

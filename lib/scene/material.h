@@ -10,6 +10,7 @@
 // the pattern, so nested procedurals compose.
 #pragma once
 #include <memory>
+#include <string>
 
 #include "core/math.h"
 
@@ -27,6 +28,8 @@ class Material {
   virtual Color reflective(const Vec3& p) const = 0;
   virtual Color transparent(const Vec3& p) const = 0;
   virtual float indexOfRefraction(const Vec3& p) const = 0;
+  /// One line: kind and parameters; procedurals include their two materials.
+  virtual std::string describe() const = 0;
 };
 
 /// PhongMaterial (alias Material). Blinn-Phong: for n.l > 0,

@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""Each filter's 1-D profile and the magnitude of its frequency response.
+
+Usage: /usr/bin/python3 analysis/filter_profiles.py --out DIR
+           [--csv profiles.csv | --bin build/bin/filterprofile]
+
+The numbers come from the C++ experiment `filterprofile` (the library's own
+Filter::eval, one source of truth): either a CSV it wrote (--csv) or the
+binary, run here (--bin). Writes DIR/filter_profiles.png/.svg and, when the
+binary was run, DIR/filter_profiles.csv. Left: the 1-D profile g(x) (x in
+pixels; f = g(x) g(y) or g(|d|)) at each
+filter's natural radius; right: |H(nu)|, the 2-D filter's normalised Fourier
+transform along the x axis, with the pixel Nyquist frequency 0.5 marked:
+response below 0.5 lost is blur, response above 0.5 kept is aliasing,
+overshoot of the profile below 0 is ringing.
+"""
+import argparse
+import io
+import os
+import subprocess
+import sys
+
+import pandas as pd
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import common  # noqa: E402
+from common import plt  # noqa: E402
+
+COLUMNS = ["filter", "radius", "describe", "kind", "x", "value"]
+
+
+def chart(df, out_dir):
+    fig, (a, b) = plt.subplots(1, 2, figsize=(14, 5))
+    for i, (name, g) in enumerate(df.groupby("filter", sort=False)):
+        label = g["describe"].iloc[0]
+        p = g[g["kind"] == "profile"]
+        r = g[g["kind"] == "response"]
+        a.plot(p["x"], p["value"], color=common.colour(i), lw=1.2, label=label)
+        b.plot(r["x"], r["value"], color=common.colour(i), lw=1.2, label=label)
+    a.axhline(0, color="k", lw=0.6)
+    a.set_xlabel("offset x (pixels)")
+    a.set_ylabel("1-D profile g(x)")
+    a.set_title("Profiles at the natural radius (below 0: negative lobes, ringing)")
+    b.axvline(0.5, color="grey", ls="--", lw=0.8, label="Nyquist (0.5 cycles/pixel)")
+    b.set_yscale("log")
+    b.set_ylim(1e-4, 1.5)
+    b.set_xlabel("frequency (cycles per pixel)")
+    b.set_ylabel("|H| (normalised, H(0) = 1)")
+    b.set_title("Frequency response along x: blur below Nyquist, leakage above")
+    for ax in (a, b):
+        ax.grid(True, which="major", alpha=0.3)
+    b.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    return common.save_figure(fig, out_dir, "filter_profiles")
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description="Filter profiles and frequency responses")
+    ap.add_argument("--out", required=True)
+    src = ap.add_mutually_exclusive_group(required=True)
+    src.add_argument("--csv", help="CSV written by filterprofile")
+    src.add_argument("--bin", help="the filterprofile executable, run here")
+    args = ap.parse_args(argv)
+    try:
+        if args.csv:
+            df = pd.read_csv(args.csv)
+        else:
+            text = subprocess.run([args.bin], check=True, capture_output=True, text=True).stdout
+            df = pd.read_csv(io.StringIO(text))
+            os.makedirs(args.out, exist_ok=True)
+            df.to_csv(os.path.join(args.out, "filter_profiles.csv"), index=False)
+    except (OSError, subprocess.CalledProcessError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
+        common.fail(f"{args.csv or args.bin}: {e}")
+    missing = [c for c in COLUMNS if c not in df.columns]
+    if missing:
+        common.fail(f"{args.csv or args.bin}: line 1: missing column(s) {', '.join(missing)}")
+    chart(df, args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,118 @@
+"""Every chart is produced from a small generated study CSV, and the Pareto
+front and flagged table match what the CSV's known structure implies."""
+import itertools
+import os
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, ".."))
+sys.path.insert(0, HERE)
+import charts  # noqa: E402
+import convergence_chart  # noqa: E402
+import filter_profiles  # noqa: E402
+import pointset_chart  # noqa: E402
+import report  # noqa: E402
+import synthetic  # noqa: E402
+
+import pandas as pd  # noqa: E402
+
+
+def is_chart(path):
+    if not os.path.isfile(path) or os.path.getsize(path) < 1000:
+        return False
+    with open(path, "rb") as f:
+        head = f.read(400)
+    return head.startswith(b"\x89PNG") if path.endswith(".png") else b"<svg" in head
+
+
+class StudyCharts(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.csv = synthetic.write(os.path.join(cls.tmp.name, "study.csv"))
+        cls.out = os.path.join(cls.tmp.name, "charts")
+        charts.main([cls.csv, "--out", cls.out])
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_every_chart_is_written_as_png_and_svg(self):
+        names = ["stability"] + [f"{kind}_{scene}" for kind in ("speed_accuracy", "convergence", "heatmap")
+                                 for scene in ("a", "b")]
+        for name, ext in itertools.product(names, ("png", "svg")):
+            self.assertTrue(is_chart(os.path.join(self.out, f"{name}.{ext}")), f"{name}.{ext}")
+
+    def test_pareto_front_is_exactly_the_non_dominated_unflagged_rows(self):
+        df = pd.read_csv(self.csv)
+        df["time_ms"] = df["trace_ms"] + df["reconstruct_ms"]
+        front = pd.read_csv(os.path.join(self.out, "pareto.csv"))
+        for scene, sd in df[df["flagged"] == 0].groupby("scene"):
+            pts = list(zip(sd["time_ms"], sd["mse"]))
+            expected = {p for p in pts if not any(q[0] <= p[0] and q[1] <= p[1] and q != p for q in pts)}
+            got = set(zip(front[front["scene"] == scene]["time_ms"], front[front["scene"] == scene]["mse"]))
+            self.assertEqual(got, expected, scene)
+
+    def test_flagged_table_lists_the_flagged_rows(self):
+        flagged = pd.read_csv(os.path.join(self.out, "flagged.csv"))
+        # scene b, sampler random, spp 1: 2 filters x 2 radii.
+        self.assertEqual(len(flagged), 4)
+        self.assertTrue((flagged["sampler"] == "random").all() and (flagged["spp"] == 1).all())
+
+    def test_missing_column_is_a_clear_error(self):
+        bad = os.path.join(self.tmp.name, "bad.csv")
+        pd.read_csv(self.csv).drop(columns=["noise"]).to_csv(bad, index=False)
+        with self.assertRaises(SystemExit) as cm, open(os.devnull, "w") as devnull:
+            old, sys.stderr = sys.stderr, devnull
+            try:
+                charts.main([bad, "--out", self.out])
+            finally:
+                sys.stderr = old
+        self.assertEqual(cm.exception.code, 2)
+
+
+class OtherCharts(unittest.TestCase):
+    def test_convergence_pointset_filter_charts_and_index(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            # Convergence CSV with slopes -0.5 and -1.
+            rows = [(s, f, n, c * n ** e, 16) for s, e in (("random", -0.5), ("jittered", -1.0))
+                    for f, c in (("disk", 0.5), ("gaussian", 0.2)) for n in (1, 2, 4, 8, 16, 48, 64)]
+            conv = os.path.join(tmp, "convergence")
+            os.makedirs(conv)
+            pd.DataFrame(rows, columns=convergence_chart.COLUMNS).to_csv(os.path.join(conv, "c.csv"), index=False)
+            convergence_chart.main([os.path.join(conv, "c.csv"), "--out", conv, "--fit-min", "1"])
+            # Point-set tables.
+            ps = os.path.join(tmp, "pointsets")
+            os.makedirs(ps)
+            pd.DataFrame([("random", n, 4, 0.1 / n ** .5, 0.01, 0.1, 0.05, 0.3, "") for n in (16, 64)],
+                         columns=["sampler", "n", "sets", "l2star_mean", "l2star_sd", "min_dist_mean",
+                                  "min_dist_min", "min_dist_norm_mean", "warning"]).to_csv(
+                os.path.join(ps, "pointsets.csv"), index=False)
+            pd.DataFrame([("random", n, 4, k, k / n ** .5, 1.0) for n in (16, 64) for k in range(1, 9)],
+                         columns=["sampler", "n", "sets", "k", "k_norm", "power"]).to_csv(
+                os.path.join(ps, "spectra.csv"), index=False)
+            pointset_chart.main([ps, "--out", ps])
+            # Filter profiles.
+            fp = os.path.join(tmp, "filters")
+            os.makedirs(fp)
+            prof = [("box", 0.5, "box r=0.5", "profile", x / 10, float(abs(x) <= 5)) for x in range(-8, 9)]
+            prof += [("box", 0.5, "box r=0.5", "response", v / 10, 1.0 / (1 + v)) for v in range(0, 20)]
+            pd.DataFrame(prof, columns=filter_profiles.COLUMNS).to_csv(os.path.join(fp, "p.csv"), index=False)
+            filter_profiles.main(["--csv", os.path.join(fp, "p.csv"), "--out", fp])
+            for path in ("convergence/convergence", "pointsets/spectra", "pointsets/discrepancy",
+                         "filters/filter_profiles"):
+                for ext in ("png", "svg"):
+                    self.assertTrue(is_chart(os.path.join(tmp, f"{path}.{ext}")), f"{path}.{ext}")
+            # The index shows every PNG and loads nothing from outside the folder.
+            page = open(report.build_index(tmp), encoding="utf-8").read()
+            for path in ("convergence/convergence.png", "pointsets/spectra.png", "filters/filter_profiles.png"):
+                self.assertIn(f"src='{path}'", page)
+            self.assertNotIn("http", page.replace("<!DOCTYPE html>", ""))
+            embedded = open(report.build_index(tmp, embed=True), encoding="utf-8").read()
+            self.assertIn("data:image/png;base64,", embedded)
+
+
+if __name__ == "__main__":
+    unittest.main()

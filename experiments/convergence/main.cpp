@@ -1,0 +1,157 @@
+// convergence: RMSE against N for every sampler on the analytic integrands
+// of SCIENCE.md, the fitted log-log slopes, and a table comparing them with
+// the slopes theory expects.
+//
+// Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations),
+// slopes.md, and (unless --no-chart) convergence.png/.svg drawn by
+// analysis/convergence_chart.py.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include "core/error.h"
+#include "sampling/sampler.h"
+#include "study/convergence.h"
+
+namespace fs = std::filesystem;
+using namespace aliaslab;
+
+namespace {
+
+struct Params {
+  std::string out = "results/convergence";  // output folder
+  int realisations = 256;                   // independent sets per (sampler, N)
+  int maxN = 4096;                          // largest N (powers of two 1 .. maxN, plus a few non-powers)
+  double fitMin = 16, fitMax = 4096;        // N range of the slope fit (powers of two only)
+  uint64_t seed = 1;                        // sampler seed
+  std::vector<std::string> samplers;        // default: every registered sampler
+  int threads = 0;                          // 0 = all cores
+  bool chart = true;                        // run analysis/convergence_chart.py
+};
+
+// Writes `text` to path via a temporary file and rename: no half-written output.
+void writeAtomically(const fs::path& path, const std::string& text) {
+  fs::path tmp = path;
+  tmp += ".partial";
+  {
+    std::ofstream f(tmp);
+    if (!f) throw FileError(tmp.string(), "cannot open for writing");
+    f << text;
+    if (!f.flush()) throw FileError(tmp.string(), "write failed");
+  }
+  fs::rename(tmp, path);
+}
+
+std::vector<int> sampleCounts(int maxN) {
+  std::vector<int> ns;
+  for (int n = 1; n <= maxN; n *= 2) ns.push_back(n);
+  for (int n : {3, 10, 48, 100, 1000}) if (n <= maxN) ns.push_back(n);
+  std::sort(ns.begin(), ns.end());
+  return ns;
+}
+
+std::string fmt(double v, const char* f = "%.3f") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Params p;
+  CLI::App app{"RMSE against N of every sampler on the analytic integrands, with fitted slopes"};
+  app.add_option("--out", p.out, "Output folder")->capture_default_str();
+  app.add_option("--realisations", p.realisations, "Independent sets per (sampler, N)")->capture_default_str()
+      ->check(CLI::Range(2, 1 << 20));
+  app.add_option("--max-n", p.maxN, "Largest N")->capture_default_str()->check(CLI::Range(16, 1 << 16));
+  app.add_option("--fit-min", p.fitMin, "Smallest N in the slope fit")->capture_default_str();
+  app.add_option("--fit-max", p.fitMax, "Largest N in the slope fit")->capture_default_str();
+  app.add_option("--seed", p.seed, "Sampler seed")->capture_default_str();
+  app.add_option("--sampler", p.samplers, "Samplers to run (default: all)");
+  app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
+  app.add_flag("!--no-chart", p.chart, "Skip the chart");
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    if (p.samplers.empty()) p.samplers = samplerNames();
+    for (const auto& s : p.samplers) makeSampler(s, 1 << 4, p.seed);  // unknown names fail before any work
+    fs::create_directories(p.out);
+    const auto& fsList = integrands();
+    const auto ns = sampleCounts(p.maxN);
+
+    // Measure: one CSV row per (sampler, integrand, N).
+    std::ostringstream csv;
+    csv << "sampler,integrand,n,rmse,realisations\n";
+    std::map<std::pair<std::string, std::string>, std::pair<std::vector<double>, std::vector<double>>> series;
+    for (const auto& s : p.samplers) {
+      const auto start = std::chrono::steady_clock::now();
+      for (int n : ns) {
+        std::unique_ptr<Sampler> sampler;
+        try {
+          sampler = makeSampler(s, n, p.seed);
+        } catch (const OptionError& e) {
+          std::cerr << "skipped " << s << " N=" << n << ": " << e.what() << "\n";
+          continue;
+        }
+        const auto rmse = convergenceRmse(*sampler, fsList, p.realisations, p.threads);
+        for (size_t i = 0; i < fsList.size(); ++i) {
+          csv << s << ',' << fsList[i].name << ',' << n << ',' << fmt(rmse[i], "%.9g") << ',' << p.realisations
+              << '\n';
+          auto& ser = series[{s, fsList[i].name}];
+          ser.first.push_back(n), ser.second.push_back(rmse[i]);
+        }
+      }
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::cerr << s << ": " << fmt(secs, "%.1f") << " s\n";
+    }
+    writeAtomically(fs::path(p.out) / "convergence.csv", csv.str());
+
+    // Compare fitted slopes with theory.
+    std::ostringstream md;
+    md << "# Convergence slopes\n\nRMSE of the mean of f over N points against the exact integral, over "
+       << p.realisations << " independent sets (pixels) per N, seed " << p.seed << ". Slope: least squares of "
+       << "log RMSE on log N over the powers of two with " << fmt(p.fitMin, "%g") << " <= N <= "
+       << fmt(p.fitMax, "%g") << " (± its standard error). 'agrees' means |measured - expected| <= 0.15.\n\n"
+       << "| sampler | integrand | measured slope | expected | source | verdict |\n"
+       << "|---|---|---|---|---|---|\n";
+    for (const auto& s : p.samplers)
+      for (const auto& f : fsList) {
+        const auto& ser = series[{s, f.name}];
+        const ExpectedSlope e = expectedSlope(s, f);
+        std::string measured = "n/a (fewer than two nonzero points)", verdict = "-";
+        try {
+          const SlopeFit fit = fitLogLogSlope(ser.first, ser.second, p.fitMin, p.fitMax, true);
+          measured = fmt(fit.slope, "%.2f") + " ± " + fmt(fit.slopeError, "%.2f");
+          if (e.slope) verdict = std::abs(fit.slope - *e.slope) <= 0.15 ? "agrees" : "differs";
+        } catch (const std::invalid_argument&) {
+        }
+        md << "| " << s << " | " << f.name << " | " << measured << " | "
+           << (e.slope ? fmt(*e.slope, "%.2f") : std::string("-")) << " | " << e.source << " | " << verdict
+           << " |\n";
+      }
+    writeAtomically(fs::path(p.out) / "slopes.md", md.str());
+
+    // Chart through the Python plotter.
+    if (p.chart) {
+      const std::string cmd = "/usr/bin/python3 '" + std::string(ALIASLAB_SOURCE_DIR) +
+                              "/analysis/convergence_chart.py' '" + (fs::path(p.out) / "convergence.csv").string() +
+                              "' --out '" + p.out + "' --fit-min " + fmt(p.fitMin, "%g") + " --fit-max " +
+                              fmt(p.fitMax, "%g");
+      if (std::system(cmd.c_str()) != 0) std::cerr << "warning: the chart failed: " << cmd << "\n";
+    }
+    std::cout << "wrote " << p.out << "/convergence.csv and slopes.md\n";
+  } catch (const InputError& e) {
+    std::cerr << "convergence: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,126 @@
+// raytracer: renders a classic course scene file with the course's flags.
+// Usage errors exit with 2, bad input files with 1; nothing is written then.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "accel/aggregate.h"
+#include "core/error.h"
+#include "core/image.h"
+#include "core/parallel.h"
+#include "options.h"
+#include "render/render.h"
+#include "sampling_plan.h"
+#include "scene/scene.h"
+
+using namespace aliaslab;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+/// Writes every image, or none: files already written are removed on failure.
+void writeAll(const std::vector<std::pair<std::string, Image>>& images) {
+  std::vector<std::string> done;
+  try {
+    for (const auto& [path, image] : images) {
+      writeImage(path, image);
+      done.push_back(path);
+    }
+  } catch (...) {
+    std::error_code ec;
+    for (const std::string& p : done) std::filesystem::remove(p, ec);
+    throw;
+  }
+}
+
+int run(const RaytracerOptions& o, const SamplingPlan& plan) {
+  const auto t0 = Clock::now();
+  const int w = o.size[0], h = o.size[1];
+  std::vector<std::pair<std::string, Image>> images;
+
+  // Filter visualisation needs no scene.
+  if (!o.renderFilter.empty()) images.emplace_back(o.renderFilter[0], renderFilterImage(plan, o));
+
+  // Scene, accelerator, tracer.
+  const Scene scene = parseScene(o.input);
+  const auto t1 = Clock::now();
+  std::unique_ptr<Aggregate> aggregate =
+      o.bruteForce ? makeBruteForce(*scene.root)
+                   : (o.grid.empty() ? makeGrid(*scene.root) : makeGrid(*scene.root, o.grid[0], o.grid[1], o.grid[2]));
+  const auto t2 = Clock::now();
+  TraceOptions to;
+  to.shadows = o.shadows;
+  to.bounces = o.bounces;
+  to.weight = o.weight;
+  to.shadeBack = o.shadeBack;
+  const Tracer tracer(scene, *aggregate, to);
+
+  // Colour image (and sample visualisation), depth, normals.
+  if (!o.output.empty() || !o.renderSamples.empty()) {
+    RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+    if (!o.output.empty()) images.emplace_back(o.output, std::move(r.image));
+    if (!o.renderSamples.empty()) images.emplace_back(o.renderSamples[0], renderSamplesImage(r, o));
+  }
+  if (!o.depth.empty())
+    images.emplace_back(o.depth[2], renderDepth(tracer, w, h, std::stof(o.depth[0]), std::stof(o.depth[1]), o.threads));
+  if (!o.normals.empty()) images.emplace_back(o.normals, renderNormals(tracer, w, h, o.threads));
+  const auto t3 = Clock::now();
+  writeAll(images);
+  const auto t4 = Clock::now();
+
+  if (o.stats) {
+    const TraceCounters& c = tracer.counters();
+    const AggregateStats s = aggregate->stats();
+    std::printf("scene: %s (%zu lights, %zu materials)\n", o.input.c_str(), scene.lights.size(),
+                scene.materials.size());
+    std::printf("image: %d x %d, %s\n", w, h, plan.describe().c_str());
+    std::printf("accelerator: %s\n", aggregate->describe().c_str());
+    std::printf("  primitives %zu (unbounded %zu), cells %d x %d x %d, references %zu\n", s.primitives,
+                s.unbounded, s.cells[0], s.cells[1], s.cells[2], s.references);
+    std::printf("rays: primary %llu, shadow %llu, reflected %llu, refracted %llu\n",
+                static_cast<unsigned long long>(c.primary.load()), static_cast<unsigned long long>(c.shadow.load()),
+                static_cast<unsigned long long>(c.reflected.load()),
+                static_cast<unsigned long long>(c.refracted.load()));
+    std::printf("time: parse %.4f s, accelerator %.4f s, render %.4f s, write %.4f s, total %.4f s (%d threads)\n",
+                seconds(t0, t1), seconds(t1, t2), seconds(t2, t3), seconds(t3, t4), seconds(t0, t4),
+                resolveThreads(o.threads));
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"raytracer: render a classic course scene file (aliaslab)", "raytracer"};
+  RaytracerOptions o;
+  addRaytracerOptions(app, o);
+  std::vector<std::string> args = translateClassicFlags(argc, argv);
+  std::reverse(args.begin(), args.end());  // CLI11 takes a vector in reverse order
+  try {
+    app.parse(args);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "raytracer: " << classicMessage(e.what()) << "\nRun with --help for the options.\n";
+    return 2;
+  }
+  try {
+    validateRaytracerOptions(app, o);
+    const SamplingPlan plan = makeSamplingPlan(app, o);
+    if (!plan.sampler->warning().empty()) std::cerr << "raytracer: warning: " << plan.sampler->warning() << "\n";
+    return run(o, plan);
+  } catch (const OptionError& e) {
+    std::cerr << "raytracer: " << e.what() << "\n";
+    return 2;
+  } catch (const InputError& e) {
+    std::cerr << "raytracer: " << e.what() << "\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "raytracer: error: " << e.what() << "\n";
+    return 1;
+  }
+}

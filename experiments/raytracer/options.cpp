@@ -1,0 +1,162 @@
+#include "options.h"
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/image.h"
+#include "filter/filter.h"
+#include "sampling/sampler.h"
+
+namespace aliaslab {
+namespace {
+
+const char* const kClassicFlags[] = {"input",          "size",           "output",          "shadows",
+                                     "bounces",        "weight",         "shade_back",      "grid",
+                                     "depth",          "normals",        "stats",           "random_samples",
+                                     "uniform_samples", "jittered_samples", "box_filter",    "tent_filter",
+                                     "gaussian_filter", "render_samples", "render_filter"};
+
+/// An output image path: supported extension, existing writable folder.
+void checkOutput(const std::string& option, const std::string& path) {
+  namespace fs = std::filesystem;
+  if (path.empty()) throw OptionError(option, "needs a file name");
+  if (!isSupportedImageExtension(path))
+    throw OptionError(option, "'" + path + "': unsupported image extension (use .png, .tga or .exr)");
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw OptionError(option, "'" + path + "': folder '" + dir.string() + "' does not exist");
+  if (::access(dir.c_str(), W_OK) != 0)
+    throw OptionError(option, "'" + path + "': folder '" + dir.string() + "' is not writable");
+  if (fs::is_directory(path, ec)) throw OptionError(option, "'" + path + "' is a folder");
+}
+
+/// "file zoom" pairs of -render_samples / -render_filter.
+void checkZoomed(const std::string& option, const std::vector<std::string>& v) {
+  if (v.empty()) return;
+  checkOutput(option, v[0]);
+  int zoom = 0;
+  try {
+    size_t used = 0;
+    zoom = std::stoi(v[1], &used);
+    if (used != v[1].size()) zoom = 0;
+  } catch (const std::exception&) {
+    zoom = 0;
+  }
+  if (zoom < 1 || zoom > 256) throw OptionError(option, "zoom must be a whole number in 1..256, found '" + v[1] + "'");
+}
+
+}  // namespace
+
+void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
+  app.add_option("--input", o.input, "scene file (classic course format)")->required();
+  app.add_option("--size", o.size, "image width and height in pixels")->expected(2)->required();
+  app.add_option("--output", o.output, "image file: .png, .tga (8-bit) or .exr (float)");
+  app.add_flag("--shadows", o.shadows, "cast shadow rays");
+  app.add_option("--bounces", o.bounces, "maximum reflection/refraction depth (default 0)");
+  app.add_option("--weight", o.weight, "stop rays whose accumulated weight falls below w (default 0)");
+  app.add_flag("--shade_back", o.shadeBack, "shade back faces like front faces");
+  app.add_option("--grid", o.grid, "uniform grid resolution nx ny nz (default: automatic)")->expected(3);
+  app.add_flag("--brute-force", o.bruteForce, "test every primitive instead of using the grid");
+  app.add_option("--depth", o.depth, "depth image: dmin dmax file")->expected(3);
+  app.add_option("--normals", o.normals, "normal image file");
+  app.add_flag("--stats", o.stats, "print ray counts, accelerator and timing");
+  app.add_option("--threads", o.threads, "worker threads, 0 = all cores (images do not depend on it)");
+  // Classic sampling.
+  app.add_option("--random_samples", o.randomSamples, "n independent uniform samples per pixel");
+  app.add_option("--uniform_samples", o.uniformSamples, "n samples on a regular grid per pixel");
+  app.add_option("--jittered_samples", o.jitteredSamples, "n jittered samples per pixel");
+  app.add_option("--box_filter", o.boxFilter, "box filter, r = centre to edge distance in pixels");
+  app.add_option("--tent_filter", o.tentFilter, "tent (cone) filter of radius r pixels");
+  app.add_option("--gaussian_filter", o.gaussianFilter, "Gaussian filter of standard deviation sigma pixels");
+  app.add_option("--render_samples", o.renderSamples, "sample visualisation: file zoom")->expected(2);
+  app.add_option("--render_filter", o.renderFilter, "filter weight visualisation: file zoom")->expected(2);
+  // General sampling.
+  std::string samplers, filters;
+  for (const std::string& n : samplerNames()) samplers += (samplers.empty() ? "" : ", ") + n;
+  for (const std::string& n : filterNames()) filters += (filters.empty() ? "" : ", ") + n;
+  app.add_option("--sampler", o.sampler, "sampler: " + samplers);
+  app.add_option("--spp", o.spp, "samples per pixel (default 1)");
+  app.add_option("--filter", o.filter, "reconstruction filter: " + filters);
+  app.add_option("--radius", o.radius, "filter support radius in pixels");
+  app.add_option("--seed", o.seed, "random seed (default 0)");
+  app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
+  app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
+  app.footer("The classic flags take one dash as in the course (-input, -size, ...) or two.");
+}
+
+std::vector<std::string> translateClassicFlags(int argc, char** argv) {
+  std::vector<std::string> args;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    for (const char* flag : kClassicFlags)
+      if (a == std::string("-") + flag) a = "-" + a;
+    args.push_back(a);
+  }
+  return args;
+}
+
+std::string classicMessage(std::string message) {
+  for (const char* flag : kClassicFlags) {
+    const std::string dd = std::string("--") + flag;
+    for (size_t p = message.find(dd); p != std::string::npos; p = message.find(dd, p + 1)) {
+      const size_t end = p + dd.size();
+      const bool whole = end == message.size() || !(std::isalnum(static_cast<unsigned char>(message[end])) ||
+                                                      message[end] == '_' || message[end] == '-');
+      if (whole) message.erase(p, 1);
+    }
+  }
+  return message;
+}
+
+void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
+  namespace fs = std::filesystem;
+  // Image size and tracing parameters.
+  const int w = o.size[0], h = o.size[1];
+  if (w < 1 || h < 1 || w > 16384 || h > 16384)
+    throw OptionError("-size", "width and height must be in 1..16384, found " + std::to_string(w) + " " +
+                                   std::to_string(h));
+  if (o.bounces < 0 || o.bounces > 1000) throw OptionError("-bounces", "must be in 0..1000");
+  if (!(o.weight >= 0.f) || !std::isfinite(o.weight)) throw OptionError("-weight", "must be finite and >= 0");
+  if (o.threads < 0) throw OptionError("--threads", "must be >= 0 (0 = all cores)");
+  if (!o.grid.empty()) {
+    if (o.bruteForce) throw OptionError("-grid", "cannot be combined with --brute-force");
+    double cells = 1;
+    for (int n : o.grid) {
+      if (n < 1 || n > 1024) throw OptionError("-grid", "each resolution must be in 1..1024");
+      cells *= n;
+    }
+    if (cells > double(1 << 27)) throw OptionError("-grid", "more than 2^27 cells");
+  }
+
+  // Outputs: at least one, each writable.
+  if (!o.output.empty()) checkOutput("-output", o.output);
+  if (!o.normals.empty()) checkOutput("-normals", o.normals);
+  if (!o.depth.empty()) {
+    float dmin = 0, dmax = 0;
+    try {
+      dmin = std::stof(o.depth[0]);
+      dmax = std::stof(o.depth[1]);
+    } catch (const std::exception&) {
+      throw OptionError("-depth", "dmin and dmax must be numbers, found '" + o.depth[0] + "' '" + o.depth[1] + "'");
+    }
+    if (!std::isfinite(dmin) || !std::isfinite(dmax) || !(dmax > dmin))
+      throw OptionError("-depth", "needs finite dmin < dmax");
+    checkOutput("-depth", o.depth[2]);
+  }
+  checkZoomed("-render_samples", o.renderSamples);
+  checkZoomed("-render_filter", o.renderFilter);
+  if (o.output.empty() && o.normals.empty() && o.depth.empty() && o.renderSamples.empty() && o.renderFilter.empty())
+    throw OptionError("-output", "nothing to write: give -output, -depth, -normals, -render_samples or -render_filter");
+
+  // The scene file must be readable.
+  std::error_code ec;
+  if (!fs::is_regular_file(o.input, ec) || ::access(o.input.c_str(), R_OK) != 0)
+    throw FileError(o.input, "cannot open the scene file (-input)");
+  (void)app;
+}
+
+}  // namespace aliaslab

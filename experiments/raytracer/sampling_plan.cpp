@@ -1,0 +1,142 @@
+#include "sampling_plan.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "film/visualize.h"
+#include "render/render.h"
+
+namespace aliaslab {
+namespace {
+
+/// The one option of `names` that was given, or "" (OptionError when several were).
+std::string chooseOne(const CLI::App& app, std::initializer_list<const char*> names) {
+  std::string chosen;
+  for (const char* n : names) {
+    if (app.count(std::string("--") + n) == 0) continue;
+    if (!chosen.empty())
+      throw OptionError("-" + std::string(n), "cannot be combined with -" + chosen + " (give one of them)");
+    chosen = n;
+  }
+  return chosen;
+}
+
+FilterParams parseFilterParams(const std::vector<std::string>& items) {
+  FilterParams params;
+  for (const std::string& item : items) {
+    const size_t eq = item.find('=');
+    double value = 0;
+    size_t used = 0;
+    bool ok = eq != std::string::npos && eq > 0;
+    if (ok) {
+      try {
+        value = std::stod(item.substr(eq + 1), &used);
+        ok = used == item.size() - eq - 1 && std::isfinite(value);
+      } catch (const std::exception&) {
+        ok = false;
+      }
+    }
+    if (!ok) throw OptionError("--filter-param", "expected name=value with a finite number, found '" + item + "'");
+    params[item.substr(0, eq)] = value;
+  }
+  return params;
+}
+
+}  // namespace
+
+std::string SamplingPlan::describe() const {
+  std::string s = sampler->describe() + " spp " + std::to_string(sampler->spp());
+  if (mode == ReconMode::Supersample) return s + ", supersample reconstruction (3x3 binomial, k x k box)";
+  if (filter) return s + ", " + filter->describe() + ", " + toString(mode) + " reconstruction";
+  return s + ", first sample per pixel";
+}
+
+SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
+  SamplingPlan plan;
+  auto has = [&](const char* n) { return app.count(std::string("--") + n) > 0; };
+
+  // Sampler: classic flag or --sampler/--spp, default the pixel centre.
+  const std::string classicSampler = chooseOne(app, {"random_samples", "uniform_samples", "jittered_samples"});
+  std::string name = "uniform";
+  int spp = 1;
+  if (!classicSampler.empty()) {
+    if (has("sampler") || has("spp"))
+      throw OptionError(has("sampler") ? "--sampler" : "--spp", "cannot be combined with -" + classicSampler);
+    name = classicSampler.substr(0, classicSampler.find('_'));
+    spp = classicSampler[0] == 'r' ? o.randomSamples : classicSampler[0] == 'u' ? o.uniformSamples : o.jitteredSamples;
+    if (spp < 1) throw OptionError("-" + classicSampler, "needs at least 1 sample per pixel");
+  } else {
+    if (has("sampler")) name = o.sampler;
+    if (has("spp")) spp = o.spp;
+  }
+  const double total = double(o.size[0]) * o.size[1] * std::max(spp, 1);
+  if (total > double(1 << 28))
+    throw OptionError(classicSampler.empty() ? "--spp" : "-" + classicSampler,
+                      "width x height x spp exceeds 2^28 samples (about 7 GB)");
+  plan.sampler = makeSampler(name, spp, o.seed);
+
+  // Filter: classic flag or --filter/--radius/--filter-param.
+  const std::string classicFilter = chooseOne(app, {"box_filter", "tent_filter", "gaussian_filter"});
+  FilterParams params = parseFilterParams(o.filterParams);
+  if (!classicFilter.empty()) {
+    if (has("filter") || has("radius"))
+      throw OptionError(has("filter") ? "--filter" : "--radius", "cannot be combined with -" + classicFilter);
+    const std::string fname = classicFilter.substr(0, classicFilter.find('_'));
+    float radius = classicFilter[0] == 'b' ? o.boxFilter : o.tentFilter;
+    if (fname == "gaussian") {
+      if (!(o.gaussianFilter > 0.f) || !std::isfinite(o.gaussianFilter))
+        throw OptionError("-gaussian_filter", "sigma must be finite and > 0");
+      params["sigma"] = o.gaussianFilter;
+      radius = 2.f * o.gaussianFilter;  // classic support ceil(2 sigma - 0.5)
+    } else if (!(radius > 0.f) || !std::isfinite(radius)) {
+      throw OptionError("-" + classicFilter, "radius must be finite and > 0");
+    }
+    plan.filter = makeFilter(fname, radius, params);
+  } else if (has("filter")) {
+    plan.filter = makeFilter(o.filter, o.radius, params);
+  } else if (has("radius") || has("filter-param")) {
+    throw OptionError(has("radius") ? "--radius" : "--filter-param", "needs --filter");
+  }
+
+  // Reconstruction: explicit, else classic for classic flags, else weighted.
+  if (has("reconstruction")) plan.mode = parseReconMode(o.reconstruction);
+  else if (!classicSampler.empty() || !classicFilter.empty()) plan.mode = ReconMode::Classic;
+  if (!plan.filter && has("reconstruction") && plan.mode != ReconMode::Supersample)
+    throw OptionError("--reconstruction", "'" + o.reconstruction + "' needs a filter (--filter or a classic filter flag)");
+  if (plan.mode == ReconMode::Supersample) {
+    const int k = static_cast<int>(std::lround(std::sqrt(double(spp))));
+    if (k * k != spp)
+      throw OptionError("--spp", "supersample reconstruction needs a square sample count k*k, got " +
+                                     std::to_string(spp));
+    if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
+  }
+  if (!o.renderFilter.empty() && !plan.filter)
+    throw OptionError("-render_filter", "needs a filter (-box_filter, -tent_filter, -gaussian_filter or --filter)");
+  return plan;
+}
+
+RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int width, int height, int threads) {
+  RenderedImage out;
+  const bool importance = plan.filter && plan.mode == ReconMode::ImportanceSampled;
+  out.samples = importance ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads)
+                           : traceSamples(tracer, *plan.sampler, width, height, threads);
+  if (plan.filter) {
+    out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
+  } else {
+    out.image = Image(width, height);
+    for (int j = 0; j < height; ++j)
+      for (int i = 0; i < width; ++i) out.image.set(i, j, out.samples.pixel(i, j)[0].L);
+  }
+  return out;
+}
+
+Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& o) {
+  return renderSamples(rendered.samples, std::stoi(o.renderSamples[1]));
+}
+
+Image renderFilterImage(const SamplingPlan& plan, const RaytracerOptions& o) {
+  return renderFilter(*plan.filter, o.size[0], o.size[1], std::stoi(o.renderFilter[1]));
+}
+
+}  // namespace aliaslab

@@ -1,0 +1,125 @@
+// reconstruct(): mode dispatch, the classic gather, filter importance
+// sampling, and the shared resolution of weighted sums.
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.h"
+#include "core/parallel.h"
+#include "film/film_impl.h"
+
+namespace aliaslab {
+
+ReconStats& ReconStats::operator+=(const ReconStats& o) {
+  undefinedPixels += o.undefinedPixels;
+  negativePixels += o.negativePixels;
+  nanPixels += o.nanPixels;
+  nonFiniteSamples += o.nonFiniteSamples;
+  return *this;
+}
+
+std::string toString(ReconMode mode) {
+  switch (mode) {
+    case ReconMode::WeightedAverage: return "weighted";
+    case ReconMode::Classic: return "classic";
+    case ReconMode::ImportanceSampled: return "importance";
+    case ReconMode::Supersample: return "supersample";
+  }
+  return "?";
+}
+
+ReconMode parseReconMode(const std::string& name) {
+  for (ReconMode m : {ReconMode::WeightedAverage, ReconMode::Classic, ReconMode::ImportanceSampled,
+                      ReconMode::Supersample})
+    if (toString(m) == name) return m;
+  throw OptionError("--reconstruction",
+                    "unknown mode '" + name + "' (valid: weighted, classic, importance, supersample)");
+}
+
+int classicSupport(const Filter& filter) {
+  const double extent = filter.name() == "gaussian" ? 2 * filter.params().at("sigma") : filter.radius();
+  return std::max(0, static_cast<int>(std::ceil(extent - 0.5)));
+}
+
+namespace filmimpl {
+
+double weightTolerance(const Filter& filter) { return std::max(1e-8 * std::abs(filter.eval(0, 0)), 1e-30); }
+
+Reconstruction resolveSums(int width, int height, const double* sums, const double* plain, double tolerance,
+                           size_t nonFiniteSamples) {
+  Reconstruction out{Image(width, height), {}};
+  out.stats.nonFiniteSamples = nonFiniteSamples;
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const size_t p = 4 * (static_cast<size_t>(j) * width + i);
+      const double* s = sums + p;
+      Color c;
+      bool fallback = false;
+      if (std::abs(s[3]) < tolerance) {
+        ++out.stats.undefinedPixels, fallback = true;
+      } else {
+        c = Color(float(s[0] / s[3]), float(s[1] / s[3]), float(s[2] / s[3]));
+        if (!c.allFinite()) ++out.stats.nanPixels, fallback = true;
+      }
+      if (fallback) {
+        const double* q = plain + p;
+        c = q[3] > 0 ? Color(float(q[0] / q[3]), float(q[1] / q[3]), float(q[2] / q[3])) : Color::Zero();
+        if (!c.allFinite()) c = Color::Zero();  // the mean itself overflowed float
+      }
+      if ((c < 0).any()) ++out.stats.negativePixels;
+      out.image.set(i, j, c);
+    }
+  return out;
+}
+
+}  // namespace filmimpl
+
+namespace {
+
+using namespace filmimpl;
+
+/// Classic gather (evalClassic over pixels i-R..i+R) or ImportanceSampled (own samples, FilmSample::weight).
+Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool classic, int threads) {
+  const int W = samples.width(), H = samples.height(), spp = samples.spp();
+  const int R = classic ? classicSupport(filter) : 0;
+  std::vector<double> sums(4 * size_t(W) * H, 0.0), plain(4 * size_t(W) * H, 0.0);
+  addPlainSums(samples, plain.data());
+  parallelFor(H, threads, [&](int j) {
+    for (int i = 0; i < W; ++i) {
+      double* out = &sums[4 * (size_t(j) * W + i)];
+      const float cx = i + 0.5f, cy = j + 0.5f;
+      for (int sj = std::max(0, j - R); sj <= std::min(H - 1, j + R); ++sj)
+        for (int si = std::max(0, i - R); si <= std::min(W - 1, i + R); ++si) {
+          const FilmSample* s = samples.pixel(si, sj);
+          for (int k = 0; k < spp; ++k) {
+            if (!finiteSample(s[k])) continue;
+            const double w = classic ? filter.evalClassic(s[k].x - cx, s[k].y - cy) : s[k].weight;
+            out[0] += w * s[k].L[0], out[1] += w * s[k].L[1], out[2] += w * s[k].L[2], out[3] += w;
+          }
+        }
+    }
+  });
+  const double tol = classic ? std::max(1e-8 * std::abs(filter.evalClassic(0, 0)), 1e-30)
+                             : std::max(1e-8 * filter.absIntegral(), 1e-30);
+  return resolveSums(W, H, sums.data(), plain.data(), tol, countNonFinite(samples));
+}
+
+}  // namespace
+
+Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, ReconMode mode, int threads) {
+  switch (mode) {
+    case ReconMode::WeightedAverage: {
+      const size_t n = 4 * size_t(samples.width()) * samples.height();
+      std::vector<double> sums(n, 0.0), plain(n, 0.0);
+      addPlainSums(samples, plain.data());
+      splatWeighted(samples, filter, sums.data(), threads);
+      return resolveSums(samples.width(), samples.height(), sums.data(), plain.data(), weightTolerance(filter),
+                         countNonFinite(samples));
+    }
+    case ReconMode::Classic: return gather(samples, filter, true, threads);
+    case ReconMode::ImportanceSampled: return gather(samples, filter, false, threads);
+    case ReconMode::Supersample: return reconstructSupersample(samples, threads);
+  }
+  return {};
+}
+
+}  // namespace aliaslab

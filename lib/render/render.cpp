@@ -1,0 +1,113 @@
+// Whole-image rendering over 16 x 16 tiles; see render.h.
+#include "render/render.h"
+
+#include <algorithm>
+#include <mutex>
+#include <vector>
+
+#include "core/error.h"
+#include "core/parallel.h"
+
+namespace aliaslab {
+namespace {
+
+constexpr int kTile = 16;
+
+/// Calls pixel(i, j) for every pixel, tile by tile in parallel. Each pixel
+/// is visited exactly once, by one thread.
+template <class PixelFn>
+void forEachTile(int width, int height, int threads, const Progress& progress, PixelFn pixel) {
+  const int tilesX = (width + kTile - 1) / kTile, tilesY = (height + kTile - 1) / kTile;
+  const int total = tilesX * tilesY;
+  std::mutex progressMutex;
+  int done = 0;
+  parallelFor(total, threads, [&](int tile) {
+    const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+    for (int j = y0; j < std::min(y0 + kTile, height); ++j)
+      for (int i = x0; i < std::min(x0 + kTile, width); ++i) pixel(i, j);
+    if (progress) {
+      std::lock_guard lock(progressMutex);
+      progress(++done, total);
+    }
+  });
+}
+
+/// First hit of the primary ray through the centre of pixel (i, j).
+bool primaryHit(const Tracer& tracer, int i, int j, int width, int height, Hit& hit) {
+  const Camera& camera = *tracer.scene().camera;
+  const Ray ray = camera.generateRay(filmToScreen(i + 0.5f, j + 0.5f, width, height));
+  tracer.counters().primary.fetch_add(1, std::memory_order_relaxed);
+  hit = Hit{};
+  return tracer.aggregate().intersect(ray, camera.tMin(), hit);
+}
+
+void requireCamera(const Tracer& tracer) {
+  if (!tracer.scene().camera) throw InputError(tracer.scene().path + ": the scene has no camera");
+}
+
+}  // namespace
+
+SampleBuffer traceSamples(const Tracer& tracer, const Sampler& sampler, int width, int height, int threads,
+                          const Progress& progress) {
+  requireCamera(tracer);
+  const int spp = sampler.spp();
+  SampleBuffer buffer(width, height, spp);
+  forEachTile(width, height, threads, progress, [&](int i, int j) {
+    std::vector<Vec2> u(spp);
+    sampler.generate(i, j, u.data());
+    FilmSample* out = buffer.pixel(i, j);
+    for (int k = 0; k < spp; ++k) {
+      out[k].x = i + u[k].x();
+      out[k].y = j + u[k].y();
+      out[k].L = tracer.radianceAt(out[k].x, out[k].y, width, height);
+      out[k].weight = 1.f;
+    }
+  });
+  return buffer;
+}
+
+SampleBuffer traceImportanceSamples(const Tracer& tracer, const Sampler& sampler, const Filter& filter,
+                                    int width, int height, int threads, const Progress& progress) {
+  requireCamera(tracer);
+  const int spp = sampler.spp();
+  SampleBuffer buffer(width, height, spp);
+  forEachTile(width, height, threads, progress, [&](int i, int j) {
+    std::vector<Vec2> u(spp);
+    sampler.generate(i, j, u.data());
+    FilmSample* out = buffer.pixel(i, j);
+    for (int k = 0; k < spp; ++k) {
+      float w = 1.f;
+      const Vec2 offset = filter.sample(u[k], w);
+      out[k].x = i + 0.5f + offset.x();
+      out[k].y = j + 0.5f + offset.y();
+      out[k].L = tracer.radianceAt(out[k].x, out[k].y, width, height);
+      out[k].weight = w;
+    }
+  });
+  return buffer;
+}
+
+Image renderDepth(const Tracer& tracer, int width, int height, float dmin, float dmax, int threads) {
+  requireCamera(tracer);
+  if (!(dmax > dmin)) throw OptionError("-depth", "dmax must be greater than dmin");
+  Image image(width, height);
+  forEachTile(width, height, threads, {}, [&](int i, int j) {
+    Hit hit;
+    if (!primaryHit(tracer, i, j, width, height, hit)) return;
+    const float v = std::clamp((dmax - hit.t) / (dmax - dmin), 0.f, 1.f);
+    image.set(i, j, Color::Constant(v));
+  });
+  return image;
+}
+
+Image renderNormals(const Tracer& tracer, int width, int height, int threads) {
+  requireCamera(tracer);
+  Image image(width, height);
+  forEachTile(width, height, threads, {}, [&](int i, int j) {
+    Hit hit;
+    if (primaryHit(tracer, i, j, width, height, hit)) image.set(i, j, hit.normal.cwiseAbs().array());
+  });
+  return image;
+}
+
+}  // namespace aliaslab

@@ -1,0 +1,55 @@
+// PhongMaterial: Blinn-Phong direct light, constant colours.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "scene/material.h"
+
+namespace aliaslab {
+namespace {
+
+/// "(x y z)" with up to 4 significant digits, for describe().
+template <class V>
+std::string str(const V& v) {
+  std::ostringstream out;
+  out << v.transpose().format(Eigen::IOFormat(4, Eigen::DontAlignCols, " ", " ", "", "", "(", ")"));
+  return out.str();
+}
+
+class Phong final : public Material {
+ public:
+  explicit Phong(const PhongParams& params) : p_(params) {}
+
+  Color shade(const Vec3& p, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
+              const Color& lightColor) const override {
+    const float nl = n.dot(toLight);
+    if (!(nl > 0.f)) return Color::Zero();
+    Color c = p_.diffuse * nl;
+    if ((p_.specular != 0.f).any()) {
+      const Vec3 h = (toLight + toViewer).normalized();
+      const float nh = std::max(0.f, n.dot(h));
+      c += p_.specular * std::pow(nh, p_.exponent);
+    }
+    return lightColor * c;
+  }
+  Color diffuse(const Vec3&) const override { return p_.diffuse; }
+  Color reflective(const Vec3&) const override { return p_.reflective; }
+  Color transparent(const Vec3&) const override { return p_.transparent; }
+  float indexOfRefraction(const Vec3&) const override { return p_.indexOfRefraction; }
+  std::string describe() const override {
+    std::ostringstream out;
+    out << "phong diffuse " << str(p_.diffuse) << " specular " << str(p_.specular) << " exponent " << p_.exponent
+        << " reflective " << str(p_.reflective) << " transparent " << str(p_.transparent) << " ior "
+        << p_.indexOfRefraction;
+    return out.str();
+  }
+
+ private:
+  PhongParams p_;
+};
+
+}  // namespace
+
+std::unique_ptr<Material> makePhong(const PhongParams& params) { return std::make_unique<Phong>(params); }
+
+}  // namespace aliaslab

@@ -1,0 +1,118 @@
+// Scene file parser: the Materials block (Phong and procedural materials).
+#include "scene/parser_fields.h"
+#include "scene/parser_impl.h"
+
+namespace aliaslab::detail {
+
+void SceneParser::parseMaterials() {
+  t_.expect("{", "after 'Materials'");
+  t_.expect("numMaterials", "at the start of Materials");
+  const int n = t_.integer("numMaterials", 0, 1 << 30);
+  for (;;) {
+    const Token& k = t_.next("a material or '}'");
+    const int count = static_cast<int>(scene_.materials.size());
+    if (k.text == "}") {
+      if (count < n)
+        t_.fail(k.line, "Materials: numMaterials is " + std::to_string(n) + " but only " + std::to_string(count) +
+                            " materials are given before '}'");
+      return;
+    }
+    static const char* kinds[] = {"PhongMaterial", "Material", "Checkerboard", "Noise", "Marble", "Wood", "Pattern"};
+    bool known = false;
+    for (const char* kind : kinds) known = known || k.text == kind;
+    if (!known)
+      t_.fail(k.line, "unknown keyword " + TokenStream::describe(k) +
+                          " in Materials: expected PhongMaterial, Material, Checkerboard, Noise, Marble, Wood, "
+                          "Pattern or '}'");
+    if (count == n)
+      t_.fail(k.line, "Materials: more materials than numMaterials " + std::to_string(n) + ": found an extra '" +
+                          k.text + "'");
+    scene_.materials.push_back(parseMaterial(k, count));
+  }
+}
+
+std::unique_ptr<Material> SceneParser::parseMaterial(const Token& keyword, int index) {
+  t_.expect("{", "after '" + keyword.text + "'");
+  if (keyword.text != "PhongMaterial" && keyword.text != "Material") return parseProcedural(keyword, index);
+
+  // Phong: every field optional, any order.
+  FieldBlock f(t_, keyword.text,
+               {{"diffuseColor", FieldKind::Vec3},
+                {"specularColor", FieldKind::Vec3},
+                {"exponent"},
+                {"reflectiveColor", FieldKind::Vec3},
+                {"transparentColor", FieldKind::Vec3},
+                {"indexOfRefraction"}});
+  PhongParams p;
+  p.diffuse = f.vec3("diffuseColor", p.diffuse.matrix()).array();
+  p.specular = f.vec3("specularColor", p.specular.matrix()).array();
+  p.exponent = f.number("exponent", p.exponent);
+  p.reflective = f.vec3("reflectiveColor", p.reflective.matrix()).array();
+  p.transparent = f.vec3("transparentColor", p.transparent.matrix()).array();
+  p.indexOfRefraction = f.number("indexOfRefraction", p.indexOfRefraction);
+  if (p.exponent < 0.f) f.fail("exponent", "must not be negative");
+  if (!(p.indexOfRefraction > 0.f)) f.fail("indexOfRefraction", "must be positive");
+  return makePhong(p);
+}
+
+std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int index) {
+  const std::string& kind = keyword.text;
+
+  // Optional texture-space transform: q = M p with M = op1 * op2 * ...
+  Mat4 m = Mat4::Identity();
+  if (t_.peek().text == "Transform") {
+    t_.next("Transform");
+    t_.expect("{", "after 'Transform'");
+    while (parseTransformOp(m)) {}
+    const Token& close = t_.next("'}' closing the Transform of " + kind);
+    if (close.text != "}")
+      t_.fail(close.line, "expected a transform op (Scale, UniformScale, Translate, XRotate, YRotate, ZRotate, "
+                          "Rotate, Matrix) or '}' in the Transform of " + kind + ", found " +
+                              TokenStream::describe(close));
+  }
+
+  // Two earlier materials.
+  const Material* blend[2];
+  for (const Material*& mat : blend) {
+    t_.expect("materialIndex", "in " + kind);
+    const int line = t_.peek().line;
+    const int k = t_.integer("materialIndex", -(1 << 30), 1 << 30);
+    if (k < 0 || k >= index)
+      t_.fail(line, kind + " (material " + std::to_string(index) + "): materialIndex " + std::to_string(k) +
+                        (index == 0 ? " is invalid: a procedural material needs two earlier materials"
+                                    : " must refer to an earlier material (0.." + std::to_string(index - 1) + ")"));
+    mat = scene_.materials[k].get();
+  }
+
+  // The pattern's own fields.
+  const FieldSpec octaves{"octaves", FieldKind::Integer, 0, 32};
+  if (kind == "Checkerboard") {
+    FieldBlock f(t_, kind, {});
+    return makeCheckerboard(m, blend[0], blend[1]);
+  }
+  if (kind == "Noise") {
+    FieldBlock f(t_, kind, {octaves});
+    f.require({"octaves"});
+    return makeNoise(m, blend[0], blend[1], f.integer("octaves"));
+  }
+  if (kind == "Marble" || kind == "Wood") {
+    FieldBlock f(t_, kind, {octaves, {"frequency"}, {"amplitude"}});
+    f.require({"octaves", "frequency", "amplitude"});
+    const int o = f.integer("octaves");
+    const float fr = f.number("frequency"), a = f.number("amplitude");
+    return kind == "Marble" ? makeMarble(m, blend[0], blend[1], o, fr, a) : makeWood(m, blend[0], blend[1], o, fr, a);
+  }
+  // Pattern (aliaslab extension).
+  FieldBlock f(t_, kind, {{"type", FieldKind::Word}, {"frequency"}});
+  f.require({"type", "frequency"});
+  const std::string type = f.word("type");
+  PatternKind pk;
+  if (type == "zoneplate") pk = PatternKind::ZonePlate;
+  else if (type == "sinc") pk = PatternKind::Sinc;
+  else if (type == "siemens") pk = PatternKind::Siemens;
+  else if (type == "stripes") pk = PatternKind::Stripes;
+  else f.fail("type", "must be zoneplate, sinc, siemens or stripes, found '" + type + "'");
+  return makePattern(m, blend[0], blend[1], pk, f.number("frequency"));
+}
+
+}  // namespace aliaslab::detail

@@ -1,0 +1,160 @@
+#include "study/config.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include "core/error.h"
+#include "filter/filter.h"
+#include "sampling/sampler.h"
+#include "study/study_scene.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes) {
+  std::vector<std::string> out;
+  for (const std::string& s : scenes) {
+    std::error_code ec;
+    if (fs::is_directory(s, ec)) {
+      std::vector<std::string> found;
+      for (const auto& e : fs::directory_iterator(s, ec))
+        if (e.path().extension() == ".txt") found.push_back(e.path().string());
+      std::sort(found.begin(), found.end());
+      if (found.empty()) throw FileError(s, "folder holds no *.txt scene");
+      out.insert(out.end(), found.begin(), found.end());
+    } else {
+      out.push_back(s);
+    }
+  }
+  return out;
+}
+
+std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config) {
+  std::vector<std::pair<std::string, double>> out;
+  for (const std::string& f : config.filters) {
+    std::vector<double> radii = config.radii;
+    if (f == "box" && config.classicBox && std::find(radii.begin(), radii.end(), 0.5) == radii.end())
+      radii.insert(radii.begin(), 0.5);
+    for (double r : radii) out.emplace_back(f, r);
+  }
+  return out;
+}
+
+std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes) {
+  std::vector<SampleSetGroup> groups;
+  const auto filters = studyFilters(config);
+  std::set<std::string> noted;
+  auto note = [&](const std::string& text) {
+    if (notes && noted.insert(text).second) notes->push_back(text);
+  };
+  for (const std::string& scene : expandScenePaths(config.scenes))
+    for (const std::string& sampler : config.samplers)
+      for (int spp : config.spp) {
+        SampleSetGroup g;
+        g.index = static_cast<int>(groups.size());
+        g.scene = scene, g.sampler = sampler, g.spp = spp;
+        for (const std::string& modeName : config.reconstruction) {
+          const ReconMode mode = parseReconMode(modeName);
+          if (mode == ReconMode::Supersample) {
+            const int k = static_cast<int>(std::lround(std::sqrt(spp)));
+            if (sampler == "uniform" && k * k == spp) g.configs.push_back({"box", 0.5, mode});
+            else note("supersample: only the uniform sampler at square spp; skipped " + sampler + " spp " +
+                      std::to_string(spp));
+            continue;
+          }
+          for (const auto& [f, r] : filters) g.configs.push_back({f, r, mode});
+        }
+        groups.push_back(std::move(g));
+      }
+  return groups;
+}
+
+std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count) {
+  std::vector<SampleSetGroup> out;
+  for (const SampleSetGroup& g : groups)
+    if (g.index % count == index) out.push_back(g);
+  return out;
+}
+
+void parseShard(const std::string& text, int& index, int& count) {
+  const size_t slash = text.find('/');
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument("x");
+    size_t a = 0, b = 0;
+    index = std::stoi(text.substr(0, slash), &a);
+    count = std::stoi(text.substr(slash + 1), &b);
+    if (a != slash || b != text.size() - slash - 1) throw std::invalid_argument("x");
+  } catch (const std::exception&) {
+    throw OptionError("--shard", "expected i/N (e.g. 0/4), found '" + text + "'");
+  }
+  if (count < 1 || index < 0 || index >= count)
+    throw OptionError("--shard", "need 0 <= i < N, found '" + text + "'");
+}
+
+std::string csvPath(const StudyConfig& config) {
+  if (!config.csv.empty()) return config.csv;
+  if (config.shardCount > 1)
+    return (fs::path(config.out) / ("study.shard-" + std::to_string(config.shardIndex) + "-of-" +
+                                    std::to_string(config.shardCount) + ".csv"))
+        .string();
+  return (fs::path(config.out) / "study.csv").string();
+}
+
+namespace {
+// A folder we can create and write into (probed with a temporary file).
+void requireWritableFolder(const std::string& dir, const std::string& option) {
+  std::error_code ec;
+  fs::create_directories(dir, ec);
+  if (!fs::is_directory(dir)) throw OptionError(option, "cannot create folder '" + dir + "'");
+  if (::access(dir.c_str(), W_OK) != 0) throw OptionError(option, "folder '" + dir + "' is not writable");
+}
+}  // namespace
+
+void validateStudy(const StudyConfig& c) {
+  // Lists and numbers.
+  if (c.samplers.empty()) throw OptionError("--samplers", "needs at least one sampler");
+  if (c.filters.empty()) throw OptionError("--filters", "needs at least one filter");
+  if (c.spp.empty()) throw OptionError("--spp", "needs at least one sample count");
+  if (c.radii.empty()) throw OptionError("--radii", "needs at least one radius");
+  if (c.reconstruction.empty()) throw OptionError("--reconstruction", "needs at least one mode");
+  if (c.scenes.empty()) throw OptionError("--scenes", "needs at least one scene file or folder");
+  if (c.seeds < 2) throw OptionError("--seeds", "needs K >= 2 (noise is a variance over seeds), found " +
+                                                    std::to_string(c.seeds));
+  if (c.refSpp < 2) throw OptionError("--ref-spp", "must be at least 2, found " + std::to_string(c.refSpp));
+  if (c.threads < 0) throw OptionError("--threads", "must be >= 0");
+  if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
+    throw OptionError("--size", "expected two positive numbers W H");
+  if (c.maxSize < 0) throw OptionError("--max-size", "must be >= 0");
+  for (int spp : c.spp)
+    if (spp < 1) throw OptionError("--spp", "sample counts must be >= 1, found " + std::to_string(spp));
+  for (double r : c.radii)
+    if (!(std::isfinite(r) && r > 0)) throw OptionError("--radii", "radii must be finite and > 0, found " +
+                                                                      std::to_string(r));
+  // Names: the factories' own messages list the valid ones.
+  for (const std::string& m : c.reconstruction) parseReconMode(m);
+  for (const std::string& s : c.samplers)
+    for (int spp : c.spp) makeSampler(s, spp, 0);
+  for (const auto& [f, r] : studyFilters(c)) makeFilter(f, static_cast<float>(r));
+
+  // Scenes: present and parseable, with a known size.
+  for (const std::string& path : expandScenePaths(c.scenes)) {
+    if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
+    loadStudyScene(path, c.width, c.height, c.maxSize);
+  }
+
+  // Output folders.
+  requireWritableFolder(c.out, "--out");
+  requireWritableFolder(fs::path(csvPath(c)).parent_path().string().empty()
+                            ? "."
+                            : fs::path(csvPath(c)).parent_path().string(),
+                        "--csv");
+  requireWritableFolder(c.cache, "--cache");
+}
+
+}  // namespace aliaslab

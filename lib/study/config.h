@@ -1,0 +1,86 @@
+// What a sweep measures, and the list of configurations it expands to.
+//
+// A StudyConfig is the cross product scenes x samplers x spp x filters x
+// radii x reconstruction modes, each configuration rendered with K seeds.
+// expandStudy() turns it into SampleSetGroups: one group per (scene,
+// sampler, spp), whose K sample sets (one per seed) are traced once and
+// reconstructed with every (filter, radius) of the group. Groups and the
+// configurations inside them come in a fixed canonical order, so a shard
+// (--shard i/N: groups g with g mod N == i) is deterministic and keeps the
+// reuse of traced samples. validateStudy() checks every name, number, scene
+// and the output folder before any work and throws InputError
+// (OptionError naming the option, FileError naming the file).
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "film/film.h"
+
+namespace aliaslab {
+
+struct StudyConfig {
+  std::vector<std::string> scenes;                  ///< scene files (folders expanded to their *.txt)
+  std::vector<std::string> samplers = {"random", "uniform", "jittered"};
+  std::vector<int> spp = {4, 16};                   ///< samples per pixel, each >= 1
+  std::vector<std::string> filters = {"box", "tent", "gaussian"};
+  std::vector<double> radii = {0.5, 1.0, 1.5};      ///< support radii in pixels, each > 0
+  std::vector<std::string> reconstruction = {"weighted"};  ///< weighted|classic|importance|supersample
+  bool classicBox = true;   ///< also box at r = 0.5 when box is listed and 0.5 is not a radius
+  int seeds = 8;            ///< K independent seeds per configuration (>= 2)
+  int refSpp = 1024;        ///< samples per pixel of the references
+  int width = 0, height = 0;  ///< size override (0: each scene's `# render:` size)
+  int maxSize = 0;          ///< scale each scene down so its larger side is at most this (0: off)
+  std::string out = "results/study";  ///< output folder
+  std::string csv;          ///< CSV path (default out/study.csv, or out/study.shard-i-of-N.csv)
+  std::string cache = "results/cache/refs";  ///< reference cache folder
+  int threads = 0;          ///< worker threads (0: all cores)
+  std::optional<bool> images;  ///< write images (default: when there are at most 200 configurations)
+  int shardIndex = 0, shardCount = 1;  ///< --shard i/N
+  std::string refSampler = "sobol";  ///< sampler of the references (scrambled low-discrepancy)
+  int refBatch = 16;        ///< reference samples per pixel per streamed batch
+  bool refsOnly = false;    ///< render and cache the references, then stop (before sharded runs)
+  bool progress = true;     ///< progress bar / lines on stderr
+};
+
+/// One row of the CSV before it is measured.
+struct Configuration {
+  std::string filter;    ///< filter factory name
+  double radius = 0;     ///< support radius in pixels
+  ReconMode mode = ReconMode::WeightedAverage;
+};
+
+/// The K sample sets of one (scene, sampler, spp) and the rows made from them.
+struct SampleSetGroup {
+  int index = 0;          ///< canonical position among all groups (for sharding)
+  std::string scene;      ///< scene file path
+  std::string sampler;
+  int spp = 0;
+  std::vector<Configuration> configs;
+};
+
+/// Expands folders in `scenes` into their sorted *.txt files.
+std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes);
+
+/// Every group in canonical order (unsharded). Supersample rows exist only
+/// for the uniform sampler at square spp (one row, box r = 0.5); notes about
+/// skipped combinations are appended to `notes`.
+std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes = nullptr);
+
+/// The groups of this shard.
+std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count);
+
+/// Every distinct (filter, radius) of the study, in canonical order.
+std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config);
+
+/// Parses "i/N" (0 <= i < N). Throws OptionError("--shard").
+void parseShard(const std::string& text, int& index, int& count);
+
+/// Checks names, numbers, scenes (existence and parse) and the output
+/// folder (created if missing, must be writable). Throws InputError.
+void validateStudy(const StudyConfig& config);
+
+/// The CSV path the config writes.
+std::string csvPath(const StudyConfig& config);
+
+}  // namespace aliaslab

@@ -1,0 +1,166 @@
+#include "study/contact.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <vector>
+
+#include "core/error.h"
+#include "film/visualize.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+std::string configurationImageBase(const CsvRow& r) {
+  char radius[32];
+  std::snprintf(radius, sizeof radius, "%g", r.radius);
+  return r.sampler + "-spp" + std::to_string(r.spp) + "-" + r.filter + "-r" + radius + "-" + r.reconstruction;
+}
+
+void writeConfigurationImages(const std::string& dir, const std::string& base, const Image& seed0,
+                              const Image& reference, const Image& noise) {
+  const fs::path d(dir);
+  writeImage((d / (base + ".png")).string(), seed0);
+  Image error(seed0.width(), seed0.height()), deviation(noise.width(), noise.height());
+  for (int y = 0; y < seed0.height(); ++y)
+    for (int x = 0; x < seed0.width(); ++x) {
+      error.set(x, y, seed0.get(x, y) - reference.get(x, y));
+      deviation.set(x, y, noise.get(x, y).max(0.f).sqrt());
+    }
+  writeImage((d / (base + "-error.png")).string(), falseColor(error, kErrorScale));
+  writeImage((d / (base + "-noise.png")).string(), heatColor(deviation, kNoiseScale));
+}
+
+namespace {
+using OIIO::ImageBuf;
+using OIIO::ImageSpec;
+using OIIO::ROI;
+namespace IBA = OIIO::ImageBufAlgo;
+
+struct Tile {
+  std::string label, file;
+  ImageBuf image;
+};
+
+// Pixels of a 3-channel buffer, top-down, as floats.
+std::vector<float> pixels(const ImageBuf& b) {
+  const ImageSpec& s = b.spec();
+  std::vector<float> p(static_cast<size_t>(s.width) * s.height * 3);
+  b.get_pixels(ROI(0, s.width, 0, s.height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, p.data());
+  return p;
+}
+
+// Top-left corner of the side x side window with the largest summed error.
+void hardestWindow(const std::vector<double>& err, int w, int h, int side, int& bx, int& by) {
+  std::vector<double> sat(static_cast<size_t>(w + 1) * (h + 1), 0.0);  // summed-area table
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      sat[(y + 1) * (w + 1) + x + 1] = err[y * w + x] + sat[y * (w + 1) + x + 1] + sat[(y + 1) * (w + 1) + x] -
+                                       sat[y * (w + 1) + x];
+  double best = -1;
+  bx = by = 0;
+  for (int y = 0; y + side <= h; ++y)
+    for (int x = 0; x + side <= w; ++x) {
+      const double s = sat[(y + side) * (w + 1) + x + side] - sat[y * (w + 1) + x + side] -
+                       sat[(y + side) * (w + 1) + x] + sat[y * (w + 1) + x];
+      if (s > best) best = s, bx = x, by = y;
+    }
+}
+
+void writeSheet(const std::string& scene, const std::vector<std::vector<Tile>>& grid, const fs::path& dir) {
+  const ImageSpec& s0 = grid[0][0].image.spec();
+  const int w = s0.width, h = s0.height;
+  // Hardest region: largest summed squared error of all tiles against the reference (tile 0).
+  const std::vector<float> ref = pixels(grid[0][0].image);
+  std::vector<double> err(static_cast<size_t>(w) * h, 0.0);
+  for (const auto& row : grid)
+    for (size_t c = 1; c < row.size(); ++c) {
+      const std::vector<float> p = pixels(row[c].image);
+      for (size_t i = 0; i < err.size(); ++i)
+        for (int ch = 0; ch < 3; ++ch) err[i] += (p[3 * i + ch] - ref[3 * i + ch]) * (p[3 * i + ch] - ref[3 * i + ch]);
+    }
+  const int side = std::max(2, std::min(w, h) / 4);
+  int bx, by;
+  hardestWindow(err, w, h, side, bx, by);
+
+  // Layout: each cell is the tile, the zoomed crop below it, and a label band.
+  const int tileW = 160, tileH = std::max(1, static_cast<int>(std::lround(160.0 * h / w)));
+  const int label = 18, pad = 4, cellW = tileW + pad, cellH = tileH + tileW + label + pad;
+  size_t cols = 0;
+  for (const auto& row : grid) cols = std::max(cols, row.size());
+  ImageBuf sheet(ImageSpec(static_cast<int>(cols) * cellW + pad, static_cast<int>(grid.size()) * cellH + pad, 3,
+                           OIIO::TypeDesc::FLOAT));
+  IBA::fill(sheet, {0.12f, 0.12f, 0.12f});
+  const float outline[3] = {0.f, 1.f, 0.f};
+  std::ofstream legend(dir / ("contact-" + scene + ".txt"));
+  legend << "contact sheet of " << scene << ": rows top to bottom, tiles left to right; hardest window x=" << bx
+         << " y=" << by << " (from the top) size " << side << "\n";
+  bool fontOk = true;
+  for (size_t r = 0; r < grid.size(); ++r) {
+    for (size_t c = 0; c < grid[r].size(); ++c) {
+      const Tile& t = grid[r][c];
+      legend << "row " << r << " col " << c << ": " << t.label << " (" << t.file << ")\n";
+      ImageBuf full(ImageSpec(tileW, tileH, 3, OIIO::TypeDesc::FLOAT));
+      IBA::resample(full, t.image, false);
+      const float sx = static_cast<float>(tileW) / w, sy = static_cast<float>(tileH) / h;
+      IBA::render_box(full, static_cast<int>(bx * sx), static_cast<int>(by * sy),
+                      static_cast<int>((bx + side) * sx) - 1, static_cast<int>((by + side) * sy) - 1, outline);
+      ImageBuf crop = IBA::cut(t.image, ROI(bx, bx + side, by, by + side, 0, 1, 0, 3));
+      ImageBuf zoom(ImageSpec(tileW, tileW, 3, OIIO::TypeDesc::FLOAT));
+      IBA::resample(zoom, crop, false);
+      const int x0 = pad + static_cast<int>(c) * cellW, y0 = pad + static_cast<int>(r) * cellH;
+      IBA::paste(sheet, x0, y0 + label, 0, 0, full);
+      IBA::paste(sheet, x0, y0 + label + tileH, 0, 0, zoom);
+      if (fontOk)
+        fontOk = IBA::render_text(sheet, x0 + 2, y0 + label - 4, t.label, 10, "DejaVuSans", {1.f, 1.f, 1.f});
+    }
+  }
+  const std::string path = (dir / ("contact-" + scene + ".png")).string();
+  if (!sheet.write(path)) throw FileError(path, "cannot write the contact sheet: " + sheet.geterror());
+}
+}  // namespace
+
+void writeContactSheets(const std::string& csvPath, const std::string& imagesDir) {
+  // Per scene, keep the weighted rows at the largest spp; per (sampler, filter) the best radius.
+  struct Pick { std::string base; double mse; };
+  std::map<std::string, std::map<std::string, std::map<std::string, Pick>>> best;  // scene -> sampler -> filter
+  std::map<std::string, int> maxSpp;
+  std::vector<std::vector<std::string>> rows;
+  for (const std::string& line : readCsvLines(csvPath)) rows.push_back(splitCsvLine(line));
+  for (const auto& f : rows)
+    if (f[8] == "weighted") maxSpp[f[0]] = std::max(maxSpp[f[0]], std::stoi(f[4]));
+  for (const auto& f : rows) {
+    if (f[8] != "weighted" || std::stoi(f[4]) != maxSpp[f[0]]) continue;
+    CsvRow r;
+    r.sampler = f[3], r.spp = std::stoi(f[4]), r.filter = f[5], r.radius = std::stod(f[6]), r.reconstruction = f[8];
+    const double mse = std::stod(f[13]);  // mse_area: accuracy against the pixel area, blur included
+    auto [it, fresh] = best[f[0]][f[3]].try_emplace(f[5], Pick{configurationImageBase(r), mse});
+    if (!fresh && mse < it->second.mse) it->second = Pick{configurationImageBase(r), mse};
+  }
+  for (const auto& [scene, samplers] : best) {
+    const fs::path dir = fs::path(imagesDir) / scene;
+    const fs::path refFile = dir / "reference-area.png";
+    if (!fs::exists(refFile)) continue;
+    std::vector<std::vector<Tile>> grid;
+    for (const auto& [sampler, filters] : samplers) {
+      std::vector<Tile> row;
+      row.push_back({"reference (area)", refFile.filename().string(), ImageBuf(refFile.string())});
+      for (const auto& [filter, pick] : filters) {
+        const fs::path file = dir / (pick.base + ".png");
+        if (fs::exists(file)) row.push_back({pick.base, file.filename().string(), ImageBuf(file.string())});
+      }
+      for (Tile& t : row) t.image.read(0, 0, true, OIIO::TypeDesc::FLOAT);
+      if (row.size() > 1) grid.push_back(std::move(row));
+    }
+    if (!grid.empty()) writeSheet(scene, grid, imagesDir);
+  }
+}
+
+}  // namespace aliaslab

@@ -1,0 +1,220 @@
+#include "study/csv.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <tuple>
+
+#include "core/error.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+const std::vector<std::string>& csvColumns() {
+  static const std::vector<std::string> cols = {
+      "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
+      "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
+      "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
+      "reconstruct_ms", "threads"};
+  return cols;
+}
+
+const std::string& csvHeader() {
+  static const std::string header = [] {
+    std::string h;
+    for (const std::string& c : csvColumns()) h += (h.empty() ? "" : ",") + c;
+    return h;
+  }();
+  return header;
+}
+
+std::vector<size_t> csvTimingColumns() { return {21, 22}; }
+
+namespace {
+enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
+           kRefSpp = 15 };
+
+std::string real(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+std::string quoted(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string out = "\"";
+  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string joinKey(const std::vector<std::string>& f) {
+  static const int cols[] = {kScene, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds, kRefSpp};
+  std::string key;
+  for (int c : cols) key += f[c] + '\x1f';
+  return key;
+}
+
+double num(const std::string& s) {
+  try { return std::stod(s); } catch (const std::exception&) { return 0; }
+}
+}  // namespace
+
+std::string formatCsvRow(const CsvRow& r) {
+  std::ostringstream s;
+  s << quoted(r.scene) << ',' << r.width << ',' << r.height << ',' << quoted(r.sampler) << ',' << r.spp << ','
+    << quoted(r.filter) << ',' << real(r.radius) << ',' << quoted(r.filterParams) << ',' << quoted(r.reconstruction)
+    << ',' << r.seeds << ',' << real(r.mse) << ',' << real(r.aliasing) << ',' << real(r.noise) << ','
+    << real(r.mseArea) << ',' << real(r.psnr) << ',' << r.refSpp << ',' << real(r.refError) << ',' << r.flagged
+    << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
+    << real(r.reconstructMs) << ',' << r.threads;
+  return s.str();
+}
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool inQuotes = false;
+  for (size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (inQuotes) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') fields.back() += '"', ++i;
+      else if (c == '"') inQuotes = false;
+      else fields.back() += c;
+    } else if (c == '"') {
+      inQuotes = true;
+    } else if (c == ',') {
+      fields.emplace_back();
+    } else {
+      fields.back() += c;
+    }
+  }
+  return fields;
+}
+
+std::string csvKey(const std::vector<std::string>& fields) {
+  if (fields.size() != csvColumns().size()) return {};
+  return joinKey(fields);
+}
+
+std::string csvKey(const CsvRow& row) { return csvKey(splitCsvLine(formatCsvRow(row))); }
+
+std::vector<std::string> readCsvLines(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open for reading");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::vector<std::string> lines;
+  size_t start = 0;
+  bool header = true;
+  for (size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
+    const std::string line = text.substr(start, nl - start);
+    if (header) {
+      if (line != csvHeader()) throw FileError(path, "not a study CSV (unexpected header)");
+      header = false;
+    } else if (!line.empty()) {
+      lines.push_back(line);
+    }
+  }
+  if (header && !text.empty()) throw FileError(path, "not a study CSV (no complete header line)");
+  return lines;  // a trailing partial line (no newline) is dropped
+}
+
+std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
+  struct Item {
+    std::vector<std::string> f;
+    std::string line;
+  };
+  std::vector<Item> items;
+  for (std::string& l : lines) items.push_back({splitCsvLine(l), std::move(l)});
+  auto order = [](const Item& a) {
+    const auto& f = a.f;
+    return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kFilter], num(f[kRadius]), f[kRecon],
+                           num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams]);
+  };
+  std::erase_if(items, [](const Item& i) { return i.f.size() != csvColumns().size(); });
+  std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return order(a) < order(b); });
+  std::vector<std::string> out;
+  std::string previous;
+  for (Item& i : items) {
+    const std::string key = joinKey(i.f);
+    if (!out.empty() && key == previous) continue;
+    previous = key;
+    out.push_back(std::move(i.line));
+  }
+  return out;
+}
+
+void writeCsvFile(const std::string& path, const std::vector<std::string>& lines) {
+  const std::string tmp = path + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw FileError(path, "cannot open for writing");
+    out << csvHeader() << '\n';
+    for (const std::string& l : lines) out << l << '\n';
+    out.flush();
+    if (!out) throw FileError(path, "write failed");
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw FileError(path, "cannot move the finished CSV into place");
+  }
+}
+
+void canonicaliseCsv(const std::string& path) { writeCsvFile(path, sortCsvRows(readCsvLines(path))); }
+
+void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs) {
+  std::vector<std::string> all;
+  for (const std::string& in : inputs) {
+    auto lines = readCsvLines(in);
+    all.insert(all.end(), lines.begin(), lines.end());
+  }
+  writeCsvFile(out, sortCsvRows(std::move(all)));
+}
+
+CsvAppender::CsvAppender(const std::string& path) : path_(path) {
+  std::error_code ec;
+  bool exists = fs::exists(path, ec) && fs::file_size(path, ec) > 0;
+  if (exists) {
+    // Resume: keep complete lines, cut a torn last line (or a torn header).
+    std::ifstream in(path, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t nl = text.rfind('\n');
+    const size_t keep = nl == std::string::npos ? 0 : nl + 1;
+    if (keep != text.size()) fs::resize_file(path, keep, ec);
+    if (ec) throw FileError(path, "cannot truncate the partial last line: " + ec.message());
+    exists = keep > 0;
+    if (exists) {
+      const auto lines = readCsvLines(path);
+      for (const std::string& l : lines) keys_.insert(csvKey(splitCsvLine(l)));
+      resumed_ = lines.size();
+    }
+  }
+  fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd_ < 0) throw FileError(path, "cannot open for appending");
+  if (!exists) {
+    const std::string h = csvHeader() + '\n';
+    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size())) throw FileError(path, "write failed");
+  }
+}
+
+CsvAppender::~CsvAppender() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void CsvAppender::append(const CsvRow& row) {
+  const std::string line = formatCsvRow(row) + '\n';
+  if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()))
+    throw FileError(path_, "write failed");
+  ::fdatasync(fd_);
+  keys_.insert(csvKey(row));
+}
+
+}  // namespace aliaslab

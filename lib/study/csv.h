@@ -1,0 +1,99 @@
+// The study CSV: one row per configuration, appended whole, resumable,
+// shardable, mergeable.
+//
+// Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
+//   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
+//   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+// Reals are printed with %.9g; fields holding a comma or quote are quoted.
+//
+// A row's key is its identifying columns (scene ... reconstruction, seeds,
+// ref_spp): a rerun skips configurations whose key is already in the file.
+// CsvAppender opens an existing file for resumption: it checks the header,
+// truncates a trailing partial line (a killed run), and appends each new row
+// with one write() followed by fsync, so a finished row is never lost or torn.
+// sortCsvRows() puts rows into the canonical order (by key, numbers compared
+// as numbers), which the end of a run and `sweep --merge` both apply, so a
+// resumed, sharded or interrupted run ends with the same file.
+#pragma once
+#include <set>
+#include <string>
+#include <vector>
+
+namespace aliaslab {
+
+struct CsvRow {
+  std::string scene;
+  int width = 0, height = 0;
+  std::string sampler;
+  int spp = 0;
+  std::string filter;
+  double radius = 0;
+  std::string filterParams;
+  std::string reconstruction;
+  int seeds = 0;
+  double mse = 0, aliasing = 0, noise = 0, mseArea = 0, psnr = 0;
+  int refSpp = 0;
+  double refError = 0;
+  int flagged = 0;
+  long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
+  double traceMs = 0, reconstructMs = 0;
+  int threads = 0;
+};
+
+/// The header line (no newline).
+const std::string& csvHeader();
+/// Column names in order.
+const std::vector<std::string>& csvColumns();
+/// Indices of the timing columns (trace_ms, reconstruct_ms), which may differ between runs.
+std::vector<size_t> csvTimingColumns();
+
+/// One formatted line (no newline).
+std::string formatCsvRow(const CsvRow& row);
+/// The key of a row: its identifying fields as they are printed.
+std::string csvKey(const CsvRow& row);
+
+/// Splits one CSV line into fields (RFC 4180 quoting).
+std::vector<std::string> splitCsvLine(const std::string& line);
+/// Key of a parsed line (same text as csvKey of the row it came from).
+std::string csvKey(const std::vector<std::string>& fields);
+
+/// Appends rows to a CSV, resuming an existing one.
+class CsvAppender {
+ public:
+  /// Opens (creating with the header if missing or empty). Throws FileError
+  /// when the file cannot be opened or has another header.
+  explicit CsvAppender(const std::string& path);
+  ~CsvAppender();
+  CsvAppender(const CsvAppender&) = delete;
+  CsvAppender& operator=(const CsvAppender&) = delete;
+
+  bool has(const std::string& key) const { return keys_.count(key) > 0; }
+  size_t resumedRows() const { return resumed_; }
+  /// Writes the row with one write() and fsync. Throws FileError.
+  void append(const CsvRow& row);
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  std::set<std::string> keys_;
+  size_t resumed_ = 0;
+};
+
+/// Reads a CSV's data lines (header checked, partial last line dropped).
+std::vector<std::string> readCsvLines(const std::string& path);
+
+/// Sorts lines into canonical order and drops exact-key duplicates (first kept).
+std::vector<std::string> sortCsvRows(std::vector<std::string> lines);
+
+/// Writes header + lines to `path` atomically (temporary file, then rename).
+void writeCsvFile(const std::string& path, const std::vector<std::string>& lines);
+
+/// Rewrites a CSV in canonical order.
+void canonicaliseCsv(const std::string& path);
+
+/// Merges shard CSVs into `out` in canonical order (rows with the same key
+/// are kept once). Throws FileError for an unreadable input or a foreign header.
+void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs);
+
+}  // namespace aliaslab

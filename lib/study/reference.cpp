@@ -1,0 +1,214 @@
+#include "study/reference.h"
+
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "core/error.h"
+#include "core/hash.h"
+#include "filter/filter.h"
+#include "render/render.h"
+#include "sampling/sampler.h"
+#include "study/metrics.h"
+#include "study/progress.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string hex16(uint64_t v) {
+  char buf[20];
+  std::snprintf(buf, sizeof buf, "%016" PRIx64, v);
+  return buf;
+}
+
+std::string jsonString(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\', out += c;
+    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
+    else out += c;
+  }
+  return out + "\"";
+}
+
+std::string jsonNumber(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// The batch size actually used: at most half the total, so there are two halves.
+int effectiveBatch(const ReferenceOptions& o) { return std::min(o.batchSpp, o.spp / 2); }
+
+// The number in `"field": <number>` of a small JSON text, or -1.
+double jsonField(const std::string& text, const std::string& field) {
+  const size_t at = text.find("\"" + field + "\":");
+  if (at == std::string::npos) return -1;
+  try { return std::stod(text.substr(at + field.size() + 3)); } catch (const std::exception&) { return -1; }
+}
+}  // namespace
+
+void validateReferenceOptions(const ReferenceOptions& o) {
+  if (o.spp < 2 || o.spp % 2) throw OptionError("--ref-spp", "must be an even number >= 2, found " + std::to_string(o.spp));
+  if (o.batchSpp < 1) throw OptionError("--ref-batch", "must be >= 1");
+  const int batch = effectiveBatch(o);
+  if (o.spp % batch || (o.spp / batch) % 2)
+    throw OptionError("--ref-spp", "must be a multiple of 2 x " + std::to_string(o.batchSpp) +
+                                       " (two equal halves of whole batches), found " + std::to_string(o.spp));
+  makeSampler(o.sampler, batch, o.seed);  // names the valid samplers when unknown
+}
+
+std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& o) {
+  uint64_t h = hashWords(scene.contentHash, o.spp, o.seed, effectiveBatch(o));
+  h = hashBytes(filterDescribe, h);
+  h = hashBytes(o.sampler, h);
+  return hex16(h);
+}
+
+std::string gitRevision() {
+  const std::string cmd = std::string("git -C '") + ALIASLAB_SOURCE_DIR + "' rev-parse HEAD 2>/dev/null";
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(::popen(cmd.c_str(), "r"), ::pclose);
+  if (!pipe) return "unknown";
+  char buf[128] = {0};
+  if (!std::fgets(buf, sizeof buf, pipe.get())) return "unknown";
+  std::string rev(buf);
+  while (!rev.empty() && (rev.back() == '\n' || rev.back() == '\r')) rev.pop_back();
+  return rev.size() == 40 ? rev : "unknown";
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".partial";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw FileError(path, "cannot open for writing");
+    out << text;
+    if (!out.flush()) throw FileError(path, "write failed");
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw FileError(path, "cannot move the finished file into place");
+}
+
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
+                              const ReferenceOptions& o) {
+  validateReferenceOptions(o);
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::unique_ptr<Filter>> filters;
+  std::vector<const Filter*> raw;
+  for (const auto& [name, r] : specs) {
+    filters.push_back(makeFilter(name, static_cast<float>(r)));
+    raw.push_back(filters.back().get());
+  }
+
+  // Two independent halves: even batches into a, odd batches into b.
+  Accumulator a(scene.width, scene.height, raw), b(scene.width, scene.height, raw);
+  const int batch = effectiveBatch(o);
+  const int batches = o.spp / batch;
+  ProgressBar progress(batches, "reference " + scene.stem, o.progress);
+  for (int k = 0; k < batches; ++k) {
+    const auto sampler = makeSampler(o.sampler, batch, hashWords(o.seed, k));
+    const SampleBuffer samples = traceSamples(*scene.tracer, *sampler, scene.width, scene.height, o.threads);
+    (k % 2 ? b : a).add(samples, o.threads);
+    progress.advance();
+  }
+  progress.finish();
+
+  // G = (Ga + Gb) / 2 with the variance of that mean as its error.
+  ReferenceSet set;
+  set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
+  set.accumulatorBytes = a.bytes() + b.bytes();
+  for (size_t i = 0; i < specs.size(); ++i) {
+    Reconstruction ra = a.resolve(i), rb = b.resolve(i);
+    ReferenceImage ref;
+    ref.filter = specs[i];
+    ref.describe = filters[i]->describe();
+    ref.image = averageImages(ra.image, rb.image);
+    ref.error = halvesError(ra.image, rb.image);
+    ref.stats = ra.stats;
+    ref.stats += rb.stats;
+    ref.key = referenceKey(scene, ref.describe, o);
+    set.images.push_back(std::move(ref));
+  }
+  set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return set;
+}
+
+std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
+                              const std::vector<std::string>& imageNames) {
+  std::ostringstream j;
+  j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(scene.path)
+    << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
+    << ",\n  \"tracing\": " << jsonString(describeTraceOptions(scene.line.options)) << ",\n  \"spp\": " << set.spp
+    << ",\n  \"sampler\": " << jsonString(set.sampler) << ",\n  \"seed\": " << set.seed
+    << ",\n  \"git_revision\": " << jsonString(gitRevision()) << ",\n  \"seconds\": " << jsonNumber(set.seconds)
+    << ",\n  \"filters\": [";
+  for (size_t i = 0; i < set.images.size(); ++i) {
+    const ReferenceImage& r = set.images[i];
+    j << (i ? "," : "") << "\n    {\"filter\": " << jsonString(r.filter.first) << ", \"radius\": "
+      << jsonNumber(r.filter.second) << ", \"describe\": " << jsonString(r.describe)
+      << ", \"ref_error\": " << jsonNumber(r.error) << ", \"undefined_pixels\": " << r.stats.undefinedPixels
+      << ", \"key\": " << jsonString(r.key) << ", \"image\": " << jsonString(i < imageNames.size() ? imageNames[i] : "")
+      << "}";
+  }
+  j << "\n  ]\n}\n";
+  return j.str();
+}
+
+ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
+                              const ReferenceOptions& o, const std::string& cacheDir) {
+  validateReferenceOptions(o);
+  std::error_code ec;
+  fs::create_directories(cacheDir, ec);
+  ReferenceSet set;
+  set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
+  set.images.resize(specs.size());
+
+  // Load what the cache holds.
+  std::vector<FilterSpec> missing;
+  std::vector<size_t> missingIndex;
+  for (size_t i = 0; i < specs.size(); ++i) {
+    const std::string describe = makeFilter(specs[i].first, static_cast<float>(specs[i].second))->describe();
+    const std::string key = referenceKey(scene, describe, o);
+    const fs::path exr = fs::path(cacheDir) / (key + ".exr"), json = fs::path(cacheDir) / (key + ".json");
+    if (fs::exists(exr) && fs::exists(json)) {
+      try {
+        ReferenceImage& r = set.images[i];
+        r.image = readImage(exr.string());
+        r.error = jsonField(readFileBytes(json.string()), "ref_error");
+        if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
+          r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
+          continue;
+        }
+      } catch (const InputError&) {
+      }  // unreadable entry: render it again
+    }
+    missing.push_back(specs[i]);
+    missingIndex.push_back(i);
+  }
+  if (missing.empty()) return set;
+
+  // Render the missing ones together and store each with its manifest.
+  ReferenceSet fresh = renderReferences(scene, missing, o);
+  set.seconds = fresh.seconds;
+  set.accumulatorBytes = fresh.accumulatorBytes;
+  for (size_t m = 0; m < missing.size(); ++m) {
+    ReferenceImage& r = fresh.images[m];
+    const std::string exr = (fs::path(cacheDir) / (r.key + ".exr")).string();
+    writeImage(exr, r.image);
+    ReferenceSet one;
+    one.spp = fresh.spp, one.sampler = fresh.sampler, one.seed = fresh.seed, one.seconds = fresh.seconds;
+    one.images = {r};
+    writeTextFile((fs::path(cacheDir) / (r.key + ".json")).string(),
+                  referenceManifest(scene, one, {r.key + ".exr"}));
+    set.images[missingIndex[m]] = std::move(r);
+  }
+  return set;
+}
+
+}  // namespace aliaslab

@@ -1,0 +1,90 @@
+// Ground truth: high-sample references for many (filter, radius) pairs at
+// once, streamed, with their own error estimate, cached by content.
+//
+// renderReferences() traces refSpp samples per pixel in batches of
+// batchSpp from a scrambled low-discrepancy sampler (each batch an
+// independent scramble: seed hashWords(seed, batch)). Even batches go into
+// accumulator a, odd ones into b (film/film.h Accumulator, double
+// precision): two independent halves. The reference is their mean
+// G = (Ga + Gb) / 2 and its error estimate is
+//   ref_error = mean over pixels and channels of (Ga - Gb)^2 / 4,
+// the variance of that mean. No sample outlives its batch, so memory is
+// independent of refSpp: 2 x width x height x filters x 4 doubles plus one
+// batch of samples.
+//
+// The cache key hashes the scene's content hash (scene and OBJ bytes, size,
+// tracing flags), the filter's describe(), refSpp, the sampler, the seed and
+// the batch size. Each reference is stored as <cache>/<key>.exr beside
+// <key>.json (its manifest). cachedReferences() loads what is there and
+// renders the missing ones together in one pass; files are written to a
+// temporary name and renamed, so concurrent shards can share a cache.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/image.h"
+#include "film/film.h"
+#include "study/study_scene.h"
+
+namespace aliaslab {
+
+using FilterSpec = std::pair<std::string, double>;  ///< (filter name, radius in pixels)
+
+struct ReferenceOptions {
+  int spp = 1024;                 ///< samples per pixel in total (even; a multiple of 2 * batchSpp when >= that)
+  std::string sampler = "sobol";  ///< scrambled low-discrepancy sampler
+  uint64_t seed = 0x5eed2026;     ///< base seed of the batch scrambles
+  int batchSpp = 16;              ///< samples per pixel per batch (memory of one batch)
+  int threads = 0;                ///< worker threads (0: all cores)
+  bool progress = true;           ///< progress bar on stderr
+};
+
+struct ReferenceImage {
+  FilterSpec filter;
+  std::string describe;  ///< Filter::describe()
+  Image image;           ///< G = (Ga + Gb) / 2
+  double error = 0;      ///< ref_error: mean (Ga - Gb)^2 / 4
+  ReconStats stats;      ///< pixel counts of the resolve (both halves summed)
+  std::string key;       ///< cache key, 16 hex digits
+  bool fromCache = false;
+};
+
+struct ReferenceSet {
+  std::vector<ReferenceImage> images;  ///< in the requested order
+  double seconds = 0;                  ///< time spent rendering (0 when all came from the cache)
+  int spp = 0;
+  std::string sampler;
+  uint64_t seed = 0;
+  size_t accumulatorBytes = 0;         ///< memory held by the accumulators during the pass
+};
+
+/// Checks the options (OptionError("--ref-spp" / "--ref-sampler")).
+void validateReferenceOptions(const ReferenceOptions& options);
+
+/// The cache key of one reference.
+std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& options);
+
+/// Renders every filter in one streamed pass (no cache).
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterSpec>& filters,
+                              const ReferenceOptions& options);
+
+/// Loads cached references from `cacheDir`, renders the missing ones in one
+/// pass and stores them. Throws FileError when the cache cannot be written.
+ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterSpec>& filters,
+                              const ReferenceOptions& options, const std::string& cacheDir);
+
+/// JSON manifest of a reference set: scene, size, flags, spp, sampler, seed,
+/// git revision, seconds, and per filter describe(), ref_error, key, image file.
+/// `imageNames[i]` is the image file written for filter i ("" for none).
+std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
+                              const std::vector<std::string>& imageNames);
+
+/// `git rev-parse HEAD` of the source tree at run time, else "unknown".
+std::string gitRevision();
+
+/// Writes text to a file atomically. Throws FileError.
+void writeTextFile(const std::string& path, const std::string& text);
+
+}  // namespace aliaslab

@@ -1,0 +1,59 @@
+// A scene ready for the study: parsed, accelerated, with its tracer, the
+// image size and tracing flags of its `# render:` line, and a content hash.
+//
+// The scenes engineer puts exactly one machine-readable line in every scene:
+//   # render: -size W H [-shadows] [-bounces n] [-weight w] [-shade_back] [-grid nx ny nz]
+// readRenderLine() parses it (ParseError "<file>:<line>: ..." for unknown or
+// malformed flags). The content hash covers the scene file's bytes, every
+// OBJ dependency's bytes, the size and the tracing flags: references cached
+// under it are reused exactly when they would come out the same.
+#pragma once
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "accel/aggregate.h"
+#include "render/tracer.h"
+#include "scene/scene.h"
+
+namespace aliaslab {
+
+struct RenderLine {
+  int width = 0, height = 0;   ///< -size W H
+  TraceOptions options;        ///< -shadows -bounces -weight -shade_back
+  int grid[3] = {0, 0, 0};     ///< -grid nx ny nz (0: automatic)
+  bool found = false;          ///< false when the scene has no `# render:` line
+};
+
+/// Reads the `# render:` line of a scene file. Throws FileError / ParseError.
+RenderLine readRenderLine(const std::string& path);
+
+/// The tracing flags as text ("-shadows -bounces 4 ..."), for manifests and hashes.
+std::string describeTraceOptions(const TraceOptions& options);
+
+/// 64-bit hash of a byte string, chained from `seed`.
+uint64_t hashBytes(const std::string& bytes, uint64_t seed = 0);
+
+/// Whole file as bytes. Throws FileError.
+std::string readFileBytes(const std::string& path);
+
+class StudyScene {
+ public:
+  std::string path;       ///< the scene file as given
+  std::string stem;       ///< file name without folder and extension (the CSV's scene column)
+  int width = 0, height = 0;
+  RenderLine line;
+  Scene scene;
+  std::unique_ptr<Aggregate> aggregate;
+  std::unique_ptr<Tracer> tracer;
+  uint64_t contentHash = 0;  ///< scene + OBJ bytes, size, tracing flags
+};
+
+/// Parses and prepares a scene. Size: (width, height) when both > 0, else the
+/// render line's size; then scaled down (aspect kept, rounded, >= 1) so the
+/// larger side is at most maxSize when maxSize > 0. Throws InputError, also
+/// when no size is known.
+std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width = 0, int height = 0,
+                                           int maxSize = 0);
+
+}  // namespace aliaslab

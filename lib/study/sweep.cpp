@@ -1,0 +1,252 @@
+#include "study/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include "core/parallel.h"
+#include "filter/filter.h"
+#include "render/render.h"
+#include "sampling/sampler.h"
+#include "study/contact.h"
+#include "study/csv.h"
+#include "study/metrics.h"
+#include "study/progress.h"
+#include "study/reference.h"
+#include "study/study_scene.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+const FilterSpec kArea{"box", 0.5};
+
+// One configuration in flight: its row, filter, reference and running metrics.
+struct Pending {
+  CsvRow row;
+  ReconMode mode;
+  std::unique_ptr<Filter> filter;
+  const ReferenceImage* reference = nullptr;
+  std::unique_ptr<MetricAccumulator> metrics;
+  ReconStats stats;
+  double traceMs = 0, reconMs = 0;
+  Image seed0;
+};
+
+std::string supersampleParams(int spp) {
+  const int k = static_cast<int>(std::lround(std::sqrt(spp)));
+  return "supersample " + std::to_string(k) + "x" + std::to_string(k) + " sub-pixels, binomial 1-2-1, box";
+}
+
+// The row of a configuration before measurement (identifying columns only).
+CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGroup& g, const Configuration& cfg,
+                   const Filter& filter) {
+  CsvRow r;
+  r.scene = s.stem, r.width = s.width, r.height = s.height;
+  r.sampler = g.sampler, r.spp = g.spp;
+  r.filter = cfg.filter, r.radius = cfg.radius;
+  r.filterParams = cfg.mode == ReconMode::Supersample ? supersampleParams(g.spp) : filter.describe();
+  r.reconstruction = toString(cfg.mode);
+  r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
+  return r;
+}
+
+ReferenceOptions referenceOptions(const StudyConfig& c) {
+  ReferenceOptions o;
+  o.spp = c.refSpp, o.sampler = c.refSampler, o.batchSpp = c.refBatch, o.threads = c.threads;
+  o.progress = c.progress;
+  return o;
+}
+}  // namespace
+
+size_t countConfigurations(const StudyConfig& config) {
+  size_t n = 0;
+  for (const SampleSetGroup& g : expandStudy(config)) n += g.configs.size();
+  return n;
+}
+
+SweepSummary runSweep(const StudyConfig& config) {
+  validateStudy(config);
+  validateReferenceOptions(referenceOptions(config));
+  const auto start = Clock::now();
+  SweepSummary sum;
+  const auto all = expandStudy(config, &sum.notes);
+  for (const std::string& n : sum.notes) std::fprintf(stderr, "note: %s\n", n.c_str());
+  const auto groups = shardGroups(all, config.shardIndex, config.shardCount);
+  size_t total = 0;
+  for (const auto& g : all) total += g.configs.size();
+  sum.groups = groups.size();
+  for (const auto& g : groups) sum.configurations += g.configs.size();
+  sum.images = config.images ? *config.images : total <= 200;
+
+  const std::string csv = csvPath(config);
+  std::unique_ptr<CsvAppender> out;
+  if (!config.refsOnly) out = std::make_unique<CsvAppender>(csv);
+  const int threads = config.threads;
+  const ReferenceOptions refOpts = referenceOptions(config);
+
+  // Work units for the progress bar: one per traced sample set.
+  double units = 0;
+  std::vector<double> groupUnits;
+  for (const auto& g : groups) {
+    size_t importance = 0;
+    for (const auto& c : g.configs) importance += c.mode == ReconMode::ImportanceSampled;
+    groupUnits.push_back(config.seeds * (1.0 + importance));
+    units += groupUnits.back();
+  }
+  ProgressBar progress(units, "sweep", config.progress && !config.refsOnly);
+
+  for (size_t gi = 0; gi < groups.size();) {
+    // One scene at a time: load it and its references once.
+    const std::string scenePath = groups[gi].scene;
+    size_t gend = gi;
+    while (gend < groups.size() && groups[gend].scene == scenePath) ++gend;
+    const auto scene = loadStudyScene(scenePath, config.width, config.height, config.maxSize);
+
+    // Which configurations are still missing from the CSV?
+    std::vector<std::vector<Pending>> pending(gend - gi);
+    std::vector<FilterSpec> specs{kArea};
+    for (size_t g = gi; g < gend; ++g)
+      for (const Configuration& cfg : groups[g].configs) {
+        Pending p;
+        p.mode = cfg.mode;
+        p.filter = makeFilter(cfg.filter, static_cast<float>(cfg.radius));
+        p.row = templateRow(config, *scene, groups[g], cfg, *p.filter);
+        if (out && out->has(csvKey(p.row))) {
+          ++sum.rowsSkipped;
+          continue;
+        }
+        const FilterSpec spec{cfg.filter, cfg.radius};
+        if (std::find(specs.begin(), specs.end(), spec) == specs.end()) specs.push_back(spec);
+        pending[g - gi].push_back(std::move(p));
+      }
+    bool any = config.refsOnly;
+    for (const auto& p : pending) any = any || !p.empty();
+    if (!any) {
+      for (size_t g = gi; g < gend; ++g) progress.advance(groupUnits[g]);
+      gi = gend;
+      continue;
+    }
+
+    // References: cached, or rendered together in one pass.
+    const ReferenceSet refs = cachedReferences(*scene, specs, refOpts, config.cache);
+    std::map<FilterSpec, const ReferenceImage*> refOf;
+    for (size_t i = 0; i < specs.size(); ++i) refOf[specs[i]] = &refs.images[i];
+    const ReferenceImage& area = *refOf.at(kArea);
+    const fs::path imageDir = fs::path(config.out) / "images" / scene->stem;
+    if (!config.refsOnly) {
+      std::vector<std::string> names;
+      for (const auto& r : refs.images) names.push_back("cache/" + r.key + ".exr");
+      fs::create_directories(fs::path(config.out) / "references");
+      writeTextFile((fs::path(config.out) / "references" / (scene->stem + ".json")).string(),
+                    referenceManifest(*scene, refs, names));
+      if (sum.images) {
+        fs::create_directories(imageDir);
+        writeImage((imageDir / "reference-area.png").string(), area.image);
+      }
+    }
+    if (config.refsOnly) {
+      gi = gend;
+      continue;
+    }
+
+    for (size_t g = gi; g < gend; ++g) {
+      const SampleSetGroup& group = groups[g];
+      auto& rows = pending[g - gi];
+      double advanced = 0;
+      auto step = [&] { progress.advance(1), advanced += 1; };
+      if (rows.empty()) {
+        progress.advance(groupUnits[g]);
+        continue;
+      }
+      for (Pending& p : rows) {
+        p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
+        p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image);
+      }
+      bool shared = false;
+      for (const Pending& p : rows) shared = shared || p.mode != ReconMode::ImportanceSampled;
+
+      // K seeds: trace each sample set once, reconstruct it with every filter.
+      for (int k = 0; k < config.seeds; ++k) {
+        const auto sampler = makeSampler(group.sampler, group.spp, static_cast<uint64_t>(k));
+        auto keep = [&](Pending& p, Reconstruction&& r, double traceMs, double reconMs) {
+          p.metrics->add(r.image);
+          p.stats += r.stats;
+          p.traceMs += traceMs / config.seeds, p.reconMs += reconMs / config.seeds;
+          if (k == 0 && sum.images) p.seed0 = std::move(r.image);
+        };
+        if (shared) {
+          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          auto t0 = Clock::now();
+          const SampleBuffer samples = traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
+          const double traceMs = msSince(t0);
+          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          ++sum.sampleSetsTraced;
+          for (Pending& p : rows) {
+            if (p.mode == ReconMode::ImportanceSampled) continue;
+            t0 = Clock::now();
+            Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
+            keep(p, std::move(r), traceMs, msSince(t0));
+          }
+          step();
+        }
+        for (Pending& p : rows) {
+          if (p.mode != ReconMode::ImportanceSampled) continue;
+          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          auto t0 = Clock::now();
+          const SampleBuffer samples =
+              traceImportanceSamples(*scene->tracer, *sampler, *p.filter, scene->width, scene->height, threads);
+          const double traceMs = msSince(t0);
+          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          ++sum.importanceTraces;
+          t0 = Clock::now();
+          Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
+          keep(p, std::move(r), traceMs, msSince(t0));
+          step();
+        }
+      }
+
+      // Rows (and images) of the group.
+      for (Pending& p : rows) {
+        const Metrics m = p.metrics->result();
+        CsvRow& r = p.row;
+        r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.mseArea, r.psnr = m.psnr;
+        r.refError = p.reference->error;
+        r.flagged = m.mse < 4.0 * p.reference->error ? 1 : 0;
+        r.nanPixels = static_cast<long long>(p.stats.nanPixels);
+        r.negativePixels = static_cast<long long>(p.stats.negativePixels);
+        r.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
+        r.traceMs = p.traceMs, r.reconstructMs = p.reconMs;
+        if (sum.images) {
+          fs::create_directories(imageDir);
+          writeConfigurationImages(imageDir.string(), configurationImageBase(r), p.seed0, p.reference->image,
+                                   p.metrics->noiseMap());
+        }
+        out->append(r);
+        ++sum.rowsWritten;
+      }
+      progress.advance(std::max(0.0, groupUnits[g] - advanced));
+    }
+    gi = gend;
+  }
+  progress.finish();
+
+  // Canonical order, then contact sheets from the finished rows.
+  if (out) {
+    out.reset();
+    canonicaliseCsv(csv);
+    if (sum.images) writeContactSheets(csv, (fs::path(config.out) / "images").string());
+  }
+  sum.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return sum;
+}
+
+}  // namespace aliaslab

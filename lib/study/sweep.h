@@ -1,0 +1,46 @@
+// The sweep: every configuration of a StudyConfig measured into one CSV row.
+//
+// For each (scene, sampler, spp) group of this shard, in canonical order:
+// the references of every (filter, radius) plus the pixel-area reference
+// come from the cache (or are rendered in one pass); then for each seed
+// k = 0 .. K-1 the sample set is traced ONCE (render/render.h traceSamples,
+// sampler seed k) and reconstructed from memory with every (filter, radius)
+// in the weighted and classic modes, and with the 3x3-binomial supersample
+// mode for the uniform sampler at square spp. Importance mode traces its own
+// samples per filter (traceImportanceSamples). Each image goes straight into
+// its configuration's MetricAccumulator. When the K seeds are done, the
+// group's rows are appended whole (CsvAppender) and, when images are on,
+// the seed-0 image, signed error and noise map are written.
+//
+// Resuming: configurations whose key is already in the CSV are skipped (a
+// group whose rows are all present is not traced). At the end the CSV is
+// rewritten in canonical order, so an interrupted-and-resumed run, or merged
+// shards, give the same file as one uninterrupted run (timing aside).
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "study/config.h"
+
+namespace aliaslab {
+
+struct SweepSummary {
+  size_t groups = 0;            ///< sample-set groups of this shard
+  size_t sampleSetsTraced = 0;  ///< traceSamples calls (one per group and seed, when needed)
+  size_t importanceTraces = 0;  ///< traceImportanceSamples calls
+  uint64_t primaryRays = 0;     ///< primary rays traced for sample sets (references excluded)
+  size_t rowsWritten = 0, rowsSkipped = 0;
+  size_t configurations = 0;    ///< rows this shard is responsible for
+  bool images = false;          ///< whether images were written
+  double seconds = 0;
+  std::vector<std::string> notes;  ///< skipped combinations etc.
+};
+
+/// Validates (InputError before any work), then runs the sweep.
+SweepSummary runSweep(const StudyConfig& config);
+
+/// Total number of configurations (rows) of the unsharded study.
+size_t countConfigurations(const StudyConfig& config);
+
+}  // namespace aliaslab

@@ -1,0 +1,259 @@
+// Filter contract tests over every registered filter and a range of radii,
+// plus the published facts about the classic profiles.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <tuple>
+
+#include "core/error.h"
+#include "core/hash.h"
+#include "filter/filter.h"
+
+namespace aliaslab {
+namespace {
+
+// 5-point Gauss-Legendre on [-1, 1]
+constexpr double kX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+constexpr double kW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665,
+                          0.2369268850561891};
+
+/// Composite 5-point Gauss-Legendre of f over [a, b] in `cells` cells.
+template <class F>
+double gl1(F&& f, double a, double b, int cells) {
+  double s = 0, h = (b - a) / cells;
+  for (int c = 0; c < cells; ++c)
+    for (int k = 0; k < 5; ++k) s += kW[k] * f(a + (c + 0.5) * h + 0.5 * h * kX[k]);
+  return s * 0.5 * h;
+}
+
+/// 2-D integral of g(f(dx, dy)) over the support: Cartesian product rule on
+/// the square, or polar (radius x angle) on the disc; independent of Filter::integral().
+/// `cells` per axis: kinks of |f| at sign changes need many.
+template <class G>
+double quad2(const Filter& f, G&& g, int cells) {
+  const double r = f.radius();
+  if (f.radial())
+    return gl1([&](double rho) {
+      return rho * gl1([&](double phi) { return g(f.eval(float(rho * std::cos(phi)), float(rho * std::sin(phi)))); },
+                       0, 2 * M_PI, 8);
+    }, 0, r, cells);
+  return gl1([&](double y) { return gl1([&](double x) { return g(f.eval(float(x), float(y))); }, -r, r, cells); },
+             -r, r, cells);
+}
+
+using Param = std::tuple<std::string, float>;
+class FilterContract : public ::testing::TestWithParam<Param> {
+ protected:
+  void SetUp() override { filter = makeFilter(std::get<0>(GetParam()), std::get<1>(GetParam())); }
+  std::unique_ptr<Filter> filter;
+};
+
+TEST_P(FilterContract, ZeroPastRadius) {
+  const float r = filter->radius();
+  HashRng rng(hashWords(1, r * 1000));
+  for (int k = 0; k < 4000; ++k) {
+    const float dx = (2 * rng.nextFloat() - 1) * 2 * r, dy = (2 * rng.nextFloat() - 1) * 2 * r;
+    const bool outside = filter->radial() ? std::sqrt(dx * dx + dy * dy) > r : (std::abs(dx) > r || std::abs(dy) > r);
+    if (outside) {
+      EXPECT_EQ(filter->eval(dx, dy), 0.f) << dx << " " << dy;
+    }
+  }
+  EXPECT_EQ(filter->eval(r * 1.0001f, 0), 0.f);
+  EXPECT_EQ(filter->eval(0, -r * 1.0001f), 0.f);
+}
+
+TEST_P(FilterContract, SymmetricUnderReflectionAndSwap) {
+  const float r = filter->radius();
+  HashRng rng(hashWords(2, r * 1000));
+  for (int k = 0; k < 2000; ++k) {
+    const float dx = (2 * rng.nextFloat() - 1) * r, dy = (2 * rng.nextFloat() - 1) * r;
+    const float f = filter->eval(dx, dy), tol = 1e-6f;
+    EXPECT_NEAR(filter->eval(-dx, dy), f, tol);
+    EXPECT_NEAR(filter->eval(dx, -dy), f, tol);
+    EXPECT_NEAR(filter->eval(dy, dx), f, tol);
+  }
+}
+
+TEST_P(FilterContract, EvalGridEqualsEval) {
+  const float dx[3] = {-0.7f * filter->radius(), 0.1f, 0.45f * filter->radius()}, dy[2] = {0.2f, -0.9f * filter->radius()};
+  float out[6];
+  filter->evalGrid(dx, 3, dy, 2, out);
+  for (int b = 0; b < 2; ++b)
+    for (int a = 0; a < 3; ++a) {
+      const float e = filter->eval(dx[a], dy[b]);
+      EXPECT_NEAR(out[b * 3 + a], e, 2e-6f * std::abs(e) + 1e-12f);  // float rounding only
+    }
+}
+
+TEST_P(FilterContract, IntegralMatchesQuadrature) {
+  const double q = quad2(*filter, [](double v) { return v; }, 64);
+  EXPECT_NEAR(filter->integral(), q, 1e-4 * std::abs(q));
+  const double qa = quad2(*filter, [](double v) { return std::abs(v); }, 256);
+  EXPECT_NEAR(filter->absIntegral(), qa, 1e-4 * qa);
+}
+
+TEST_P(FilterContract, SampleDensityIsAbsFOverAbsIntegral) {
+  // stratified u (300 x 300), 8 x 8 bins over the support square
+  const float r = filter->radius();
+  const int n = 300, bins = 8;
+  std::vector<double> hist(bins * bins, 0.0);
+  for (int a = 0; a < n; ++a)
+    for (int b = 0; b < n; ++b) {
+      HashRng rng(hashWords(3, a, b));
+      const Vec2 u((a + rng.nextFloat()) / n, (b + rng.nextFloat()) / n);
+      float w;
+      const Vec2 p = filter->sample(u, w);
+      const float f = filter->eval(p.x(), p.y());
+      ASSERT_LE(std::abs(p.x()), r);
+      ASSERT_LE(std::abs(p.y()), r);
+      EXPECT_FLOAT_EQ(std::abs(w), float(filter->absIntegral()));
+      if (f != 0) {
+        EXPECT_EQ(w > 0, f > 0) << p.transpose();
+      }
+      const int bx = std::min(bins - 1, int((p.x() + r) / (2 * r) * bins));
+      const int by = std::min(bins - 1, int((p.y() + r) / (2 * r) * bins));
+      hist[by * bins + bx] += 1.0 / (n * n);
+    }
+  // expected bin masses by a 40 x 40 midpoint rule of |f|
+  double l1 = 0, total = 0;
+  const double cell = 2.0 * r / bins, m = 40;
+  std::vector<double> expect(bins * bins);
+  for (int by = 0; by < bins; ++by)
+    for (int bx = 0; bx < bins; ++bx) {
+      double s = 0;
+      for (int i = 0; i < m; ++i)
+        for (int j = 0; j < m; ++j)
+          s += std::abs(filter->eval(float(-r + (bx + (i + 0.5) / m) * cell), float(-r + (by + (j + 0.5) / m) * cell)));
+      total += expect[by * bins + bx] = s;
+    }
+  for (int k = 0; k < bins * bins; ++k) l1 += std::abs(hist[k] - expect[k] / total);
+  EXPECT_LT(l1, 0.01);
+}
+
+TEST_P(FilterContract, DescribeNamesRadiusAndParams) {
+  const std::string d = filter->describe();
+  EXPECT_EQ(d.rfind(filter->name() + " r=", 0), 0u) << d;
+  for (const auto& [key, value] : defaultFilterParams(filter->name())) EXPECT_NE(d.find(" " + key + "="), std::string::npos) << d;
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFilters, FilterContract,
+                         ::testing::Combine(::testing::ValuesIn(filterNames()),
+                                            ::testing::Values(0.3f, 0.5f, 1.f, 1.5f, 2.3f, 4.f)),
+                         [](const auto& info) {
+                           return std::get<0>(info.param) + "_r" +
+                                  std::to_string(int(std::lround(std::get<1>(info.param) * 10)));
+                         });
+
+// 1-D profile facts at the natural support
+double minimumOf(const Filter& f, double lo, double hi, double& at) {
+  double best = 1e30;
+  for (int k = 0; k <= 200000; ++k) {
+    const double x = lo + (hi - lo) * k / 200000;
+    if (f.profile(float(x)) < best) best = f.profile(float(x)), at = x;
+  }
+  return best;
+}
+
+TEST(FilterFacts, MitchellOneThirdPeakMinimumAndUnitIntegral) {
+  auto f = makeFilter("mitchell", 2.f);
+  EXPECT_NEAR(f->profile(0), 8.0 / 9.0, 1e-6);
+  double at;
+  EXPECT_NEAR(minimumOf(*f, 0, 2, at), -0.03628, 5e-5);
+  EXPECT_NEAR(at, 10.0 / 7.0, 1e-3);
+  EXPECT_NEAR(gl1([&](double x) { return f->profile(float(x)); }, -2, 2, 64), 1.0, 1e-6);
+  EXPECT_NEAR(f->integral(), 1.0, 1e-9);
+}
+
+TEST(FilterFacts, CatmullRomMinimumIsMinusTwoTwentySevenths) {
+  auto f = makeFilter("catmullrom", 2.f);
+  double at;
+  EXPECT_NEAR(minimumOf(*f, 0, 2, at), -2.0 / 27.0, 1e-5);
+  EXPECT_NEAR(at, 4.0 / 3.0, 1e-3);
+  EXPECT_NEAR(f->profile(0), 1.0, 1e-6);
+}
+
+TEST(FilterFacts, LanczosThreeLobesMinimumAndIntegral) {
+  auto f = makeFilter("lanczos", 3.f);
+  double at;
+  EXPECT_NEAR(minimumOf(*f, 0, 3, at), -0.1473, 1e-4);
+  EXPECT_NEAR(gl1([&](double x) { return f->profile(float(x)); }, -3, 3, 64), 0.99706, 1e-5);
+  EXPECT_NEAR(std::sqrt(f->integral()), 0.99706, 1e-5);
+}
+
+TEST(FilterFacts, MitchellStretchesToRadius) {
+  auto f2 = makeFilter("mitchell", 2.f), f5 = makeFilter("mitchell", 5.f);
+  for (float x : {0.1f, 0.7f, 1.3f, 1.9f}) EXPECT_NEAR(f5->profile(x * 2.5f), f2->profile(x), 1e-6);
+  EXPECT_NEAR(f5->integral(), 6.25, 1e-9);
+}
+
+TEST(FilterFacts, GaussianEdgeValueSubtractedOnlyWhenAsked) {
+  auto plain = makeFilter("gaussian", 1.f, {{"sigma", 0.5}});
+  auto sub = makeFilter("gaussian", 1.f, {{"sigma", 0.5}, {"subtract_edge", 1}});
+  const double er = std::exp(-1.0 / (2 * 0.25));
+  EXPECT_NEAR(plain->eval(0.99999f, 0), er, 1e-5);
+  EXPECT_NEAR(sub->eval(0.99999f, 0), 0.0, 1e-5);
+  EXPECT_NEAR(plain->integral(), 2 * M_PI * 0.25 * (1 - er), 1e-9);
+  EXPECT_NEAR(sub->integral(), 2 * M_PI * 0.25 * (1 - er) - er * M_PI, 1e-9);
+  EXPECT_EQ(plain->describe(), "gaussian r=1 sigma=0.5 subtract_edge=0");
+  EXPECT_EQ(makeFilter("gaussian", 1.5f)->describe(), "gaussian r=1.5 sigma=0.5 subtract_edge=0");
+  // the classic weight is the uncut Gaussian
+  EXPECT_NEAR(plain->evalClassic(1.5f, 0), std::exp(-2.25 / 0.5), 1e-7);
+  EXPECT_EQ(plain->eval(1.5f, 0), 0.f);
+}
+
+TEST(FilterFacts, BoxTentAndBlackmanHarrisClosedForms) {
+  auto box = makeFilter("box", 0.5f), tent = makeFilter("tent", 2.f), bh = makeFilter("blackmanharris", 2.f);
+  EXPECT_EQ(box->eval(0.5f, -0.5f), 1.f);  // closed square support
+  EXPECT_NEAR(box->integral(), 1.0, 1e-12);
+  EXPECT_NEAR(tent->eval(0.6f, 0.8f), 0.5, 1e-6);  // radial cone: d = 1
+  EXPECT_NEAR(tent->integral(), M_PI * 4 / 3, 1e-9);
+  EXPECT_NEAR(bh->profile(0), 1.0, 1e-6);
+  EXPECT_NEAR(bh->profile(2), 0.00006, 1e-6);
+}
+
+// Factory errors
+std::string optionOf(const std::function<void()>& fn, std::string* message = nullptr) {
+  try {
+    fn();
+  } catch (const OptionError& e) {
+    if (message) *message = e.what();
+    return e.option();
+  }
+  return "";
+}
+
+TEST(FilterFactory, UnknownNameListsValidNames) {
+  std::string msg;
+  EXPECT_EQ(optionOf([] { makeFilter("gauss", 1); }, &msg), "--filter");
+  for (const auto& n : filterNames()) EXPECT_NE(msg.find(n), std::string::npos) << msg;
+}
+
+TEST(FilterFactory, RadiusMustBeFiniteAndPositive) {
+  for (float r : {0.f, -1.f, NAN, INFINITY}) EXPECT_EQ(optionOf([r] { makeFilter("tent", r); }), "--radius") << r;
+}
+
+TEST(FilterFactory, MisspeltParameterIsNamed) {
+  std::string msg;
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1.5f, {{"sigmaa", 0.4}}); }, &msg), "--filter-param");
+  EXPECT_NE(msg.find("'sigmaa' is not a parameter of gaussian (valid: sigma, subtract_edge)"), std::string::npos) << msg;
+  EXPECT_EQ(optionOf([] { makeFilter("box", 1, {{"tau", 3}}); }, &msg), "--filter-param");
+  EXPECT_NE(msg.find("valid: none"), std::string::npos) << msg;
+}
+
+TEST(FilterFactory, OutOfRangeParametersRejected) {
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", 0}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", NAN}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"subtract_edge", 0.5}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("lanczos", 1, {{"tau", 0.5}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("hann", 1, {{"tau", 0.99}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("lanczos", 2, {{"tau", 2}}); }), "");
+}
+
+TEST(FilterFactory, NamesInDocumentedOrder) {
+  const std::vector<std::string> expected = {"box", "tent", "gaussian", "mitchell", "catmullrom", "lanczos", "hann", "blackmanharris"};
+  EXPECT_EQ(filterNames(), expected);
+  for (const auto& n : filterNames()) EXPECT_EQ(makeFilter(n, 1)->name(), n);
+}
+
+}  // namespace
+}  // namespace aliaslab

@@ -1,0 +1,150 @@
+// Metrics on constructed images with known bias and variance:
+// I_k = G + b + e_k, with a fixed pattern b and seeded Gaussian noise e_k of
+// standard deviation sigma. Then E[aliasing] = mean b^2, E[noise] = sigma^2,
+// E[mse] = mean b^2 + sigma^2, and mse = aliasing + noise holds exactly
+// (per pixel: mean_k (I_k - G)^2 = (m - G)^2 + (K-1)/K s^2). Tolerances are
+// five standard errors of each estimator, computed from the model below.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/hash.h"
+#include "study/metrics.h"
+
+using namespace aliaslab;
+
+namespace {
+constexpr int W = 64, H = 64, K = 16;
+constexpr double kSigma = 0.05;
+constexpr double kN = W * H * 3.0;  // values averaged per metric
+
+Image referenceImage() {
+  Image g(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) g.set(x, y, Color(0.5f + 0.3f * std::sin(0.2f * x), 0.4f, 0.2f + 0.01f * y));
+  return g;
+}
+
+// Fixed bias pattern b(x, y, c), zero mean-ish, amplitude 0.1.
+double bias(int x, int y, int c) { return 0.1 * std::sin(0.37 * x + 1.3 * c) * std::cos(0.23 * y); }
+
+double meanBiasSquared() {
+  double s = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) s += bias(x, y, c) * bias(x, y, c);
+  return s / kN;
+}
+
+// Standard normal from two hashed uniforms (Box-Muller).
+double gaussian(uint64_t key) {
+  const double u1 = 1.0 - toUnitDouble(hashWords(key, 1)), u2 = toUnitDouble(hashWords(key, 2));
+  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
+}
+
+std::vector<Image> noisyImages(const Image& g, double sigma) {
+  std::vector<Image> images;
+  for (int k = 0; k < K; ++k) {
+    Image im(W, H);
+    for (int y = 0; y < H; ++y)
+      for (int x = 0; x < W; ++x) {
+        Color c;
+        for (int ch = 0; ch < 3; ++ch)
+          c[ch] = static_cast<float>(g.get(x, y)[ch] + bias(x, y, ch) +
+                                     sigma * gaussian(hashWords(pixelSeed(k, x, y), ch)));
+        im.set(x, y, c);
+      }
+    images.push_back(std::move(im));
+  }
+  return images;
+}
+}  // namespace
+
+TEST(Metrics, AliasingRecoversMeanSquaredBiasAndNoiseRecoversVariance) {
+  const Image g = referenceImage();
+  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  const double b2 = meanBiasSquared(), s2 = kSigma * kSigma;
+  // Standard errors: var((m-G)^2) ~ 4 b^2 s2/K + 2 s2^2/K^2 per value; var(s^2) = 2 s2^2/(K-1).
+  const double seAliasing = std::sqrt((4 * b2 * s2 / K + 2 * s2 * s2 / (K * K) + 2 * s2 * s2 / (K - 1) / (K * K)) / kN);
+  const double seNoise = s2 * std::sqrt(2.0 / ((K - 1) * kN));
+  EXPECT_NEAR(m.aliasing, b2, 5 * seAliasing);
+  EXPECT_NEAR(m.noise, s2, 5 * seNoise);
+  EXPECT_NEAR(m.mse, b2 + s2, 5 * (seAliasing + seNoise));
+  EXPECT_EQ(m.images, K);
+}
+
+TEST(Metrics, MseIsAliasingPlusNoiseExactly) {
+  const Image g = referenceImage();
+  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  EXPECT_NEAR(m.mse, m.aliasing + m.noise, 1e-12 * m.mse);
+}
+
+TEST(Metrics, ZeroNoiseGivesNoiseExactlyZeroAndAllErrorInAliasing) {
+  const Image g = referenceImage();
+  const std::vector<Image> images = noisyImages(g, 0.0);
+  const Metrics m = computeMetrics(images, g, g);
+  // Independent computation in double of mean (I - G)^2 from the float images.
+  double direct = 0;
+  for (size_t i = 0; i < static_cast<size_t>(kN); ++i) {
+    const double d = static_cast<double>(images[0].data()[i]) - g.data()[i];
+    direct += d * d;
+  }
+  direct /= kN;
+  EXPECT_EQ(m.noise, 0.0);
+  EXPECT_NEAR(m.aliasing, direct, 1e-12);
+  EXPECT_NEAR(m.mse, direct, 1e-12);
+  EXPECT_NEAR(direct, meanBiasSquared(), 1e-6);  // float rounding of G + b only
+}
+
+TEST(Metrics, MseAreaMeasuresAgainstTheAreaReference) {
+  const Image g = referenceImage();
+  Image a = g;
+  for (size_t i = 0; i < static_cast<size_t>(kN); ++i) a.data()[i] += 0.2f;  // A = G + 0.2
+  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, a);
+  // E[(b + e - 0.2)^2] = mean b^2 - 0.4 mean b + 0.04 + sigma^2.
+  double meanB = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      for (int c = 0; c < 3; ++c) meanB += bias(x, y, c) / kN;
+  const double expected = meanBiasSquared() - 0.4 * meanB + 0.04 + kSigma * kSigma;
+  EXPECT_NEAR(m.mseArea, expected, 5 * kSigma * std::sqrt((0.3 * 0.3 * 4) / (K * kN)) + 1e-5);
+}
+
+TEST(Metrics, PsnrIsTenLog10OfInverseMse) {
+  const Image g = referenceImage();
+  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  EXPECT_NEAR(m.psnr, 10.0 * std::log10(1.0 / m.mse), 1e-12);
+}
+
+TEST(Metrics, NoiseMapAveragesToTheNoise) {
+  const Image g = referenceImage();
+  MetricAccumulator acc(g, g);
+  for (const Image& im : noisyImages(g, kSigma)) acc.add(im);
+  const Image map = acc.noiseMap();
+  double mean = 0;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) mean += map.get(x, y)[0] / (W * H);
+  EXPECT_NEAR(mean, acc.result().noise, 1e-6 * acc.result().noise);
+}
+
+TEST(Metrics, HalvesErrorIsTheVarianceOfTheMeanOfTwoHalves) {
+  // Halves differing by d everywhere: (Ga - Gb)^2 / 4 = d^2 / 4.
+  Image a(8, 8, Color::Constant(0.5f)), b(8, 8, Color::Constant(0.7f));
+  const double d = static_cast<double>(0.7f) - static_cast<double>(0.5f);  // exact float values
+  EXPECT_NEAR(halvesError(a, b), d * d / 4, 1e-15);
+  const Image mid = averageImages(a, b);
+  EXPECT_NEAR(mid.get(3, 4)[1], 0.6f, 1e-7);
+  // Two noisy halves of sigma each: E[(a - b)^2 / 4] = sigma^2 / 2, the variance of their mean.
+  const Image g = referenceImage();
+  const auto images = noisyImages(g, kSigma);
+  const double expected = kSigma * kSigma / 2;
+  EXPECT_NEAR(halvesError(images[0], images[1]), expected, 5 * expected * std::sqrt(2.0 / kN));
+}
+
+TEST(Metrics, NeedsTwoImages) {
+  const Image g = referenceImage();
+  MetricAccumulator acc(g, g);
+  acc.add(g);
+  EXPECT_THROW(acc.result(), std::logic_error);
+}

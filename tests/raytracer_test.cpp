@@ -1,0 +1,210 @@
+// The `raytracer` command: images checked against the scene's geometry
+// (flat colours at pixel centres, depth and normals of a sphere), the
+// classic visualisations, determinism over thread counts, and every error
+// path (exit code, message, no output file).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "core/image.h"
+
+using namespace aliaslab;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kData = std::string(ALIASLAB_TEST_DATA) + "/parser/";
+const std::string kScene = kData + "sphere_triangle.txt";  // 16x16: see the file's comment
+const std::string kLit = kData + "lit_scene.txt";
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+class RaytracerTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = std::string(info->test_suite_name()) + "_" + info->name();
+    for (char& ch : name)
+      if (ch == '/') ch = '_';
+    dir_ = fs::temp_directory_path() / ("aliaslab_raytracer_" + name);
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  Result run(const std::string& args) const {
+    const std::string cmd = std::string(ALIASLAB_BIN_DIR) + "/raytracer " + args + " > " + path("stdout.txt") +
+                            " 2> " + path("stderr.txt");
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout.txt")), slurp(path("stderr.txt"))};
+  }
+
+  fs::path dir_;
+};
+
+void expectColor(const Image& im, int x, int y, const Color& c, float tol) {
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(im.get(x, y)[k], c[k], tol) << "pixel " << x << "," << y << " channel " << k;
+}
+
+bool identical(const Image& a, const Image& b) {
+  if (a.width() != b.width() || a.height() != b.height()) return false;
+  return std::equal(a.data(), a.data() + 3 * a.width() * a.height(), b.data());
+}
+
+constexpr float k8bit = 1.f / 255.f;
+
+}  // namespace
+
+TEST_F(RaytracerTest, FlatColoursAtPixelCentresInPngAndExr) {
+  const Result r = run("-input " + kScene + " -size 16 16 -stats -output " + path("a.png"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("primary 256,"), std::string::npos) << r.out;  // one ray per pixel
+  EXPECT_NE(r.out.find("shadow 0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("grid"), std::string::npos) << r.out;
+  ASSERT_EQ(run("-input " + kScene + " -size 16 16 --threads 1 -output " + path("a.exr")).code, 0);
+  const Image png = readImage(path("a.png")), exr = readImage(path("a.exr"));
+  ASSERT_EQ(png.width(), 16);
+  ASSERT_EQ(png.height(), 16);
+  // Pixel (8,8) centre is world (0.125, 0.125): the red sphere; (14,2) is
+  // (1.625, -1.375), inside the green triangle; (0,0) misses everything.
+  expectColor(exr, 8, 8, Color(1, 0, 0), 0.f);
+  expectColor(exr, 14, 2, Color(0, 1, 0), 0.f);
+  expectColor(exr, 0, 0, Color(0.2f, 0.4f, 0.6f), 0.f);
+  expectColor(exr, 14, 13, Color(0.2f, 0.4f, 0.6f), 0.f);  // (1.625, 1.375): above the triangle
+  expectColor(png, 8, 8, Color(1, 0, 0), k8bit);
+  expectColor(png, 0, 0, Color(0.2f, 0.4f, 0.6f), k8bit);
+}
+
+TEST_F(RaytracerTest, DepthAndNormalsOfTheSphere) {
+  const Result r =
+      run("-input " + kScene + " -size 16 16 -depth 9 11 " + path("d.exr") + " -normals " + path("n.exr"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(path("a.png")));
+  const Image d = readImage(path("d.exr")), n = readImage(path("n.exr"));
+  // Ray at (x, y) = (0.125, 0.125) meets the unit sphere at z = sqrt(1 - 2 x^2), t = 10 - z.
+  const float z = std::sqrt(1.f - 2.f * 0.125f * 0.125f), t = 10.f - z;
+  expectColor(d, 8, 8, Color::Constant((11.f - t) / 2.f), 1e-4f);
+  expectColor(n, 8, 8, Color(0.125f, 0.125f, z), 1e-4f);
+  expectColor(d, 0, 0, Color::Zero(), 0.f);
+  expectColor(n, 0, 0, Color::Zero(), 0.f);
+}
+
+TEST_F(RaytracerTest, ThreadCountAndAcceleratorDoNotChangeTheImage) {
+  const std::string base = "-input " + kLit + " -size 40 24 -shadows -bounces 3 -shade_back ";
+  ASSERT_EQ(run(base + "--threads 1 -output " + path("t1.exr")).code, 0);
+  ASSERT_EQ(run(base + "--threads 2 -output " + path("t2.exr")).code, 0);
+  ASSERT_EQ(run(base + "--threads 2 --brute-force -output " + path("bf.exr")).code, 0);
+  ASSERT_EQ(run(base + "--threads 2 -grid 3 2 5 -output " + path("g.exr")).code, 0);
+  const Image t1 = readImage(path("t1.exr"));
+  std::set<float> reds;  // a real picture, not a blank
+  for (int j = 0; j < t1.height(); ++j)
+    for (int i = 0; i < t1.width(); ++i) reds.insert(t1.get(i, j)[0]);
+  EXPECT_GT(reds.size(), 50u);
+  EXPECT_TRUE(identical(t1, readImage(path("t2.exr"))));
+  EXPECT_TRUE(identical(t1, readImage(path("bf.exr"))));
+  EXPECT_TRUE(identical(t1, readImage(path("g.exr"))));
+  // Sampled and filtered (classic flags) as well.
+  const std::string sampled = base + "-jittered_samples 4 -tent_filter 1.2 ";
+  ASSERT_EQ(run(sampled + "--threads 1 -output " + path("s1.exr")).code, 0);
+  ASSERT_EQ(run(sampled + "--threads 2 -output " + path("s2.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("s1.exr")), readImage(path("s2.exr"))));
+}
+
+TEST_F(RaytracerTest, RenderFilterTentPictureHasWeightsAtCellCorners) {
+  // Phase 2 acceptance: 9x9 film, zoom 20, tent of radius 1.7 (classic support 2).
+  const Result r = run("-input " + kScene + " -size 9 9 -render_filter " + path("f.png") + " 20 -tent_filter 1.7");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image f = readImage(path("f.png"));
+  ASSERT_EQ(f.width(), 181);
+  ASSERT_EQ(f.height(), 181);
+  // Image pixel (X, Y) is film position (X, Y) / 20; the centre pixel's centre is (4.5, 4.5).
+  expectColor(f, 90, 90, Color::Ones(), k8bit);                          // offset 0: weight 1
+  expectColor(f, 101, 90, Color::Constant(1.f - 0.55f / 1.7f), k8bit);   // offset 0.55
+  expectColor(f, 5, 5, Color(0, 0, 0.5f), k8bit);                        // outside the support
+  expectColor(f, 40, 77, Color(0, 0, 1), 0.f);                           // grid column
+}
+
+TEST_F(RaytracerTest, RenderSamplesMarksCentreSamplesOnCheckerCells) {
+  const Result r = run("-input " + kScene + " -size 16 16 -render_samples " + path("s.png") + " 4");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image s = readImage(path("s.png"));
+  ASSERT_EQ(s.width(), 64);
+  expectColor(s, 34, 34, Color(1, 0, 0), k8bit);     // pixel (8,8)'s centre sample, red
+  expectColor(s, 32, 32, Color::Constant(0.2f), k8bit);  // i + j even: grey cell
+  expectColor(s, 36, 32, Color::Zero(), k8bit);       // pixel (9,8): black cell
+}
+
+// ---------------------------------------------------------------- errors
+
+namespace {
+struct BadRun {
+  const char* name;
+  std::string args;  ///< OUT is replaced by the output path, DIR by the test folder
+  int code;
+  const char* message;
+};
+
+const BadRun kBadRuns[] = {
+    {"missing_input_file", "-input DIR/none.txt -size 8 8 -output OUT", 1, "cannot open the scene file"},
+    {"malformed_scene", "-input DIR/bad.txt -size 8 8 -output OUT", 1, "bad.txt:3: expected a number for 'radius'"},
+    {"missing_mesh", "-input " + kData + "missing_mesh_scene.txt -size 8 8 -output OUT", 1,
+     "missing_mesh_scene.txt:6:"},
+    {"zero_size", "-input " + kScene + " -size 0 8 -output OUT", 2, "-size"},
+    {"size_not_a_number", "-input " + kScene + " -size abc 8 -output OUT", 2, "-size"},
+    {"unsupported_extension", "-input " + kScene + " -size 8 8 -output DIR/a.jpg", 2, "unsupported image extension"},
+    {"missing_output_folder", "-input " + kScene + " -size 8 8 -output DIR/no/a.png", 2, "does not exist"},
+    {"negative_bounces", "-input " + kScene + " -size 8 8 -bounces -1 -output OUT", 2, "-bounces"},
+    {"bad_grid", "-input " + kScene + " -size 8 8 -grid 0 2 2 -output OUT", 2, "-grid"},
+    {"depth_range", "-input " + kScene + " -size 8 8 -depth 5 1 OUT", 2, "-depth"},
+    {"unknown_flag", "-input " + kScene + " -size 8 8 -antialias -output OUT", 2, "antialias"},
+    {"nothing_to_write", "-input " + kScene + " -size 8 8", 2, "nothing to write"},
+    {"unknown_sampler", "-input " + kScene + " -size 8 8 --sampler best -output OUT", 2, "jittered"},
+    {"classic_and_general_sampler", "-input " + kScene + " -size 8 8 -jittered_samples 4 --sampler random -output OUT",
+     2, "cannot be combined"},
+    {"two_classic_filters", "-input " + kScene + " -size 8 8 -box_filter 1 -tent_filter 1 -output OUT", 2,
+     "cannot be combined"},
+    {"bad_filter_param", "-input " + kScene + " -size 8 8 --filter gaussian --radius 2 --filter-param sigma -output OUT",
+     2, "name=value"},
+    {"render_filter_without_filter", "-input " + kScene + " -size 8 8 -render_filter OUT 10", 2, "needs a filter"},
+};
+
+class RaytracerErrors : public RaytracerTest, public testing::WithParamInterface<BadRun> {};
+}  // namespace
+
+TEST_P(RaytracerErrors, ExitsWithMessageAndWritesNothing) {
+  const BadRun& b = GetParam();
+  std::ofstream(path("bad.txt")) << "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 4 }\n"
+                                    "Materials { numMaterials 1 Material { } }\n"
+                                    "Group { numObjects 1 Sphere { center 0 0 0 radius x } }\n";
+  std::string args = b.args;
+  for (size_t p; (p = args.find("OUT")) != std::string::npos;) args.replace(p, 3, path("out.png"));
+  for (size_t p; (p = args.find("DIR")) != std::string::npos;) args.replace(p, 3, dir_.string());
+  const Result r = run(args);
+  EXPECT_EQ(r.code, b.code) << r.err;
+  EXPECT_NE(r.err.find(b.message), std::string::npos) << r.err;
+  for (const auto& entry : fs::directory_iterator(dir_)) {
+    const std::string name = entry.path().filename().string();
+    EXPECT_TRUE(name == "bad.txt" || name == "stdout.txt" || name == "stderr.txt") << "left behind: " << name;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, RaytracerErrors, testing::ValuesIn(kBadRuns),
+                         [](const auto& info) { return std::string(info.param.name); });

@@ -1,0 +1,201 @@
+// The sweep's guarantees: resume after truncation or kill -9, shards merged
+// under GNU parallel equal one run, one trace per sample set whatever the
+// number of filters, the theory's orderings on the zone plate, and bad input
+// refused before any work. Tiny sizes (24x24, <= 16 spp, 256-spp references).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "study/csv.h"
+#include "study/sweep.h"
+
+using namespace aliaslab;
+namespace fs = std::filesystem;
+
+namespace {
+const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
+const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
+
+fs::path workDir() {
+  static const fs::path dir = [] {
+    fs::path d = fs::temp_directory_path() / ("aliaslab_sweep_test_" + std::to_string(::getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+  }();
+  return dir;
+}
+
+// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each.
+std::string tinyArgs(int threads = 2) {
+  return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
+         "--radii 1 --seeds 4 --ref-spp 256 --threads " + std::to_string(threads) + " --quiet --no-images --cache " +
+         (workDir() / "cache").string();
+}
+
+int run(const std::string& args, std::string* output = nullptr) {
+  const fs::path log = workDir() / "last_run.log";
+  const int status = std::system((kBin + " " + args + " > " + log.string() + " 2>&1").c_str());
+  if (output) {
+    std::ifstream in(log);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    *output = ss.str();
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The CSV's data lines with the timing columns blanked.
+std::vector<std::string> withoutTiming(const std::string& path) {
+  std::vector<std::string> out;
+  for (const std::string& line : readCsvLines(path)) {
+    auto f = splitCsvLine(line);
+    for (size_t c : csvTimingColumns()) f[c] = "";
+    std::string joined;
+    for (const auto& x : f) joined += x + ",";
+    out.push_back(joined);
+  }
+  return out;
+}
+
+// One uninterrupted run, shared by the tests.
+const std::string& fullCsv() {
+  static const std::string path = [] {
+    const std::string p = (workDir() / "full.csv").string();
+    EXPECT_EQ(run(tinyArgs() + " --out " + (workDir() / "full").string() + " --csv " + p), 0);
+    return p;
+  }();
+  return path;
+}
+}  // namespace
+
+TEST(SweepResume, TruncatedInTheMiddleOfALineResumesToTheSameCsv) {
+  const auto expected = withoutTiming(fullCsv());
+  ASSERT_EQ(expected.size(), 12u);  // 4 groups x (box 0.5, box 1, tent 1)
+  // Keep the header, 5 rows and half of the 6th, as a killed run would.
+  const std::string p = (workDir() / "resumed.csv").string();
+  std::ifstream in(fullCsv());
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t cut = 0;
+  for (int line = 0; line < 6; ++line) cut = text.find('\n', cut) + 1;
+  cut += (text.find('\n', cut) - cut) / 2;
+  std::ofstream(p, std::ios::binary | std::ios::trunc) << text.substr(0, cut);
+  std::string output;
+  ASSERT_EQ(run(tinyArgs() + " --out " + (workDir() / "resumed").string() + " --csv " + p, &output), 0) << output;
+  EXPECT_NE(output.find("5 resumed"), std::string::npos) << output;
+  EXPECT_EQ(withoutTiming(p), expected);
+}
+
+TEST(SweepResume, KilledRunResumesToTheSameCsv) {
+  const auto expected = withoutTiming(fullCsv());
+  const std::string p = (workDir() / "killed.csv").string();
+  const std::string args = tinyArgs() + " --out " + (workDir() / "killed").string() + " --csv " + p;
+  std::system(("timeout -s KILL 0.3 " + kBin + " " + args + " > /dev/null 2>&1").c_str());
+  ASSERT_EQ(run(args), 0);
+  EXPECT_EQ(withoutTiming(p), expected);
+}
+
+TEST(SweepShards, ThreeShardsUnderGnuParallelMergeToTheUnshardedCsv) {
+  const auto expected = withoutTiming(fullCsv());
+  const fs::path dir = workDir() / "shards";
+  const std::string cmd = "parallel --will-cite -j 3 " + kBin + " " + tinyArgs(1) + " --out " +
+                          dir.string() + " --shard {}/3 --csv " + dir.string() + "/s{}.csv ::: 0 1 2 > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  const std::string merged = (dir / "merged.csv").string();
+  ASSERT_EQ(run("--merge " + merged + " " + (dir / "s0.csv").string() + " " + (dir / "s1.csv").string() + " " +
+                (dir / "s2.csv").string()),
+            0);
+  // Shards hold disjoint groups (4 groups over 3 shards: 2, 1, 1 of them).
+  EXPECT_EQ(readCsvLines((dir / "s0.csv").string()).size(), 6u);
+  EXPECT_EQ(readCsvLines((dir / "s2.csv").string()).size(), 3u);
+  auto merged_rows = withoutTiming(merged);
+  for (auto& row : merged_rows) {  // the thread column differs (1 per shard); blank it
+    row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
+  }
+  auto expected_rows = expected;
+  for (auto& row : expected_rows) row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
+  EXPECT_EQ(merged_rows, expected_rows);
+}
+
+TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {
+  StudyConfig c;
+  c.scenes = {kScene};
+  c.width = c.height = 16;
+  c.samplers = {"jittered"};
+  c.spp = {4};
+  c.seeds = 3;
+  c.refSpp = 64;
+  c.threads = 2;
+  c.images = false;
+  c.progress = false;
+  c.cache = (workDir() / "cache").string();
+  c.filters = {"box"};
+  c.radii = {1.0};
+  c.out = (workDir() / "reuse1").string();
+  const SweepSummary one = runSweep(c);
+  c.filters = {"box", "tent", "gaussian", "mitchell"};
+  c.radii = {0.5, 1.0, 1.5, 2.0};
+  c.reconstruction = {"weighted", "classic"};
+  c.out = (workDir() / "reuse2").string();
+  const SweepSummary many = runSweep(c);
+  EXPECT_EQ(many.rowsWritten, 32u);
+  EXPECT_EQ(one.sampleSetsTraced, 3u);   // one per seed
+  EXPECT_EQ(many.sampleSetsTraced, 3u);  // still one per seed with 32 configurations
+  EXPECT_EQ(one.primaryRays, 16u * 16 * 4 * 3);
+  EXPECT_EQ(many.primaryRays, one.primaryRays);
+}
+
+TEST(SweepEndToEnd, ZonePlateUniformHasNoNoiseAndMoreAliasingThanJittered) {
+  const auto lines = readCsvLines(fullCsv());
+  std::ifstream in(fullCsv());
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header, csvHeader());
+  std::map<std::string, std::vector<std::string>> row;  // sampler -> fields at spp 16, box r=1
+  for (const auto& l : lines) {
+    auto f = splitCsvLine(l);
+    ASSERT_EQ(f.size(), csvColumns().size());
+    for (const auto& x : f) EXPECT_FALSE(x.empty());
+    if (f[4] == "16" && f[5] == "box" && f[6] == "1") row[f[3]] = f;
+  }
+  ASSERT_EQ(row.size(), 2u);
+  const double uniformNoise = std::stod(row["uniform"][12]), jitteredNoise = std::stod(row["jittered"][12]);
+  const double uniformAliasing = std::stod(row["uniform"][11]), jitteredAliasing = std::stod(row["jittered"][11]);
+  EXPECT_EQ(uniformNoise, 0.0);
+  EXPECT_GT(jitteredNoise, 0.0);
+  EXPECT_GT(uniformAliasing, jitteredAliasing);
+  EXPECT_EQ(row["uniform"][0], "zoneplate");
+  EXPECT_EQ(row["uniform"][1], "24");
+  EXPECT_EQ(row["uniform"][9], "4");
+  EXPECT_EQ(row["uniform"][15], "256");
+}
+
+TEST(SweepBadInput, RefusedBeforeAnyWorkWithTheMessageAndNoCsv) {
+  const fs::path file = workDir() / "a_file";
+  std::ofstream(file) << "x";
+  const struct {
+    std::string args, message;
+  } cases[] = {
+      {"--samplers nosuch", "nosuch"},
+      {"--radii=-1", "--radii"},
+      {"--spp 0", "--spp"},
+      {"--scenes /nonexistent/scene.txt", "/nonexistent/scene.txt"},
+      {"--out " + (file / "sub").string(), "--out"},
+  };
+  int i = 0;
+  for (const auto& c : cases) {
+    const fs::path out = workDir() / ("bad" + std::to_string(i++));
+    std::string output;
+    std::string args = "--scenes " + kScene + " --size 8 8 --seeds 2 --ref-spp 32 --quiet --out " + out.string() +
+                       " --cache " + (workDir() / "badcache").string() + " " + c.args;
+    EXPECT_NE(run(args, &output), 0) << c.args;
+    EXPECT_NE(output.find(c.message), std::string::npos) << c.args << ": " << output;
+    EXPECT_FALSE(fs::exists(out / "study.csv")) << c.args;
+    EXPECT_FALSE(fs::exists(workDir() / "badcache")) << c.args;  // no reference work either
+  }
+}

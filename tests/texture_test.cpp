@@ -1,0 +1,121 @@
+// Procedural materials and Perlin noise against values derived by hand.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/hash.h"
+#include "scene/material.h"
+
+namespace aliaslab {
+namespace {
+
+constexpr float kTol = 1e-5f;
+
+void expectColor(const Color& got, const Color& want, float tol = kTol) {
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], want[c], tol) << "channel " << c;
+}
+
+// Procedural materials -------------------------------------------------------
+
+TEST(Procedural, CheckerboardParityOfFloorSum) {
+  auto a = makePhong({.diffuse = Color(1, 0, 0), .indexOfRefraction = 1.f});
+  auto b = makePhong({.diffuse = Color(0, 1, 0), .reflective = Color::Ones(), .indexOfRefraction = 2.f});
+  auto checker = makeCheckerboard(Mat4::Identity(), a.get(), b.get());
+  struct Case { Vec3 p; bool second; };
+  for (const Case& c : {Case{{0.5f, 0.5f, 0.5f}, false}, Case{{1.5f, 0.5f, 0.5f}, true},
+                        Case{{-0.5f, 0.5f, 0.5f}, true}, Case{{-0.5f, -0.5f, 0.5f}, false},
+                        Case{{2.1f, 3.2f, -4.7f}, false},     // 2 + 3 - 5 = 0
+                        Case{{-0.1f, -0.1f, -0.1f}, true}}) {  // -3
+    const bool second = c.second;
+    expectColor(checker->diffuse(c.p), second ? Color(0, 1, 0) : Color(1, 0, 0));
+    expectColor(checker->reflective(c.p), second ? Color::Ones() : Color::Zero());
+    EXPECT_EQ(checker->indexOfRefraction(c.p), second ? 2.f : 1.f);
+  }
+  // Texture transform: scale 2 maps world 0.75 to texture 1.5 (odd cell).
+  Mat4 scale = Mat4::Identity();
+  scale.diagonal().head<3>().setConstant(2.f);
+  auto scaled = makeCheckerboard(scale, a.get(), b.get());
+  expectColor(scaled->diffuse(Vec3(0.75f, 0.1f, 0.1f)), Color(0, 1, 0));
+}
+
+// Every query blends (1 - w) first + w second with the pattern's weight.
+TEST(Procedural, MarbleAndNoiseBlendEveryQuery) {
+  auto a = makePhong({.diffuse = Color(1, 0, 0), .specular = Color::Zero(), .transparent = Color::Zero(),
+                      .indexOfRefraction = 1.f});
+  auto b = makePhong({.diffuse = Color(0, 0, 1), .transparent = Color::Ones(), .indexOfRefraction = 2.f});
+  const Vec3 p(0.3f, 0.7f, 0.1f);
+  const float n = perlinNoise(p.x(), p.y(), p.z()) + perlinNoise(2 * p.x(), 2 * p.y(), 2 * p.z()) / 2;
+  const float w = 0.5f + 0.5f * std::sin(3.f * p.x() + 2.f * n);
+  auto marble = makeMarble(Mat4::Identity(), a.get(), b.get(), 2, 3.f, 2.f);
+  expectColor(marble->diffuse(p), Color(1 - w, 0, w));
+  expectColor(marble->transparent(p), Color::Constant(w));
+  EXPECT_NEAR(marble->indexOfRefraction(p), 1 + w, kTol);
+  const Color shaded = marble->shade(p, Vec3::UnitY(), Vec3::UnitY(), Vec3::UnitY(), Color::Ones());
+  expectColor(shaded, Color(1 - w, 0, w));
+
+  // Noise with one octave: w = clamp(noise(q), 0, 1); at (0.25, 0, 0) noise = 0.146484375 (see Perlin test).
+  auto noise = makeNoise(Mat4::Identity(), a.get(), b.get(), 1);
+  expectColor(noise->diffuse(Vec3(0.25f, 0, 0)), Color(1 - 0.146484375f, 0, 0.146484375f));
+  // At a lattice point noise is 0: pure first material.
+  expectColor(noise->diffuse(Vec3(3, -2, 5)), Color(1, 0, 0));
+}
+
+// Aliasing test patterns at points where the weight is known exactly.
+TEST(Procedural, PatternWeightsAtKnownPoints) {
+  auto a = makePhong({.diffuse = Color::Zero()}), b = makePhong({.diffuse = Color::Ones()});
+  auto w = [&](PatternKind kind, float f, float x, float y) {
+    return makePattern(Mat4::Identity(), a.get(), b.get(), kind, f)->diffuse(Vec3(x, y, 0))[0];
+  };
+  const float f = 4.f;
+  EXPECT_NEAR(w(PatternKind::ZonePlate, f, std::sqrt(kPi / (2 * f)), 0), 1.f, kTol);  // sin(pi/2)
+  EXPECT_NEAR(w(PatternKind::ZonePlate, f, 0, std::sqrt(3 * kPi / (2 * f))), 0.f, kTol);  // sin(3pi/2)
+  EXPECT_NEAR(w(PatternKind::Sinc, f, 0, 0), 1.f, kTol);            // sinc(0) = 1
+  EXPECT_NEAR(w(PatternKind::Sinc, f, 1 / f, 0.1f), 0.5f, kTol);    // sinc(1) = 0
+  EXPECT_EQ(w(PatternKind::Stripes, f, 0.25f / f, 7), 1.f);         // sin(pi/2) > 0
+  EXPECT_EQ(w(PatternKind::Stripes, f, 0.75f / f, 7), 0.f);         // sin(3pi/2) < 0
+  EXPECT_EQ(w(PatternKind::Siemens, f, std::cos(0.17f), std::sin(0.17f)), 1.f);  // sin(4 * 0.17) > 0
+  EXPECT_EQ(w(PatternKind::Siemens, f, std::cos(0.9f), std::sin(0.9f)), 0.f);    // sin(3.6) < 0
+}
+
+// Perlin noise -----------------------------------------------------------------
+
+TEST(Perlin, ZeroAtLatticePoints) {
+  for (int x = -3; x <= 3; ++x)
+    for (int y = -3; y <= 3; ++y)
+      for (int z = -3; z <= 3; ++z) EXPECT_EQ(perlinNoise(x * 7.f, y * 5.f, z * 3.f), 0.f);
+}
+
+// At (0.25, 0, 0): X = Y = Z = 0, A = p[0] = 151, AA = p[151] = 17, p[17] = 36
+// (gradient 4: x + z = 0.25); B = p[1] = 160, BA = p[160] = 119, p[119] = 86
+// (gradient 6: (x - 1) - z = -0.75); v = w = 0 keep only the x lerp with
+// fade(0.25) = 0.25^3 (10 - 15/4 + 6/16) = 0.103515625:
+// 0.25 + 0.103515625 (-0.75 - 0.25) = 0.146484375.
+TEST(Perlin, HandEvaluatedValueAndReferenceValue) {
+  EXPECT_FLOAT_EQ(perlinNoise(0.25f, 0.f, 0.f), 0.146484375f);
+  // The value Perlin's reference implementation gives for (3.14, 42, 7).
+  EXPECT_NEAR(perlinNoise(3.14f, 42.f, 7.f), 0.136919958784f, 1e-5f);
+  // An independent double-precision transcription of the reference (Python),
+  // at points whose fractions are exact in binary so float input is exact.
+  EXPECT_NEAR(perlinNoise(0.25f, 0.5f, 0.75f), -0.2697153091430664f, 1e-6f);
+  EXPECT_NEAR(perlinNoise(-1.5f, 2.25f, 0.5f), -0.1551513671875f, 1e-6f);
+}
+
+TEST(Perlin, RangePeriodAndContinuity) {
+  HashRng rng(7);
+  float lo = 0, hi = 0;
+  for (int k = 0; k < 20000; ++k) {
+    const float x = 40 * rng.nextFloat() - 20, y = 40 * rng.nextFloat() - 20, z = 40 * rng.nextFloat() - 20;
+    const float v = perlinNoise(x, y, z);
+    lo = std::min(lo, v), hi = std::max(hi, v);
+    EXPECT_NEAR(perlinNoise(x + 256, y, z), v, 1e-4f);            // period 256
+    EXPECT_NEAR(perlinNoise(x + 1e-3f, y, z), v, 1e-2f);          // continuous
+  }
+  EXPECT_GE(lo, -1.f);
+  EXPECT_LE(hi, 1.f);
+  EXPECT_LT(lo, -0.4f);  // not degenerate
+  EXPECT_GT(hi, 0.4f);
+}
+
+}  // namespace
+}  // namespace aliaslab
