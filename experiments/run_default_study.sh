@@ -21,5 +21,5 @@ echo "study wall time: $(( $(date +%s) - start )) s"
 
 echo "== charts and report"
 $PY analysis/charts.py results/study/study.csv --out results/charts
-$PY analysis/report.py --results results
+$PY analysis/report.py results --study results/study/study.csv
 echo "done: open results/index.html"
