@@ -2,20 +2,13 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/format.h"
 #include "scene/camera.h"
 
 #include "core/error.h"
 
 namespace aliaslab {
 namespace {
-
-/// "(x y z)" with up to 4 significant digits, for describe().
-template <class V>
-std::string str(const V& v) {
-  std::ostringstream out;
-  out << v.transpose().format(Eigen::IOFormat(4, Eigen::DontAlignCols, " ", " ", "", "", "(", ")"));
-  return out.str();
-}
 
 /// Orthonormal frame: unit direction, up made perpendicular to it
 /// (Gram-Schmidt), horizontal = direction x up.
@@ -38,7 +31,7 @@ class OrthographicCamera final : public Camera {
       : center_(center), f_(frame), size_(size) {}
   std::string describe() const override {
     std::ostringstream out;
-    out << "orthographic center " << str(center_) << " direction " << str(f_.direction) << " up " << str(f_.up)
+    out << "orthographic center " << formatVector(center_) << " direction " << formatVector(f_.direction) << " up " << formatVector(f_.up)
         << " size " << size_;
     return out.str();
   }
@@ -62,7 +55,7 @@ class PerspectiveCamera final : public Camera {
       : center_(center), f_(frame), angle_(angleDegrees), tanHalf_(std::tan(0.5f * angleDegrees * kPi / 180.f)) {}
   std::string describe() const override {
     std::ostringstream out;
-    out << "perspective center " << str(center_) << " direction " << str(f_.direction) << " up " << str(f_.up)
+    out << "perspective center " << formatVector(center_) << " direction " << formatVector(f_.direction) << " up " << formatVector(f_.up)
         << " angle " << angle_;
     return out.str();
   }

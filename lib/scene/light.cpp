@@ -2,18 +2,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/format.h"
 #include "scene/light.h"
 
 namespace aliaslab {
 namespace {
-
-/// "(x y z)" with up to 4 significant digits, for describe().
-template <class V>
-std::string str(const V& v) {
-  std::ostringstream out;
-  out << v.transpose().format(Eigen::IOFormat(4, Eigen::DontAlignCols, " ", " ", "", "", "(", ")"));
-  return out.str();
-}
 
 class DirectionalLight final : public Light {
  public:
@@ -25,7 +18,7 @@ class DirectionalLight final : public Light {
     distance = kInf;
   }
   std::string describe() const override {
-    return "directional direction " + str(Vec3(-toLight_)) + " color " + str(color_);
+    return "directional direction " + formatVector(Vec3(-toLight_)) + " color " + formatVector(color_);
   }
 
  private:
@@ -44,7 +37,7 @@ class PointLight final : public Light {
     color = color_ / (c0_ + c1_ * distance + c2_ * distance * distance);
   }
   std::string describe() const override {
-    return "point position " + str(position_) + " color " + str(color_) + " attenuation " + str(Vec3(c0_, c1_, c2_));
+    return "point position " + formatVector(position_) + " color " + formatVector(color_) + " attenuation " + formatVector(Vec3(c0_, c1_, c2_));
   }
 
  private:

@@ -3,18 +3,11 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/format.h"
 #include "scene/material.h"
 
 namespace aliaslab {
 namespace {
-
-/// "(x y z)" with up to 4 significant digits, for describe().
-template <class V>
-std::string str(const V& v) {
-  std::ostringstream out;
-  out << v.transpose().format(Eigen::IOFormat(4, Eigen::DontAlignCols, " ", " ", "", "", "(", ")"));
-  return out.str();
-}
 
 class Phong final : public Material {
  public:
@@ -38,8 +31,8 @@ class Phong final : public Material {
   float indexOfRefraction(const Vec3&) const override { return p_.indexOfRefraction; }
   std::string describe() const override {
     std::ostringstream out;
-    out << "phong diffuse " << str(p_.diffuse) << " specular " << str(p_.specular) << " exponent " << p_.exponent
-        << " reflective " << str(p_.reflective) << " transparent " << str(p_.transparent) << " ior "
+    out << "phong diffuse " << formatVector(p_.diffuse) << " specular " << formatVector(p_.specular) << " exponent " << p_.exponent
+        << " reflective " << formatVector(p_.reflective) << " transparent " << formatVector(p_.transparent) << " ior "
         << p_.indexOfRefraction;
     return out.str();
   }
