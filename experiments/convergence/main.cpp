@@ -17,6 +17,8 @@
 #include <map>
 #include <sstream>
 
+#include "core/cli.h"
+#include "study/reference.h"
 #include "core/error.h"
 #include "sampling/sampler.h"
 #include "study/convergence.h"
@@ -36,19 +38,6 @@ struct Params {
   int threads = 0;                          // 0 = all cores
   bool chart = true;                        // run analysis/convergence_chart.py
 };
-
-// Writes `text` to path via a temporary file and rename: no half-written output.
-void writeAtomically(const fs::path& path, const std::string& text) {
-  fs::path tmp = path;
-  tmp += ".partial";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw FileError(tmp.string(), "cannot open for writing");
-    f << text;
-    if (!f.flush()) throw FileError(tmp.string(), "write failed");
-  }
-  fs::rename(tmp, path);
-}
 
 std::vector<int> sampleCounts(int maxN) {
   std::vector<int> ns;
@@ -75,11 +64,11 @@ int main(int argc, char** argv) {
   app.add_option("--max-n", p.maxN, "Largest N")->capture_default_str()->check(CLI::Range(16, 1 << 16));
   app.add_option("--fit-min", p.fitMin, "Smallest N in the slope fit")->capture_default_str();
   app.add_option("--fit-max", p.fitMax, "Largest N in the slope fit")->capture_default_str();
-  app.add_option("--seed", p.seed, "Sampler seed")->capture_default_str();
+  app.add_option("--seed", p.seed, "Sampler seed")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--sampler", p.samplers, "Samplers to run (default: all)");
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
   app.add_flag("!--no-chart", p.chart, "Skip the chart");
-  CLI11_PARSE(app, argc, argv);
+  if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
   try {
     if (p.samplers.empty()) p.samplers = samplerNames();
@@ -113,7 +102,7 @@ int main(int argc, char** argv) {
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cerr << s << ": " << fmt(secs, "%.1f") << " s\n";
     }
-    writeAtomically(fs::path(p.out) / "convergence.csv", csv.str());
+    writeTextFile((fs::path(p.out) / "convergence.csv").string(), csv.str());
 
     // Compare fitted slopes with theory.
     std::ostringstream md;
@@ -138,7 +127,7 @@ int main(int argc, char** argv) {
            << (e.slope ? fmt(*e.slope, "%.2f") : std::string("-")) << " | " << e.source << " | " << verdict
            << " |\n";
       }
-    writeAtomically(fs::path(p.out) / "slopes.md", md.str());
+    writeTextFile((fs::path(p.out) / "slopes.md").string(), md.str());
 
     // Chart through the Python plotter.
     if (p.chart) {

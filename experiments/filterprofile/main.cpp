@@ -23,6 +23,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/cli.h"
 #include "core/error.h"
 #include "filter/filter.h"
 
@@ -85,7 +86,7 @@ int main(int argc, char** argv) {
   app.add_option("--max-frequency", p.maxFrequency, "Largest frequency, cycles per pixel")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 16.0));
-  CLI11_PARSE(app, argc, argv);
+  if (const int rc = parseCommandLine(app, argc, argv, "filterprofile"); rc >= 0) return rc;
   try {
     std::ostringstream os;
     os << "filter,radius,describe,kind,x,value\n";

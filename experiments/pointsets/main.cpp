@@ -21,6 +21,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/cli.h"
+#include "study/reference.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
@@ -50,18 +52,6 @@ struct Result {
   std::vector<double> radial;
 };
 
-void writeAtomically(const fs::path& path, const std::string& text) {
-  fs::path tmp = path;
-  tmp += ".partial";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw FileError(tmp.string(), "cannot open for writing");
-    f << text;
-    if (!f.flush()) throw FileError(tmp.string(), "write failed");
-  }
-  fs::rename(tmp, path);
-}
-
 std::string fmt(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -81,11 +71,11 @@ int main(int argc, char** argv) {
   app.add_option("--extent", p.extent, "Periodogram half-width in units of sqrt(N)")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 16.0));
-  app.add_option("--seed", p.seed, "Sampler seed")->capture_default_str();
+  app.add_option("--seed", p.seed, "Sampler seed")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--sampler", p.samplers, "Samplers (default: all)");
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
   app.add_flag("!--no-chart", p.chart, "Skip the chart");
-  CLI11_PARSE(app, argc, argv);
+  if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
   try {
     if (p.samplers.empty()) p.samplers = samplerNames();
@@ -135,8 +125,8 @@ int main(int argc, char** argv) {
         spectra << r.sampler << ',' << r.n << ',' << p.sets << ',' << k << ',' << fmt(k / std::sqrt(double(r.n))) << ','
                 << fmt(r.radial[k]) << '\n';
     }
-    writeAtomically(fs::path(p.out) / "pointsets.csv", table.str());
-    writeAtomically(fs::path(p.out) / "spectra.csv", spectra.str());
+    writeTextFile((fs::path(p.out) / "pointsets.csv").string(), table.str());
+    writeTextFile((fs::path(p.out) / "spectra.csv").string(), spectra.str());
 
     if (p.chart) {
       const std::string cmd = "/usr/bin/python3 '" + std::string(ALIASLAB_SOURCE_DIR) +

@@ -82,7 +82,7 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");
   app.add_option("--filter", o.filter, "reconstruction filter: " + filters);
   app.add_option("--radius", o.radius, "filter support radius in pixels");
-  app.add_option("--seed", o.seed, "random seed (default 0)");
+  app.add_option("--seed", o.seed, "random seed (default 0)")->check(CLI::NonNegativeNumber);
   app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
   app.footer("The classic flags take one dash as in the course (-input, -size, ...) or two.");

@@ -92,7 +92,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     } else if (!(radius > 0.f) || !std::isfinite(radius)) {
       throw OptionError("-" + classicFilter, "radius must be finite and > 0");
     }
-    plan.filter = makeFilter(fname, radius, params);
+    plan.filter = relabelOption("--radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
   } else if (has("filter")) {
     plan.filter = makeFilter(o.filter, o.radius, params);
   } else if (has("radius") || has("filter-param")) {

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cli.h"
 #include "core/error.h"
 #include "filter/filter.h"
 #include "study/reference.h"
@@ -35,12 +36,12 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "W H (default: the scene's # render: line)")->expected(2);
   app.add_option("--spp", o.spp, "samples per pixel in total")->capture_default_str();
   app.add_option("--sampler", o.sampler, "scrambled low-discrepancy sampler")->capture_default_str();
-  app.add_option("--seed", o.seed, "base seed of the batch scrambles")->capture_default_str();
+  app.add_option("--seed", o.seed, "base seed of the batch scrambles")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--batch", o.batchSpp, "samples per pixel per streamed batch")->capture_default_str();
   app.add_option("--threads", o.threads, "worker threads (0 = all cores)")->capture_default_str();
   app.add_option("--out", out, "output folder for EXR images and manifest.json")->capture_default_str();
   app.add_option("--cache", cache, "also use / fill this reference cache folder");
-  CLI11_PARSE(app, argc, argv);
+  if (const int rc = parseCommandLine(app, argc, argv, "reference"); rc >= 0) return rc;
 
   try {
     // Validate everything before work.

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/cli.h"
 #include "core/error.h"
 #include "study/contact.h"
 #include "study/csv.h"
@@ -77,7 +78,7 @@ int main(int argc, char** argv) {
   app.add_flag("!--quiet", c.progress, "no progress output");
   app.add_option("--merge", merge, "OUT IN1 [IN2 ...]: merge shard CSVs into OUT in canonical order, then stop")
       ->expected(2, 100000);
-  CLI11_PARSE(app, argc, argv);
+  if (const int rc = parseCommandLine(app, argc, argv, "sweep"); rc >= 0) return rc;
 
   try {
     if (!merge.empty()) {

@@ -43,4 +43,16 @@ class OptionError : public InputError {
   std::string option_;
 };
 
+/// Returns make(); an OptionError about option `from` (e.g. a factory's
+/// "--sampler") is rethrown naming the caller's option `to` ("--samplers").
+template <class Make>
+auto relabelOption(const std::string& from, const std::string& to, Make&& make) -> decltype(make()) {
+  try {
+    return make();
+  } catch (const OptionError& e) {
+    if (e.option() != from) throw;
+    throw OptionError(to, std::string(e.what()).substr(from.size() + 2));
+  }
+}
+
 }  // namespace aliaslab

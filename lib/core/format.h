@@ -1,5 +1,6 @@
 // Small text formatting helpers for describe() lines.
 #pragma once
+#include <cstdio>
 #include <sstream>
 #include <string>
 
@@ -13,6 +14,13 @@ std::string formatVector(const Eigen::DenseBase<Derived>& v) {
   std::ostringstream out;
   out << v.transpose().format(Eigen::IOFormat(4, Eigen::DontAlignCols, " ", " ", "", "", "(", ")"));
   return out.str();
+}
+
+/// A number as printf's %g (6 significant digits): "0.001", "1024", "2e+20".
+inline std::string formatNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 }  // namespace aliaslab

@@ -3,10 +3,15 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "filter/filter.h"
 #include "filter/filter_impl.h"
 
 namespace aliaslab {
+
+namespace {
+constexpr float kMinFilterRadius = 1e-3f, kMaxFilterRadius = 1024.f;
+}  // namespace
 
 namespace filterimpl {
 void requireRange(const std::string& filter, const std::string& param, double value, double lo, double hi) {
@@ -39,6 +44,11 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
   }
   if (!std::isfinite(radius) || radius <= 0)
     throw OptionError("--radius", "filter radius must be finite and > 0, got " + std::to_string(radius));
+  // Below kMinFilterRadius squared offsets underflow in float; above kMaxFilterRadius
+  // the importance weight (the integral of |f|) overflows.
+  if (radius < kMinFilterRadius || radius > kMaxFilterRadius)
+    throw OptionError("--radius", "filter radius must be in [" + formatNumber(kMinFilterRadius) + ", " +
+                                      formatNumber(kMaxFilterRadius) + "] pixels, got " + formatNumber(radius));
 
   // merge the given shape parameters over the defaults; unknown names fail
   FilterParams p = defaultFilterParams(name);

@@ -5,6 +5,7 @@
 //                          1-based, negative = relative to the last vertex)
 // vn, vt, g, o, s, usemtl, mtllib, other keywords and `#` comments are
 // skipped. Malformed content throws ParseError(file, line, what).
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -110,7 +111,7 @@ std::unique_ptr<Group> loadObj(const std::string& path, const Material* material
     // Everything else (vn, vt, g, o, s, usemtl, mtllib, ...) is ignored.
   }
   if (in.bad()) throw FileError(path, "read error");
-  if (triangles.empty()) throw ParseError(path, line, "no faces in OBJ file");
+  if (triangles.empty()) throw ParseError(path, std::max(line, 1), "no faces in OBJ file");
 
   // Resolve indices (positive ones may refer to vertices declared later)
   ObjectList tris;

@@ -25,6 +25,13 @@ void SceneParser::parse() {
   std::map<std::string, Block> blocks;  // keyed by role: camera or the block's name
   while (!t_.atEnd()) {
     const Token& k = t_.next("a block");
+    if (k.text == "}" && !blocks.empty()) {
+      // A '}' after the last block closed: some '{' inside that block is missing.
+      const Block* last = &blocks.begin()->second;
+      for (const auto& [role, b] : blocks) last = b.end > last->end ? &b : last;
+      t_.fail(k.line, "unmatched '}': the " + last->kind + " block opened at line " + std::to_string(last->line) +
+                          " already closed; is a '{' missing inside it?");
+    }
     bool known = false;
     for (const char* name : kinds) known = known || k.text == name;
     if (!known)

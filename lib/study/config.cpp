@@ -139,8 +139,12 @@ void validateStudy(const StudyConfig& c) {
   // Names: the factories' own messages list the valid ones.
   for (const std::string& m : c.reconstruction) parseReconMode(m);
   for (const std::string& s : c.samplers)
-    for (int spp : c.spp) makeSampler(s, spp, 0);
-  for (const auto& [f, r] : studyFilters(c)) makeFilter(f, static_cast<float>(r));
+    for (int spp : c.spp) relabelOption("--sampler", "--samplers", [&] { makeSampler(s, spp, 0); });
+  relabelOption("--sampler", "--ref-sampler", [&] { makeSampler(c.refSampler, 2, 0); });
+  for (const auto& [f, r] : studyFilters(c))
+    relabelOption("--filter", "--filters", [&] {
+      relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
+    });
 
   // Scenes: present and parseable, with a known size.
   for (const std::string& path : expandScenePaths(c.scenes)) {

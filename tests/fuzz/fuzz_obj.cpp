@@ -11,13 +11,15 @@
 
 namespace aliaslab::fuzz {
 namespace {
+/// The per-process file, removed when the process ends.
+struct ScratchFile {
+  std::string path;
+  ~ScratchFile() { std::remove(path.c_str()); }
+};
+
 const std::string& objPath() {
-  static const std::string path = [] {
-    std::string p = "/dev/shm/aliaslab_fuzz_obj_" + std::to_string(::getpid()) + ".obj";
-    std::atexit([] { std::remove(objPath().c_str()); });
-    return p;
-  }();
-  return path;
+  static const ScratchFile file{"/dev/shm/aliaslab_fuzz_obj_" + std::to_string(::getpid()) + ".obj"};
+  return file.path;
 }
 }  // namespace
 

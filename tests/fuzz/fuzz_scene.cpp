@@ -17,17 +17,25 @@
 
 namespace aliaslab::fuzz {
 namespace {
+/// A folder removed when the process ends.
+struct ScratchDir {
+  std::string path;
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
+
 const std::string& sceneBaseDir() {
   namespace fs = std::filesystem;
-  static const std::string dir = [] {
+  static const ScratchDir dir = [] {
     const fs::path d = "/dev/shm/aliaslab_fuzz_scene_" + std::to_string(::getpid());
     fs::create_directories(d / "meshes");
     for (const auto& e : fs::directory_iterator(ALIASLAB_SOURCE_DIR "/scenes/meshes"))
       std::ofstream(d / "meshes" / e.path().filename()) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    std::atexit([] { std::error_code ec; fs::remove_all(sceneBaseDir(), ec); });
-    return d.string();
+    return ScratchDir{d.string()};
   }();
-  return dir;
+  return dir.path;
 }
 }  // namespace
 
