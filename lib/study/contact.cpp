@@ -45,9 +45,26 @@ using OIIO::ROI;
 namespace IBA = OIIO::ImageBufAlgo;
 
 struct Tile {
-  std::string label, file;
+  std::string method, variant, file;  ///< label lines, e.g. "jittered 16 spp" and "mitchell r=2"
   ImageBuf image;
 };
+
+/// Draws `text` with its baseline at (x, y) in the largest font size from 11
+/// down to 7 that fits `width` pixels, else cut short with "..".
+/// False when no font is found (the legend .txt beside the sheet remains).
+bool drawLabel(ImageBuf& sheet, int x, int y, int width, const std::string& text) {
+  const float white[3] = {1.f, 1.f, 1.f};
+  std::string shown = text;
+  int size = 11;
+  for (;;) {
+    const ROI box = IBA::text_size(shown, size, "DejaVuSans");
+    if (!box.defined()) return false;
+    if (box.width() <= width || shown.size() <= 3) break;
+    if (size > 7) --size;
+    else shown = text.substr(0, shown.size() - 3) + "..";  // one character shorter each time
+  }
+  return IBA::render_text(sheet, x, y, shown, size, "DejaVuSans", white);
+}
 
 // Pixels of a 3-channel buffer, top-down, as floats.
 std::vector<float> pixels(const ImageBuf& b) {
@@ -92,7 +109,7 @@ void writeSheet(const std::string& scene, const std::vector<std::vector<Tile>>& 
 
   // Layout: each cell is the tile, the zoomed crop below it, and a label band.
   const int tileW = 160, tileH = std::max(1, static_cast<int>(std::lround(160.0 * h / w)));
-  const int label = 18, pad = 4, cellW = tileW + pad, cellH = tileH + tileW + label + pad;
+  const int label = 28, pad = 4, cellW = tileW + pad, cellH = tileH + tileW + label + pad;
   size_t cols = 0;
   for (const auto& row : grid) cols = std::max(cols, row.size());
   ImageBuf sheet(ImageSpec(static_cast<int>(cols) * cellW + pad, static_cast<int>(grid.size()) * cellH + pad, 3,
@@ -106,7 +123,7 @@ void writeSheet(const std::string& scene, const std::vector<std::vector<Tile>>& 
   for (size_t r = 0; r < grid.size(); ++r) {
     for (size_t c = 0; c < grid[r].size(); ++c) {
       const Tile& t = grid[r][c];
-      legend << "row " << r << " col " << c << ": " << t.label << " (" << t.file << ")\n";
+      legend << "row " << r << " col " << c << ": " << t.method << ", " << t.variant << " (" << t.file << ")\n";
       ImageBuf full(ImageSpec(tileW, tileH, 3, OIIO::TypeDesc::FLOAT));
       IBA::resample(full, t.image, false);
       const float sx = static_cast<float>(tileW) / w, sy = static_cast<float>(tileH) / h;
@@ -118,8 +135,8 @@ void writeSheet(const std::string& scene, const std::vector<std::vector<Tile>>& 
       const int x0 = pad + static_cast<int>(c) * cellW, y0 = pad + static_cast<int>(r) * cellH;
       IBA::paste(sheet, x0, y0 + label, 0, 0, full);
       IBA::paste(sheet, x0, y0 + label + tileH, 0, 0, zoom);
-      if (fontOk)
-        fontOk = IBA::render_text(sheet, x0 + 2, y0 + label - 4, t.label, 10, "DejaVuSans", {1.f, 1.f, 1.f});
+      if (fontOk) fontOk = drawLabel(sheet, x0 + 2, y0 + 11, tileW - 4, t.method);
+      if (fontOk) fontOk = drawLabel(sheet, x0 + 2, y0 + label - 4, tileW - 4, t.variant);
     }
   }
   const std::string path = (dir / ("contact-" + scene + ".png")).string();
@@ -129,7 +146,7 @@ void writeSheet(const std::string& scene, const std::vector<std::vector<Tile>>& 
 
 void writeContactSheets(const std::string& csvPath, const std::string& imagesDir) {
   // Per scene, keep the weighted rows at the largest spp; per (sampler, filter) the best radius.
-  struct Pick { std::string base; double mse; };
+  struct Pick { std::string base, radius; double mse; };
   std::map<std::string, std::map<std::string, std::map<std::string, Pick>>> best;  // scene -> sampler -> filter
   std::map<std::string, int> maxSpp;
   std::vector<std::vector<std::string>> rows;
@@ -141,8 +158,8 @@ void writeContactSheets(const std::string& csvPath, const std::string& imagesDir
     CsvRow r;
     r.sampler = f[3], r.spp = std::stoi(f[4]), r.filter = f[5], r.radius = std::stod(f[6]), r.reconstruction = f[8];
     const double mse = std::stod(f[13]);  // mse_area: accuracy against the pixel area, blur included
-    auto [it, fresh] = best[f[0]][f[3]].try_emplace(f[5], Pick{configurationImageBase(r), mse});
-    if (!fresh && mse < it->second.mse) it->second = Pick{configurationImageBase(r), mse};
+    auto [it, fresh] = best[f[0]][f[3]].try_emplace(f[5], Pick{configurationImageBase(r), f[6], mse});
+    if (!fresh && mse < it->second.mse) it->second = Pick{configurationImageBase(r), f[6], mse};
   }
   for (const auto& [scene, samplers] : best) {
     const fs::path dir = fs::path(imagesDir) / scene;
@@ -151,10 +168,12 @@ void writeContactSheets(const std::string& csvPath, const std::string& imagesDir
     std::vector<std::vector<Tile>> grid;
     for (const auto& [sampler, filters] : samplers) {
       std::vector<Tile> row;
-      row.push_back({"reference (area)", refFile.filename().string(), ImageBuf(refFile.string())});
+      const std::string method = sampler + " " + std::to_string(maxSpp[scene]) + " spp";
+      row.push_back({method, "reference (area)", refFile.filename().string(), ImageBuf(refFile.string())});
       for (const auto& [filter, pick] : filters) {
         const fs::path file = dir / (pick.base + ".png");
-        if (fs::exists(file)) row.push_back({pick.base, file.filename().string(), ImageBuf(file.string())});
+        if (fs::exists(file))
+          row.push_back({method, filter + " r=" + pick.radius, file.filename().string(), ImageBuf(file.string())});
       }
       for (Tile& t : row) t.image.read(0, 0, true, OIIO::TypeDesc::FLOAT);
       if (row.size() > 1) grid.push_back(std::move(row));
