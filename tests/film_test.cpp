@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "film/film.h"
+#include "film/film_impl.h"
 #include "film/visualize.h"
 
 namespace aliaslab {
@@ -219,6 +220,19 @@ TEST(Film, IdenticalForAnyThreadCount) {
     const Image one = reconstruct(in, *f, mode, 1).image;
     for (int t : {2, 3, 8}) EXPECT_EQ(maxDiff(one, reconstruct(in, *f, mode, t).image), 0.0) << toString(mode) << t;
   }
+}
+
+TEST(Film, Avx2AndSseKernelsSumBitForBitAlike) {
+  // the fast path's AVX2 + FMA kernel (where the CPU has it) against the SSE one: exact products, same sums
+  const SampleBuffer b = makeSamples(23, 19, 5, 13, noisy);
+  for (const auto& name : filterNames())
+    for (float r : {0.5f, 1.5f, 2.3f, 20.f}) {
+      auto f = makeFilter(name, r);
+      std::vector<double> fast(4 * 23 * 19, 0.0), sse(fast);
+      filmimpl::splatWeighted(b, *f, fast.data(), 1);
+      filmimpl::splatWeighted(b, *f, sse.data(), 1, false);
+      EXPECT_TRUE(fast == sse) << f->describe();
+    }
 }
 
 TEST(Film, ClassicBoxHalfIsOwnMeanAndTentGathersSquareSupport) {

@@ -85,6 +85,32 @@ TEST_P(FilterContract, EvalGridEqualsEval) {
     }
 }
 
+TEST_P(FilterContract, EvalBatchEqualsEval) {
+  // the film's fast path: n x n centres from one before the first within r (so some lie beyond it)
+  const float r = filter->radius();
+  const int n = int(std::ceil(2 * r)) + 2, count = 37, stride = Filter::batchStride(count);
+  std::vector<float> x(stride), y(stride), cx(stride), cy(stride), out(size_t(n) * n * stride);
+  HashRng rng(hashWords(4, r * 1000));
+  for (int s = 0; s < stride; ++s) {
+    x[s] = 30 * rng.nextFloat() - 5, y[s] = 30 * rng.nextFloat() - 5;
+    cx[s] = std::floor(x[s] - r) - 0.5f, cy[s] = std::floor(y[s] - r) - 0.5f;
+  }
+  filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, out.data());
+  for (int s = 0; s < count; ++s)
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a) {
+        const float e = filter->eval(x[s] - (cx[s] + a), y[s] - (cy[s] + b)), w = out[size_t(b * n + a) * stride + s];
+        if (filter->name() == "gaussian") {
+          // per-axis exponentials: a few ulps per unit of the exponent
+          EXPECT_NEAR(w, e, e > 0 ? 2.5e-7f * (4 - std::log(e)) * e : 0.f) << s << " " << a << " " << b;
+        } else if (filter->name() == "blackmanharris") {
+          EXPECT_NEAR(w, e, 1e-6f) << s << " " << a << " " << b;  // Eigen's vectorised cos
+        } else {
+          EXPECT_EQ(w, e) << s << " " << a << " " << b;  // bit for bit
+        }
+      }
+}
+
 TEST_P(FilterContract, IntegralMatchesQuadrature) {
   const double q = quad2(*filter, [](double v) { return v; }, 64);
   EXPECT_NEAR(filter->integral(), q, 1e-4 * std::abs(q));

@@ -98,8 +98,9 @@ TEST(SigKill, ResumedAfterKillsTheCsvEqualsAnUninterruptedRun) {
     const auto fa = splitCsvLine(la), fb = splitCsvLine(lb);
     ASSERT_EQ(fa.size(), fb.size()) << "line " << line;
     for (size_t i = 0; i < fa.size(); ++i) {
-      if (std::find(timing.begin(), timing.end(), i) == timing.end())
+      if (std::find(timing.begin(), timing.end(), i) == timing.end()) {
         EXPECT_EQ(fa[i], fb[i]) << "line " << line << " column " << csvColumns()[i];
+      }
     }
   }
   EXPECT_FALSE(std::getline(b, lb)) << "resumed CSV has extra lines: " << lb;

@@ -63,6 +63,12 @@ std::vector<std::string> withoutTiming(const std::string& path) {
   return out;
 }
 
+// The rows with the last column (threads: 1 per shard, 2 unsharded) blanked.
+std::vector<std::string> withoutThreads(std::vector<std::string> rows) {
+  for (auto& row : rows) row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
+  return rows;
+}
+
 // One uninterrupted run, shared by the tests.
 const std::string& fullCsv() {
   static const std::string path = [] {
@@ -113,13 +119,53 @@ TEST(SweepShards, ThreeShardsUnderGnuParallelMergeToTheUnshardedCsv) {
   // Shards hold disjoint groups (4 groups over 3 shards: 2, 1, 1 of them).
   EXPECT_EQ(readCsvLines((dir / "s0.csv").string()).size(), 6u);
   EXPECT_EQ(readCsvLines((dir / "s2.csv").string()).size(), 3u);
-  auto merged_rows = withoutTiming(merged);
-  for (auto& row : merged_rows) {  // the thread column differs (1 per shard); blank it
-    row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
-  }
-  auto expected_rows = expected;
-  for (auto& row : expected_rows) row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
-  EXPECT_EQ(merged_rows, expected_rows);
+  EXPECT_EQ(withoutThreads(withoutTiming(merged)), withoutThreads(expected));
+}
+
+// The shipped scripts: experiments/sweep/parallel_sweep.sh, and slurm_sweep.sh
+// against a stand-in sbatch that runs each job's --wrap command at once
+// (array tasks one after another, with SLURM_ARRAY_TASK_ID set).
+TEST(SweepShards, TheGnuParallelScriptMergesToTheUnshardedCsv) {
+  const fs::path dir = workDir() / "parallel_script";
+  const std::string cmd = "SWEEP=" + kBin + " bash " + ALIASLAB_SOURCE_DIR + "/experiments/sweep/parallel_sweep.sh 3 " +
+                          tinyArgs(1) + " --out " + dir.string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  EXPECT_EQ(withoutThreads(withoutTiming((dir / "study.csv").string())), withoutThreads(withoutTiming(fullCsv())));
+}
+
+TEST(SweepShards, TheSlurmScriptSubmitsReferencesShardsAndMerge) {
+  const fs::path dir = workDir() / "slurm_script", bin = workDir() / "fake_slurm";
+  fs::create_directories(bin);
+  std::ofstream(bin / "sbatch") << R"(#!/bin/bash
+wrap= array=
+for a in "$@"; do
+  case $a in --wrap=*) wrap=${a#--wrap=} ;; --array=*) array=${a#--array=} ;; esac
+done
+echo "$*" >> "$(dirname "$0")/submitted.log"
+if [[ -n $array ]]; then
+  for ((t = ${array%-*}; t <= ${array#*-}; ++t)); do
+    SLURM_ARRAY_TASK_ID=$t SLURM_CPUS_PER_TASK=1 bash -c "$wrap" > /dev/null 2>&1 || exit 1
+  done
+else
+  bash -c "$wrap" > /dev/null 2>&1 || exit 1
+fi
+echo $((1000 + RANDOM))
+)";
+  fs::permissions(bin / "sbatch", fs::perms::owner_all);
+  const std::string cmd = "PATH=" + bin.string() + ":$PATH SWEEP=" + kBin + " bash " + ALIASLAB_SOURCE_DIR +
+                          "/experiments/sweep/slurm_sweep.sh 3 " + tinyArgs(1) + " --out " + dir.string() +
+                          " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  std::vector<std::string> jobs;  // one line per sbatch call
+  std::ifstream log(bin / "submitted.log");
+  for (std::string line; std::getline(log, line);) jobs.push_back(line);
+  ASSERT_EQ(jobs.size(), 3u);
+  EXPECT_NE(jobs[0].find("--refs-only"), std::string::npos) << jobs[0];
+  EXPECT_NE(jobs[1].find("--array=0-2"), std::string::npos) << jobs[1];
+  EXPECT_NE(jobs[1].find("--dependency=afterok:"), std::string::npos) << jobs[1];
+  EXPECT_NE(jobs[2].find("--merge"), std::string::npos) << jobs[2];
+  EXPECT_NE(jobs[2].find("study.shard-2-of-3.csv"), std::string::npos) << jobs[2];
+  EXPECT_EQ(withoutThreads(withoutTiming((dir / "study.csv").string())), withoutThreads(withoutTiming(fullCsv())));
 }
 
 TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {

@@ -12,23 +12,9 @@
 # Environment: SWEEP (sweep binary, default build/bin/sweep), JOBS (parallel
 # jobs at once, default N).
 set -euo pipefail
-if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ || $1 -lt 1 ]]; then
-  echo "usage: $0 N [sweep options...]" >&2
-  exit 2
-fi
-N=$1
-shift
-SWEEP=${SWEEP:-build/bin/sweep}
-OUT=results/study
-args=("$@")
-for ((k = 0; k < ${#args[@]}; ++k)); do
-  [[ ${args[k]} == --out ]] && OUT=${args[k + 1]}
-  [[ ${args[k]} == --out=* ]] && OUT=${args[k]#--out=}
-done
+source "$(dirname "$0")/shard_args.sh" "$@"
 
-"$SWEEP" "$@" --refs-only
+"$SWEEP" "${SWEEP_ARGS[@]}" --refs-only
 parallel --will-cite --halt now,fail=1 -j "${JOBS:-$N}" \
-  "$SWEEP" "$@" --quiet --shard {}/"$N" --csv "$OUT"/study.shard-{}-of-"$N".csv ::: $(seq 0 $((N - 1)))
-shards=()
-for ((i = 0; i < N; ++i)); do shards+=("$OUT/study.shard-$i-of-$N.csv"); done
-"$SWEEP" --merge "$OUT/study.csv" "${shards[@]}"
+  "$SWEEP" "${SWEEP_ARGS[@]}" --quiet --shard {}/"$N" --csv "$OUT"/study.shard-{}-of-"$N".csv ::: $(seq 0 $((N - 1)))
+"$SWEEP" --merge "$OUT/study.csv" "${SHARDS[@]}"

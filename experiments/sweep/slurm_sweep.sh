@@ -13,32 +13,21 @@
 # Environment: SWEEP (path of the sweep binary, default build/bin/sweep),
 # SBATCH_EXTRA (extra sbatch options: partition, account, time, ...).
 set -euo pipefail
-if [[ $# -lt 1 || ! $1 =~ ^[0-9]+$ || $1 -lt 1 ]]; then
-  echo "usage: $0 N [sweep options...]" >&2
-  exit 2
-fi
-N=$1
-shift
-SWEEP=${SWEEP:-build/bin/sweep}
-OUT=results/study
-args=("$@")
-for ((k = 0; k < ${#args[@]}; ++k)); do
-  [[ ${args[k]} == --out ]] && OUT=${args[k + 1]}
-  [[ ${args[k]} == --out=* ]] && OUT=${args[k]#--out=}
-done
+source "$(dirname "$0")/shard_args.sh" "$@"
 # shellcheck disable=SC2086
-quoted=$(printf '%q ' "$@")
+quoted=$(printf '%q ' "${SWEEP_ARGS[@]}")
 mkdir -p "$OUT/slurm"
+# Each task uses the cores Slurm gives it, unless the options say otherwise.
+threads='--threads ${SLURM_CPUS_PER_TASK:-0}'
+[[ -n $THREADS_GIVEN ]] && threads=
 
 refs=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep-refs --cpus-per-task=2 \
   --output="$OUT/slurm/refs-%j.log" --wrap="$SWEEP $quoted --refs-only")
 
 array=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep --cpus-per-task=2 \
   --dependency=afterok:$refs --array=0-$((N - 1)) --output="$OUT/slurm/shard-%a.log" \
-  --wrap="$SWEEP $quoted --threads \${SLURM_CPUS_PER_TASK:-0} --shard \$SLURM_ARRAY_TASK_ID/$N --csv $OUT/study.shard-\$SLURM_ARRAY_TASK_ID-of-$N.csv")
+  --wrap="$SWEEP $quoted $threads --shard \$SLURM_ARRAY_TASK_ID/$N --csv $OUT/study.shard-\$SLURM_ARRAY_TASK_ID-of-$N.csv")
 
-shards=""
-for ((i = 0; i < N; ++i)); do shards+=" $OUT/study.shard-$i-of-$N.csv"; done
 merge=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep-merge --dependency=afterok:$array \
-  --output="$OUT/slurm/merge-%j.log" --wrap="$SWEEP --merge $OUT/study.csv$shards")
+  --output="$OUT/slurm/merge-%j.log" --wrap="$SWEEP --merge $OUT/study.csv ${SHARDS[*]}")
 echo "submitted: references $refs, shards $array (0-$((N - 1))), merge $merge -> $OUT/study.csv"

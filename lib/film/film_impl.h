@@ -5,20 +5,24 @@
 
 namespace aliaslab::filmimpl {
 
+/// Position and radiance finite: v - v is 0 for finite v, NaN for inf and NaN (no branches).
 inline bool finiteSample(const FilmSample& s) {
-  return std::isfinite(s.x) && std::isfinite(s.y) && s.L.allFinite();
+  return (s.x - s.x) + (s.y - s.y) + (s.L[0] - s.L[0]) + (s.L[1] - s.L[1]) + (s.L[2] - s.L[2]) == 0;
 }
 size_t countNonFinite(const SampleBuffer& samples);
 
 /// Adds (f L, f) of every finite sample into `sums` (r, g, b, weight per
 /// pixel, width x height) for every pixel whose centre is within the
 /// support: the fast splat, banded over output rows so each pixel's sum
-/// runs in the same order for any thread count. Weights from
-/// Filter::evalFootprint (eval() up to a few float ulps); per source pixel
-/// the products are summed exactly in double in a small tile, then added to
-/// `sums` (float tiles measured no faster and lose the 1e-6 agreement where
-/// negative lobes cancel).
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads);
+/// runs in sample order for any thread count. Weights from
+/// Filter::evalBatch (eval() bit for bit; Blackman-Harris and the Gaussian
+/// within float rounding), summed in double: float x float products are
+/// exact, so the AVX2 + FMA kernel used where the CPU has it sums exactly
+/// like the SSE one (allowAvx2 = false forces the SSE kernel, for tests).
+/// Float sums were measured no faster and lose the 1e-6 agreement where
+/// negative lobes cancel.
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads,
+                   bool allowAvx2 = true);
 
 /// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel).
 void addPlainSums(const SampleBuffer& samples, double* plain);

@@ -1,16 +1,21 @@
-// The fast weighted average. Per output band of rows (the parallel work
-// item), per source pixel that can reach the band, one tile covering the
-// union of its samples' footprints; per sample one Filter::evalFootprint call
-// over the sample's own footprint (vectorised weights, no virtual call per
-// pixel) and a 4-lane (r, g, b, w) accumulation into the tile (Acc: float
-// or double lanes; double is used: exact products, and float measured no
-// faster); the tile is added to the image's double sums once per source
-// pixel, so every pixel's sum has a fixed order for any thread count.
+// The fast weighted average. Per output band of kBand rows (the parallel
+// work item), the samples of every source row that can reach the band, in
+// memory order, in batches: one Filter::evalBatch call per batch (vectorised
+// across samples) gives each sample's weights over the n x n pixel centres
+// from its footprint's first column and row, n = ceil(2r) (a footprint at a
+// generic position; the weights are zero beyond the support), then a 4-lane
+// (r, g, b, 1) x w accumulation in double into a band buffer padded by n
+// columns and rows, so the blocks are never clipped. The products are exact
+// (float x float in double), so the AVX2 + FMA kernel, chosen once when the
+// CPU has it, sums bit for bit like the SSE one. A sample whose footprint is
+// wider than n (on a pixel boundary) is added on its own with eval(). The
+// band is then added to the image's sums: every pixel's sum runs in sample
+// order, for any thread count.
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <utility>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "core/parallel.h"
 #include "film/film_impl.h"
@@ -18,107 +23,95 @@
 namespace aliaslab::filmimpl {
 namespace {
 
-constexpr int kBand = 32;        // output rows per parallel work item
-constexpr float kMargin = 1e-3f; // widens footprints so boundary samples always reach the exact test
+constexpr int kBand = 32;    // output rows per parallel work item
+constexpr int kBatch = 128;  // samples per Filter::evalBatch call (a multiple of 4)
+constexpr int kMaxBlock = 16; // largest n x n block (r <= 8); wider footprints sample by sample
 
-/// Pixels [lo, hi] of an axis of `n` pixels whose centre c + 0.5 satisfies |p - c - 0.5| <= r (widened).
-inline void footprint(float p, float r, int n, int& lo, int& hi) {
-  lo = static_cast<int>(std::ceil(std::max(-1.f, p - 0.5f - r - kMargin)));
-  hi = static_cast<int>(std::floor(std::min(static_cast<float>(n), p - 0.5f + r + kMargin)));
-  lo = std::max(lo, 0);
-  hi = std::min(hi, n - 1);
-}
-
-/// footprint() trimmed to the centres with |p - (c + 0.5f)| <= r exactly as eval() rounds it.
-inline void exactFootprint(float p, float r, int n, int& lo, int& hi) {
-  footprint(p, r, n, lo, hi);
-  while (lo <= hi && std::abs(p - (static_cast<float>(lo) + 0.5f)) > r) ++lo;
-  while (hi >= lo && std::abs(p - (static_cast<float>(hi) + 0.5f)) > r) --hi;
-}
-
-/// Bounding box of a pixel's finite samples (empty: xmin > xmax).
-struct Box {
-  float xmin = kInf, xmax = -kInf, ymin = kInf, ymax = -kInf;
+/// (r, g, b, weight) in double: one AVX register, two SSE ones (aligned to 32 also without AVX).
+using V4 = double __attribute__((vector_size(32)));
+using F4 = float __attribute__((vector_size(16)));
+struct alignas(32) Sum {
+  V4 v = {};
 };
 
-template <class Acc>
-void splat(const SampleBuffer& samples, const Filter& filter, double* sums, int threads) {
-  using Scalar = typename Acc::Scalar;
-  const int W = samples.width(), H = samples.height(), spp = samples.spp();
-  const float r = filter.radius();
+/// Whether the pixel centre i + 0.5 is within r of p, as eval() rounds it.
+inline bool inside(float p, float r, int i) { return std::abs(p - (static_cast<float>(i) + 0.5f)) <= r; }
 
-  // per source pixel: the box of its samples; per source row: the output rows it can reach
-  std::vector<Box> boxes(static_cast<size_t>(W) * H);
-  parallelFor(H, threads, [&](int sj) {
-    for (int si = 0; si < W; ++si) {
-      const FilmSample* s = samples.pixel(si, sj);
-      Box& b = boxes[static_cast<size_t>(sj) * W + si];
-      for (int k = 0; k < spp; ++k)
-        if (finiteSample(s[k]))
-          b.xmin = std::min(b.xmin, s[k].x), b.xmax = std::max(b.xmax, s[k].x), b.ymin = std::min(b.ymin, s[k].y),
-          b.ymax = std::max(b.ymax, s[k].y);
-    }
-  });
-  std::vector<int> reachLo(H, H), reachHi(H, -1);
-  for (int sj = 0; sj < H; ++sj) {
-    float ymin = kInf, ymax = -kInf;
-    for (int si = 0; si < W; ++si) {
-      const Box& b = boxes[static_cast<size_t>(sj) * W + si];
-      ymin = std::min(ymin, b.ymin), ymax = std::max(ymax, b.ymax);
-    }
-    if (ymin <= ymax) {
-      int lo, hi;
-      footprint(ymin, r, H, lo, hi), reachLo[sj] = lo;
-      footprint(ymax, r, H, lo, hi), reachHi[sj] = hi;
+/// The pixel centres within r of p as eval() rounds |p - (i + 0.5f)| <= r: i in [lo, hi] (lo > hi: none).
+/// For |p| >= r + 2 (and |p| < 2^22) the float differences p - c near both ends are exact (multiples of
+/// ulp(p), smaller than |p|), so the bounds are the real ones, computed exactly in double; nearer 0 the
+/// float estimate (off by at most one) is corrected in two branch-free steps.
+inline void centresWithin(float p, float r, int& lo, int& hi) {
+  if (std::abs(p) >= r + 2 && r < 1e8f) {  // (p is within r + 1 of the image: no int overflow)
+    lo = static_cast<int>(std::ceil(static_cast<double>(p) - 0.5 - r));
+    hi = static_cast<int>(std::floor(static_cast<double>(p) - 0.5 + r));
+    return;
+  }
+  auto index = [](float v) { return static_cast<int>(std::clamp(v, -4.f, 1e9f)); };  // any radius
+  lo = index(std::ceil(p - 0.5f - r)) - 1, hi = index(std::floor(p - 0.5f + r)) + 1;
+  for (int step = 0; step < 2; ++step) lo += !inside(p, r, lo), hi -= !inside(p, r, hi);
+}
+
+/// Samples waiting for one evalBatch call (padded to a multiple of 4).
+struct Batch {
+  alignas(16) float x[kBatch], y[kBatch], cx[kBatch], cy[kBatch];  ///< position, first pixel centre
+  int at[kBatch];                                                   ///< first pixel's index in the band buffer
+  int nx[kBatch], ny[kBatch];                                       ///< footprint columns and rows (<= n)
+  F4 L[kBatch];                                                     ///< (r, g, b, 1)
+};
+
+/// buffer[at + b * width + a] += w(a, b) L for every sample of the batch (N: n known at compile time, 0: any),
+/// w(a, b) = w[(b * n + a) * kBatch + s].
+template <int N>
+inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
+                                                      Sum* buffer, int width) {
+  if (N) n = N;
+  constexpr size_t stride = kBatch;  // evalBatch is always called for a whole batch: constant offsets
+  for (int s = 0; s < count; ++s) {
+    Sum* block = buffer + batch.at[s];
+    const V4 L = __builtin_convertvector(batch.L[s], V4);
+#pragma GCC unroll 8
+    for (int b = 0; b < n; ++b)
+#pragma GCC unroll 8
+      for (int a = 0; a < n; ++a) block[b * width + a].v += static_cast<double>(w[(b * n + a) * stride + s]) * L;
+  }
+}
+/// The same for Filter::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
+template <int N>
+inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
+  if (N) n = N;
+  for (int s = 0; s < count; ++s) {
+    Sum* block = buffer + batch.at[s];
+    const V4 L = __builtin_convertvector(batch.L[s], V4);
+    V4 column[N ? N : kMaxBlock];  // L on the footprint's columns, 0 beyond
+#pragma GCC unroll 8
+    for (int a = 0; a < n; ++a) column[a] = L * static_cast<double>(a < batch.nx[s]);
+#pragma GCC unroll 8
+    for (int b = 0; b < n; ++b) {
+      const double inRow = b < batch.ny[s];
+#pragma GCC unroll 8
+      for (int a = 0; a < n; ++a) block[b * width + a].v += column[a] * inRow;
     }
   }
+}
+template <int N>
+__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
+  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+}
+template <int N>
+void accumulateSse(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
+  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+}
 
-  const int bands = (H + kBand - 1) / kBand;
-  parallelFor(bands, threads, [&](int band) {
-    const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
-    std::vector<float> w;
-    std::vector<Acc, Eigen::aligned_allocator<Acc>> tile;
-    for (int sj = 0; sj < H; ++sj) {
-      if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
-      for (int si = 0; si < W; ++si) {
-        const Box& box = boxes[static_cast<size_t>(sj) * W + si];
-        if (!(box.xmin <= box.xmax)) continue;
-        int ti0, ti1, tj0, tj1, unused;
-        footprint(box.xmin, r, W, ti0, unused), footprint(box.xmax, r, W, unused, ti1);
-        footprint(box.ymin, r, H, tj0, unused), footprint(box.ymax, r, H, unused, tj1);
-        tj0 = std::max(tj0, j0), tj1 = std::min(tj1, j1 - 1);
-        if (ti0 > ti1 || tj0 > tj1) continue;
-        const int tnx = ti1 - ti0 + 1, tny = tj1 - tj0 + 1;
-        tile.assign(static_cast<size_t>(tnx) * tny, Acc::Zero());
-
-        // each sample over its own footprint
-        const FilmSample* s = samples.pixel(si, sj);
-        for (int k = 0; k < spp; ++k) {
-          const FilmSample& smp = s[k];
-          if (!finiteSample(smp)) continue;
-          int ilo, ihi, jlo, jhi;
-          exactFootprint(smp.x, r, W, ilo, ihi);
-          exactFootprint(smp.y, r, H, jlo, jhi);
-          jlo = std::max(jlo, j0), jhi = std::min(jhi, j1 - 1);
-          if (ilo > ihi || jlo > jhi) continue;
-          const int nx = ihi - ilo + 1, ny = jhi - jlo + 1, stride = Filter::footprintStride(nx);
-          if (w.size() < static_cast<size_t>(stride) * ny) w.resize(static_cast<size_t>(stride) * ny);
-          filter.evalFootprint(smp.x, smp.y, ilo, nx, jlo, ny, w.data());
-          const Acc L(Scalar(smp.L[0]), Scalar(smp.L[1]), Scalar(smp.L[2]), Scalar(1));
-          for (int b = 0; b < ny; ++b) {
-            Acc* row = tile.data() + static_cast<size_t>(jlo - tj0 + b) * tnx + (ilo - ti0);
-            const float* wr = w.data() + static_cast<size_t>(b) * stride;
-            for (int a = 0; a < nx; ++a) row[a] += Scalar(wr[a]) * L;
-          }
-        }
-        for (int b = 0; b < tny; ++b) {
-          double* out = sums + 4 * (static_cast<size_t>(tj0 + b) * W + ti0);
-          const Acc* row = tile.data() + static_cast<size_t>(b) * tnx;
-          for (int a = 0; a < tnx; ++a, out += 4) Eigen::Map<Eigen::Array4d>(out) += row[a].template cast<double>();
-        }
-      }
-    }
-  });
+using Kernel = void (*)(const Batch&, int, const float*, int, Sum*, int);
+/// The kernel for blocks of n x n (weights w, or none: unitWeights): unrolled for n <= 6, AVX2 when the CPU has it.
+template <int... Ns>
+Kernel pickKernel(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
+  static const bool cpuAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool avx2 = cpuAvx2 && allowAvx2;
+  Kernel k = avx2 ? accumulateAvx2<0> : accumulateSse<0>;
+  ((k = n == Ns + 1 ? (avx2 ? accumulateAvx2<Ns + 1> : accumulateSse<Ns + 1>) : k), ...);
+  return k;
 }
 
 }  // namespace
@@ -140,8 +133,70 @@ void addPlainSums(const SampleBuffer& samples, double* plain) {
     }
 }
 
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads) {
-  splat<Eigen::Array4d>(samples, filter, sums, threads);
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
+  const int W = samples.width(), H = samples.height();
+  const size_t rowSamples = static_cast<size_t>(W) * samples.spp();
+  const float r = filter.radius();
+  const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
+  const Kernel kernel = pickKernel(n, allowAvx2, std::make_integer_sequence<int, 6>());
+  const bool unit = filter.unitWeights();
+
+  // per source row: the output rows its samples can reach (wider by one; NaN ignored)
+  std::vector<int> reachLo(H), reachHi(H);
+  parallelFor(H, threads, [&](int sj) {
+    float ymin = kInf, ymax = -kInf;
+    const FilmSample* row = samples.pixel(0, sj);
+    for (size_t k = 0; k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
+    reachLo[sj] = static_cast<int>(std::clamp(ymin - r - 1, -1.f, float(H))) - 1;
+    reachHi[sj] = static_cast<int>(std::clamp(ymax + r + 1, -1.f, float(H)));
+  });
+
+  const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
+  parallelFor(bands, threads, [&](int band) {
+    const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
+    std::vector<Sum> buffer(static_cast<size_t>(kBand + pad) * width);
+    std::vector<float> w(static_cast<size_t>(pad) * pad * kBatch);
+    auto batch = std::make_unique<Batch>();
+    Batch& b = *batch;
+    int count = 0;
+    auto flush = [&] {
+      if (!count) return;
+      for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
+      if (!unit) filter.evalBatch(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
+      kernel(b, count, unit ? nullptr : w.data(), n, buffer.data(), width);
+      count = 0;
+    };
+    for (int sj = 0; sj < H; ++sj) {
+      if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
+      const FilmSample* row = samples.pixel(0, sj);
+      for (size_t k = 0; k < rowSamples; ++k) {
+        const FilmSample& q = row[k];
+        if (!finiteSample(q) || !(q.x > -r - 1 && q.x < W + r + 1 && q.y > -r - 1 && q.y < H + r + 1)) continue;
+        int ilo, ihi, jlo, jhi;
+        centresWithin(q.x, r, ilo, ihi), centresWithin(q.y, r, jlo, jhi);
+        ilo = std::max(ilo, 0), ihi = std::min(ihi, W - 1), jlo = std::max(jlo, j0), jhi = std::min(jhi, j1 - 1);
+        if (ilo > ihi || jlo > jhi) continue;
+        const F4 L = {q.L[0], q.L[1], q.L[2], 1.f};
+        if (ihi - ilo >= pad || jhi - jlo >= pad) {  // wider than a block: on its own, in sample order
+          flush();
+          for (int j = jlo; j <= jhi; ++j)
+            for (int i = ilo; i <= ihi; ++i)
+              buffer[(j - j0) * width + i].v +=
+                  static_cast<double>(filter.eval(q.x - (static_cast<float>(i) + 0.5f), q.y - (static_cast<float>(j) + 0.5f))) *
+                  __builtin_convertvector(L, V4);
+          continue;
+        }
+        b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
+        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * width + ilo, b.L[count] = L;
+        b.nx[count] = ihi - ilo + 1, b.ny[count] = jhi - jlo + 1;
+        if (++count == kBatch) flush();
+      }
+    }
+    flush();
+    for (int j = j0; j < j1; ++j)
+      for (int i = 0; i < W; ++i)
+        for (int c = 0; c < 4; ++c) sums[4 * (static_cast<size_t>(j) * W + i) + c] += buffer[(j - j0) * width + i].v[c];
+  });
 }
 
 }  // namespace aliaslab::filmimpl

@@ -17,6 +17,7 @@ class BoxFilter final : public SeparableFilter<BoxFilter> {
   using SeparableFilter::SeparableFilter;
   float g(float) const { return 1.f; }
   Lanes g4(const Lanes&) const { return Lanes::Ones(); }
+  bool unitWeights() const override { return true; }
   double integral() const override { return 4.0 * radius() * radius(); }
   std::string name() const override { return "box"; }
 };

@@ -54,11 +54,13 @@ void Filter::evalGrid(const float* dx, int nx, const float* dy, int ny, float* o
     for (int a = 0; a < nx; ++a) out[static_cast<size_t>(b) * nx + a] = eval(dx[a], dy[b]);
 }
 
-void Filter::evalFootprint(float x, float y, int i0, int nx, int j0, int ny, float* out) const {
-  const int stride = footprintStride(nx);
-  for (int b = 0; b < ny; ++b)
-    for (int a = 0; a < nx; ++a)
-      out[static_cast<size_t>(b) * stride + a] = eval(x - (float(i0 + a) + 0.5f), y - (float(j0 + b) + 0.5f));
+void Filter::evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
+                       float* out) const {
+  const int stride = batchStride(count);
+  for (int b = 0; b < n; ++b)
+    for (int a = 0; a < n; ++a)
+      for (int s = 0; s < stride; ++s)
+        out[static_cast<size_t>(b * n + a) * stride + s] = eval(x[s] - (cx[s] + a), y[s] - (cy[s] + b));
 }
 
 std::string Filter::describe() const {

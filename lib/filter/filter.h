@@ -50,16 +50,22 @@ class Filter {
   /// out[b * nx + a] = eval(dx[a], dy[b]) for a < nx, b < ny (up to float
   /// rounding: the Gaussian multiplies per-axis exponentials).
   virtual void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const;
-  /// The film's fast path, one call per sample at film position (x, y):
-  /// weights at the centres of pixel columns i0 .. i0+nx-1 and rows
-  /// j0 .. j0+ny-1, which the caller keeps inside the support's bounding
-  /// square (|dx| <= r and |dy| <= r, as eval() tests them):
-  /// out[b * footprintStride(nx) + a] = eval(x - (i0 + a + 0.5), y - (j0 + b + 0.5));
-  /// the row padding is scratch. Equal to eval() up to a few float ulps
-  /// (vectorised sqrt, cos, exp; the Gaussian is a product per axis).
-  virtual void evalFootprint(float x, float y, int i0, int nx, int j0, int ny, float* out) const;
-  /// Row stride of evalFootprint's output: nx rounded up to a multiple of 4.
-  static int footprintStride(int nx) { return (nx + 3) & ~3; }
+  /// The film's fast path, one call per batch of samples, vectorised across
+  /// them: the weights of sample s < count at film position (x[s], y[s]) at
+  /// the centres of the n x n pixels whose first centre is (cx[s], cy[s])
+  /// (a pixel centre: column + 0.5, row + 0.5):
+  ///   out[(b * n + a) * stride + s] = eval(x[s] - (cx[s] + a), y[s] - (cy[s] + b)),
+  /// stride = batchStride(count); every input holds `stride` entries (the
+  /// padding is evaluated and ignored). Bit for bit eval() (Lanczos and
+  /// Hann: sin and cos by the filters' own code, shared by both), except
+  /// Blackman-Harris (Eigen's vectorised cos: a few float ulps) and the
+  /// Gaussian (per-axis exponentials: a few ulps per unit of the exponent).
+  virtual void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
+                         float* out) const;
+  /// Entries per weight of evalBatch's output: count rounded up to a multiple of 4.
+  static int batchStride(int count) { return (count + 3) & ~3; }
+  /// True when eval() is exactly 1 on the whole support (the box): the film then skips the weights.
+  virtual bool unitWeights() const { return false; }
   /// The weight the course's classic gather uses: eval(), except that the
   /// course's Gaussian is exp(-d^2 / 2 sigma^2) uncut (no radius, no edge term).
   virtual float evalClassic(float dx, float dy) const { return eval(dx, dy); }
@@ -92,8 +98,9 @@ const std::vector<std::string>& filterNames();
 
 /// Makes a filter by name with support radius `radius` and shape `params`.
 /// Throws OptionError("--filter", ...) listing the valid names for an unknown
-/// name, OptionError("--radius", ...) for a radius that is not finite and
-/// positive, and OptionError("--filter-param", ...) naming the parameter for an unknown or
+/// name, OptionError("--radius", ...) for a radius that is not finite or
+/// outside [1e-3, 1024] pixels (squared offsets underflow below, the integral
+/// of |f| overflows above), and OptionError("--filter-param", ...) naming the parameter for an unknown or
 /// out-of-range shape parameter (so a misspelt "sigmaa" cannot pass).
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params = {});
 

@@ -3,7 +3,10 @@
 // one of the two CRTP bases below and a make function the factory calls
 // with the shape parameters already merged with their defaults.
 #pragma once
+#include <immintrin.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -29,18 +32,74 @@ double integrate(F&& f, double a, double b, int cells = 512) {
   return sum * 0.5 * h;
 }
 
-/// sin(pi t) / (pi t), 1 at t = 0.
-inline float sinc(float t) {
-  if (std::abs(t) < 1e-5f) return 1.f;
-  const float a = kPi * t;
-  return std::sin(a) / a;
+// sin(pi t) / (pi t) and cos(pi t) for float or Eigen float lanes: the same
+// operations in both, so eval() and the vectorised fast path agree bit for
+// bit (no libm). The reduction f = t - round(t) is exact, so the only error
+// is the float evaluation of the Taylor series in f^2 (to f^14, within 1e-8
+// on |f| <= 1/2): about an ulp. Valid for |t| < 2^22.
+namespace trig {
+constexpr float kRound = 12582912.f;  // 1.5 * 2^23: (v + kRound) - kRound rounds v to an integer
+/// Taylor coefficients in f^2 of sin(pi f) / (pi f) (odd = 1) and of cos(pi f) (odd = 0): (-1)^k pi^2k / (2k + odd)!
+constexpr std::array<float, 8> taylor(int odd) {
+  std::array<float, 8> c{};
+  double v = 1;
+  for (int k = 0; k < 8; ++k) {
+    c[k] = float(v);
+    v *= -(M_PI * M_PI) / ((2 * k + odd + 1) * (2 * k + odd + 2));
+  }
+  return c;
 }
+inline constexpr std::array<float, 8> kSinc = taylor(1), kCos = taylor(0);
+/// Sets f = t - round(t) and returns (-1)^round(t) times the series c in f^2.
+template <class T>
+[[gnu::always_inline]] inline T reduced(const T& t, T& f, const std::array<float, 8>& c) {
+  const T n = (t + kRound) - kRound, half = n * 0.5f;
+  f = t - n;
+  const T f2 = f * f, sign = 1.f - 4.f * (half - ((half - 0.25f + kRound) - kRound));  // half - floor(half): 0 or 1/2
+  T p = f2 * c[7] + c[6];
+  for (int k = 5; k >= 0; --k) p = p * f2 + c[k];
+  return sign * p;
+}
+/// sin(pi t) / (pi t), 1 at t = 0.
+template <class T>
+[[gnu::always_inline]] inline T sincPi(const T& t) {
+  T f;
+  const T q = reduced(t, f, kSinc);
+  return q * ((f + 1e-30f) / (t + 1e-30f));  // f / t; exactly 1 while round(t) = 0 (then f = t)
+}
+template <class T>
+[[gnu::always_inline]] inline T cosPi(const T& t) {
+  T f;
+  return reduced(t, f, kCos);
+}
+}  // namespace trig
 
-// Vectorised footprint helpers (Filter::evalFootprint): 4 lanes at a time.
+// Vectorised helpers (Filter::evalBatch): 4 lanes at a time.
 using Lanes = Eigen::Array4f;
 inline Eigen::Map<Lanes> lanes(float* p) { return Eigen::Map<Lanes>(p); }
+inline Eigen::Map<const Lanes> lanes(const float* p) { return Eigen::Map<const Lanes>(p); }
 
-/// Scratch floats for one evalFootprint call, on the stack unless large.
+/// Lane-wise a <= bound ? v : 0 (0 for NaN a): a compare and an and.
+inline Lanes keepLe(const Lanes& a, float bound, const Lanes& v) {
+  Lanes out;
+  _mm_storeu_ps(out.data(), _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(a.data()), _mm_set1_ps(bound)), _mm_loadu_ps(v.data())));
+  return out;
+}
+/// Lane-wise sqrt, correctly rounded like std::sqrt (Eigen's fast-math sqrt is not).
+inline Lanes sqrt4(const Lanes& v) {
+  Lanes out;
+  _mm_storeu_ps(out.data(), _mm_sqrt_ps(_mm_loadu_ps(v.data())));
+  return out;
+}
+/// Lane-wise a < bound ? v : w.
+inline Lanes ifLess(const Lanes& a, float bound, const Lanes& v, const Lanes& w) {
+  const __m128 m = _mm_cmplt_ps(_mm_loadu_ps(a.data()), _mm_set1_ps(bound));
+  Lanes out;
+  _mm_storeu_ps(out.data(), _mm_or_ps(_mm_and_ps(m, _mm_loadu_ps(v.data())), _mm_andnot_ps(m, _mm_loadu_ps(w.data()))));
+  return out;
+}
+
+/// Scratch floats for one evalBatch call, on the stack unless large.
 class Scratch {
  public:
   explicit Scratch(size_t n) {
@@ -49,22 +108,14 @@ class Scratch {
   float* data() { return big_.empty() ? small_ : big_.data(); }
 
  private:
-  static constexpr size_t kSmall = 256;
-  float small_[kSmall];
+  static constexpr size_t kSmall = 8192;
+  alignas(16) float small_[kSmall];
   std::vector<float> big_;
 };
 
-/// out[a] = c - (i0 + a + 0.5) for a < n: the offsets eval() sees.
-inline void unitOffsets(float c, int i0, int n, float* out) {
-  for (int a = 0; a < n; ++a) out[a] = c - (static_cast<float>(i0 + a) + 0.5f);
-}
-
 /// f(dx, dy) = g(dx) g(dy) on the square [-r, r]^2; Derived::g(x) is the profile for |x| <= r.
-/// Derived may define g4 (g in 4 lanes, also called on padding lanes beyond r)
-/// to vectorise evalFootprint; lanczos and
-/// hann keep the scalar g, because Eigen's vectorised sin differs from std::sin
-/// by an ulp or two, which the cancelling negative lobes amplify beyond 1e-5
-/// at small radii (film_test's brute-force comparison).
+/// Derived may define g4 (g in 4 lanes, bit for bit g; also called beyond r and on padding)
+/// to vectorise evalBatch.
 template <class Derived>
 class SeparableFilter : public Filter {
  public:
@@ -80,31 +131,41 @@ class SeparableFilter : public Filter {
       for (int a = 0; a < nx; ++a) row[a] = out[a] * gy;
     }
   }
-  // per axis g at the padded offsets, then the products
-  void evalFootprint(float x, float y, int i0, int nx, int j0, int ny, float* out) const final {
-    const int sx = footprintStride(nx), sy = footprintStride(ny);
-    Scratch scratch(sx + sy);
-    float *gx = scratch.data(), *gy = gx + sx;
-    unitOffsets(x, i0, sx, gx), unitOffsets(y, j0, sy, gy);
-    if constexpr (requires(const Derived& d, const Lanes& l) { d.g4(l); }) {
-      for (int k = 0; k < sx; k += 4) lanes(gx + k) = self().g4(lanes(gx + k));
-      for (int k = 0; k < sy; k += 4) lanes(gy + k) = self().g4(lanes(gy + k));
-    } else {  // scalar g: only the nx + ny offsets that are used
-      for (int a = 0; a < nx; ++a) gx[a] = self().g(gx[a]);
-      for (int b = 0; b < ny; ++b) gy[b] = self().g(gy[b]);
-    }
-    for (int b = 0; b < ny; ++b)
-      for (int k = 0; k < sx; k += 4) lanes(out + static_cast<size_t>(b) * sx + k) = lanes(gx + k) * gy[b];
+  // n profile values per axis and sample, then the n x n products
+  void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
+                 float* out) const final {
+    const size_t stride = batchStride(count);
+    Scratch scratch(2 * n * stride);
+    float *gx = scratch.data(), *gy = gx + n * stride;
+    profiles(x, cx, n, stride, gx), profiles(y, cy, n, stride, gy);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a)
+        for (size_t s = 0; s < stride; s += 4)
+          lanes(out + (b * n + a) * stride + s) = lanes(gx + a * stride + s) * lanes(gy + b * stride + s);
   }
+
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
+  /// out[a * stride + s] = profile(p[s] - (c[s] + a)) for a < n.
+  void profiles(const float* p, const float* c, int n, size_t stride, float* out) const {
+    const float r = radius();
+    for (size_t s = 0; s < stride; s += 4)
+      for (int a = 0; a < n; ++a) {
+        const Lanes d = lanes(p + s) - (lanes(c + s) + static_cast<float>(a));
+        Lanes g;
+        if constexpr (requires(const Derived& f, const Lanes& l) { f.g4(l); }) g = self().g4(d);
+        else
+          for (int l = 0; l < 4; ++l) g[l] = self().g(d[l]);
+        lanes(out + a * stride + s) = keepLe(d.abs(), r, g);
+      }
+  }
 };
 
 /// f(dx, dy) = g(d), d = sqrt(dx^2 + dy^2) <= r; Derived::g(d) is the profile for 0 <= d <= r.
 template <class Derived>
 class RadialFilter : public Filter {
  public:
-  using Filter::Filter;
+  explicit RadialFilter(float r) : Filter(r), disc_(discBound(r)) {}
   bool radial() const final { return true; }
   float profile(float x) const final { return std::abs(x) <= radius() ? self().g(std::abs(x)) : 0.f; }
   float eval(float dx, float dy) const final {
@@ -119,26 +180,41 @@ class RadialFilter : public Filter {
         out[static_cast<size_t>(b) * nx + a] = d <= r ? self().g(d) : 0.f;
       }
   }
-  // d = sqrt(dx^2 + dy^2) exactly as eval() rounds it, 4 lanes at a time
-  void evalFootprint(float x, float y, int i0, int nx, int j0, int ny, float* out) const override {
-    const int sx = footprintStride(nx);
-    Scratch scratch(sx);
-    float* dx2 = scratch.data();
-    unitOffsets(x, i0, sx, dx2);
-    for (int k = 0; k < sx; k += 4) lanes(dx2 + k) = lanes(dx2 + k).square();
-    for (int b = 0; b < ny; ++b) {
-      const float dy = y - (static_cast<float>(j0 + b) + 0.5f), dy2 = dy * dy;
-      for (int k = 0; k < sx; k += 4)
-        lanes(out + static_cast<size_t>(b) * sx + k) = self().g4(Lanes(lanes(dx2 + k) + dy2).sqrt());
-    }
+  // squared offsets per axis, then d and g4(d) per pixel, cut to the disc as eval() rounds it
+  void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
+                 float* out) const override {
+    const size_t stride = batchStride(count);
+    Scratch scratch(2 * n * stride);
+    float *dx2 = scratch.data(), *dy2 = dx2 + n * stride;
+    squaredOffsets(x, cx, n, stride, dx2), squaredOffsets(y, cy, n, stride, dy2);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a)
+        for (size_t s = 0; s < stride; s += 4) {
+          const Lanes d2 = lanes(dx2 + a * stride + s) + lanes(dy2 + b * stride + s);
+          lanes(out + (b * n + a) * stride + s) = keepLe(d2, disc_, self().g4(sqrt4(d2)));
+        }
   }
-  /// g(d) in 4 lanes, 0 where d > r (default: lane by lane).
+  /// g(d) in 4 lanes (default: lane by lane; also called beyond r).
   Lanes g4(const Lanes& d) const {
-    const float r = radius();
     Lanes v;
-    for (int l = 0; l < 4; ++l) v[l] = d[l] <= r ? self().g(d[l]) : 0.f;
+    for (int l = 0; l < 4; ++l) v[l] = self().g(d[l]);
     return v;
   }
+
+ protected:
+  /// out[a * stride + s] = (p[s] - (c[s] + a))^2 for a < n.
+  static void squaredOffsets(const float* p, const float* c, int n, size_t stride, float* out) {
+    for (int a = 0; a < n; ++a)
+      for (size_t s = 0; s < stride; s += 4) lanes(out + a * stride + s) = (lanes(p + s) - (lanes(c + s) + float(a))).square();
+  }
+  /// The largest dx^2 + dy^2 with sqrt(dx^2 + dy^2) <= r in float (the disc test without the sqrt).
+  static float discBound(float r) {
+    float s = r * r;
+    while (s > 0 && !(std::sqrt(s) <= r)) s = std::nextafter(s, 0.f);
+    while (std::sqrt(std::nextafter(s, kInf)) <= r) s = std::nextafter(s, kInf);
+    return s;
+  }
+  float disc_;  ///< discBound(radius())
 
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }

@@ -15,19 +15,25 @@ namespace {
 
 class HannFilter final : public SeparableFilter<HannFilter> {
  public:
-  HannFilter(float r, double tau) : SeparableFilter(r), tau_(tau), scale_(static_cast<float>(tau / r)),
-                                    window_(kPi / r) {
+  HannFilter(float r, double tau)
+      : SeparableFilter(r), tau_(tau), scale_(static_cast<float>(tau / r)), invR_(1.f / r) {
     const double i1 = integrate([&](double x) { return g(static_cast<float>(x)); }, -r, r, 1024);
     integral_ = i1 * i1;
   }
-  float g(float x) const { return sinc(x * scale_) * 0.5f * (1.f + std::cos(window_ * x)); }
+  // by trig::sincPi and cosPi, the same code for g and g4 (bit for bit)
+  template <class T>
+  T gt(const T& x) const {
+    return trig::sincPi(T(x * scale_)) * (0.5f * (1.f + trig::cosPi(T(x * invR_))));
+  }
+  float g(float x) const { return gt(x); }
+  Lanes g4(const Lanes& x) const { return gt(x); }
   double integral() const override { return integral_; }
   std::string name() const override { return "hann"; }
   FilterParams params() const override { return {{"tau", tau_}}; }
 
  private:
   double tau_;
-  float scale_, window_;
+  float scale_, invR_;
   double integral_;
 };
 

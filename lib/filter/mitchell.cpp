@@ -29,6 +29,11 @@ class MitchellFilter final : public SeparableFilter<MitchellFilter> {
     if (t < 2.f) return q0_ + t * (q1_ + t * (q2_ + t * q3_));
     return 0.f;
   }
+  Lanes g4(const Lanes& x) const {  // both pieces, then the choice: bit for bit g
+    const Lanes t = (x * scale_).abs();
+    const Lanes inner = p0_ + t * t * (p2_ + t * p3_), outer = q0_ + t * (q1_ + t * (q2_ + t * q3_));
+    return ifLess(t, 1.f, inner, ifLess(t, 2.f, outer, Lanes::Zero()));
+  }
   double integral() const override { return 0.25 * double(radius()) * radius(); }
   std::string name() const override { return name_; }
   FilterParams params() const override {

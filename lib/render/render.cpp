@@ -45,46 +45,42 @@ void requireCamera(const Tracer& tracer) {
   if (!tracer.scene().camera) throw InputError(tracer.scene().path + ": the scene has no camera");
 }
 
-}  // namespace
 
-SampleBuffer traceSamples(const Tracer& tracer, const Sampler& sampler, int width, int height, int threads,
-                          const Progress& progress) {
+/// Traces sampler.spp() samples in every pixel; place(i, j, u, sample) sets
+/// a sample's film position and weight from the pixel's point u in [0,1)^2.
+template <class Place>
+SampleBuffer traceWith(const Tracer& tracer, const Sampler& sampler, int width, int height, int threads,
+                       const Progress& progress, Place&& place) {
   requireCamera(tracer);
   const int spp = sampler.spp();
   SampleBuffer buffer(width, height, spp);
   forEachTile(width, height, threads, progress, [&](int i, int j) {
-    std::vector<Vec2> u(spp);
+    thread_local std::vector<Vec2> u;  // one per worker thread, reused pixel after pixel
+    u.resize(spp);
     sampler.generate(i, j, u.data());
     FilmSample* out = buffer.pixel(i, j);
     for (int k = 0; k < spp; ++k) {
-      out[k].x = i + u[k].x();
-      out[k].y = j + u[k].y();
+      place(i, j, u[k], out[k]);
       out[k].L = tracer.radianceAt(out[k].x, out[k].y, width, height);
-      out[k].weight = 1.f;
     }
   });
   return buffer;
 }
+}  // namespace
+
+SampleBuffer traceSamples(const Tracer& tracer, const Sampler& sampler, int width, int height, int threads,
+                          const Progress& progress) {
+  return traceWith(tracer, sampler, width, height, threads, progress, [](int i, int j, const Vec2& u, FilmSample& s) {
+    s.x = i + u.x(), s.y = j + u.y(), s.weight = 1.f;
+  });
+}
 
 SampleBuffer traceImportanceSamples(const Tracer& tracer, const Sampler& sampler, const Filter& filter,
                                     int width, int height, int threads, const Progress& progress) {
-  requireCamera(tracer);
-  const int spp = sampler.spp();
-  SampleBuffer buffer(width, height, spp);
-  forEachTile(width, height, threads, progress, [&](int i, int j) {
-    std::vector<Vec2> u(spp);
-    sampler.generate(i, j, u.data());
-    FilmSample* out = buffer.pixel(i, j);
-    for (int k = 0; k < spp; ++k) {
-      float w = 1.f;
-      const Vec2 offset = filter.sample(u[k], w);
-      out[k].x = i + 0.5f + offset.x();
-      out[k].y = j + 0.5f + offset.y();
-      out[k].L = tracer.radianceAt(out[k].x, out[k].y, width, height);
-      out[k].weight = w;
-    }
+  return traceWith(tracer, sampler, width, height, threads, progress, [&](int i, int j, const Vec2& u, FilmSample& s) {
+    const Vec2 offset = filter.sample(u, s.weight);
+    s.x = i + 0.5f + offset.x(), s.y = j + 0.5f + offset.y();
   });
-  return buffer;
 }
 
 Image renderDepth(const Tracer& tracer, int width, int height, float dmin, float dmax, int threads) {
