@@ -15,8 +15,19 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DALIASLAB_TESTS=OFF >/d
 cmake --build build -j "$jobs"
 
 echo "== default study (resumes if interrupted: rerun the same command)"
+# A new run replaces the committed study's CSV; a run that was interrupted
+# resumes it. results/study/.running marks a run in progress.
+marker=results/study/.running
+if [ -e "$marker" ]; then
+  echo "resuming the interrupted run"
+else
+  mkdir -p results/study
+  rm -f results/study/study.csv
+  touch "$marker"
+fi
 start=$(date +%s)
 build/bin/sweep --preset default --out results/study "$@"
+rm -f "$marker"
 echo "study wall time: $(( $(date +%s) - start )) s"
 
 echo "== charts and report"
