@@ -16,6 +16,7 @@
 #include <sstream>
 
 #include "badinput/run_process.h"
+#include "scratch_dir.h"
 #include "core/error.h"
 #include "scene/scene.h"
 
@@ -76,8 +77,7 @@ std::string nestedScene(int levels, bool transforms) {
 /// Scratch folders of this test run; @GEN@ holds the generated inputs.
 const fs::path& scratch() {
   static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("aliaslab_badinput_" + std::to_string(::getpid()));
-    fs::remove_all(d);
+    const fs::path d = aliaslab::testing::scratchDir("aliaslab_badinput");
     fs::create_directories(d / "gen");
     std::ofstream(d / "gen" / "deep_groups.txt") << nestedScene(100000, false);
     std::ofstream(d / "gen" / "deep_transforms.txt") << nestedScene(100000, true);

@@ -11,6 +11,7 @@
 #include <map>
 #include <sstream>
 
+#include "scratch_dir.h"
 #include "study/csv.h"
 #include "study/sweep.h"
 
@@ -21,15 +22,7 @@ namespace {
 const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
 const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
 
-fs::path workDir() {
-  static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("aliaslab_sweep_test_" + std::to_string(::getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-  }();
-  return dir;
-}
+const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_test"); }
 
 // The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each.
 std::string tinyArgs(int threads = 2) {

@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "core/cli.h"
+#include "core/files.h"
 #include "core/error.h"
 #include "filter/filter.h"
 
@@ -94,12 +95,7 @@ int main(int argc, char** argv) {
     if (p.out.empty()) {
       std::cout << os.str();
     } else {
-      const std::string tmp = p.out + ".partial";
-      {
-        std::ofstream f(tmp);
-        if (!f || !(f << os.str()).flush()) throw FileError(p.out, "cannot write");
-      }
-      std::filesystem::rename(tmp, p.out);
+      writeTextFile(p.out, os.str());
     }
   } catch (const InputError& e) {
     std::cerr << "filterprofile: " << e.what() << "\n";

@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace aliaslab {
 
@@ -55,8 +56,7 @@ void writeImage(const std::string& path, const Image& image) {
 
   // Write beside the target, then rename: no half-written output.
   const std::filesystem::path target(path);
-  std::filesystem::path tmp = target;
-  tmp += ".partial" + target.extension().string();
+  const std::filesystem::path tmp = temporaryPathFor(path);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw FileError(path, "cannot create an image writer: " + OIIO::geterror());
   OIIO::ImageSpec spec(w, h, 3, eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);

@@ -11,6 +11,7 @@
 #include <tuple>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace aliaslab {
 
@@ -151,21 +152,9 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
 }
 
 void writeCsvFile(const std::string& path, const std::vector<std::string>& lines) {
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw FileError(path, "cannot open for writing");
-    out << csvHeader() << '\n';
-    for (const std::string& l : lines) out << l << '\n';
-    out.flush();
-    if (!out) throw FileError(path, "write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw FileError(path, "cannot move the finished CSV into place");
-  }
+  std::string text = csvHeader() + '\n';
+  for (const std::string& l : lines) text += l + '\n';
+  writeTextFile(path, text);
 }
 
 void canonicaliseCsv(const std::string& path) { writeCsvFile(path, sortCsvRows(readCsvLines(path))); }

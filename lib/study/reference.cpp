@@ -82,19 +82,6 @@ std::string gitRevision() {
   return rev.size() == 40 ? rev : "unknown";
 }
 
-void writeTextFile(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".partial";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw FileError(path, "cannot open for writing");
-    out << text;
-    if (!out.flush()) throw FileError(path, "write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw FileError(path, "cannot move the finished file into place");
-}
-
 ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
                               const ReferenceOptions& o) {
   validateReferenceOptions(o);

@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/files.h"  // writeTextFile
 #include "core/image.h"
 #include "film/film.h"
 #include "study/study_scene.h"
@@ -84,7 +85,5 @@ std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
 /// `git rev-parse HEAD` of the source tree at run time, else "unknown".
 std::string gitRevision();
 
-/// Writes text to a file atomically. Throws FileError.
-void writeTextFile(const std::string& path, const std::string& text);
 
 }  // namespace aliaslab
