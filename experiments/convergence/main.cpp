@@ -20,6 +20,7 @@
 #include "core/cli.h"
 #include "study/reference.h"
 #include "core/error.h"
+#include "core/format.h"
 #include "sampling/sampler.h"
 #include "study/convergence.h"
 
@@ -47,11 +48,7 @@ std::vector<int> sampleCounts(int maxN) {
   return ns;
 }
 
-std::string fmt(double v, const char* f = "%.3f") {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, v);
-  return buf;
-}
+std::string fmt(double v, const char* f = "%.3f") { return formatNumber(v, f); }
 
 }  // namespace
 

@@ -26,6 +26,7 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
+#include "core/format.h"
 #include "sampling/sampler.h"
 #include "study/pointset.h"
 
@@ -52,11 +53,7 @@ struct Result {
   std::vector<double> radial;
 };
 
-std::string fmt(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
+std::string fmt(double v) { return formatNumber(v, "%.6g"); }
 
 }  // namespace
 

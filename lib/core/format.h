@@ -16,10 +16,11 @@ std::string formatVector(const Eigen::DenseBase<Derived>& v) {
   return out.str();
 }
 
-/// A number as printf's %g (6 significant digits): "0.001", "1024", "2e+20".
-inline std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
+/// A number in a printf format for one double, by default %g (6 significant
+/// digits): "0.001", "1024", "2e+20".
+inline std::string formatNumber(double v, const char* format = "%g") {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, v);
   return buf;
 }
 

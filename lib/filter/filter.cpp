@@ -5,6 +5,7 @@
 
 #include "filter/filter.h"
 #include "filter/filter_impl.h"
+#include "core/format.h"
 
 namespace aliaslab {
 
@@ -23,11 +24,6 @@ namespace {
 constexpr int kSeparableCells = 2048;  // over [-r, r]: width r / 1024
 constexpr int kRadialCells = 1024;     // over [0, r]: width r / 1024
 
-std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", v);
-  return buf;
-}
 
 /// Cell index c with cdf[c] <= t < cdf[c+1] (skips empty cells), and the position in it in [0, 1).
 int findCell(const std::vector<double>& cdf, double t, double& within) {
@@ -64,8 +60,8 @@ void Filter::evalBatch(int count, const float* x, const float* y, const float* c
 }
 
 std::string Filter::describe() const {
-  std::string s = name() + " r=" + formatNumber(radius());
-  for (const auto& [key, value] : params()) s += " " + key + "=" + formatNumber(value);
+  std::string s = name() + " r=" + formatNumber(radius(), "%.4g");
+  for (const auto& [key, value] : params()) s += " " + key + "=" + formatNumber(value, "%.4g");
   return s;
 }
 

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "film/visualize.h"
 
 namespace aliaslab {
@@ -19,9 +20,8 @@ namespace aliaslab {
 namespace fs = std::filesystem;
 
 std::string configurationImageBase(const CsvRow& r) {
-  char radius[32];
-  std::snprintf(radius, sizeof radius, "%g", r.radius);
-  return r.sampler + "-spp" + std::to_string(r.spp) + "-" + r.filter + "-r" + radius + "-" + r.reconstruction;
+  return r.sampler + "-spp" + std::to_string(r.spp) + "-" + r.filter + "-r" + formatNumber(r.radius) + "-" +
+         r.reconstruction;
 }
 
 void writeConfigurationImages(const std::string& dir, const std::string& base, const Image& seed0,

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/format.h"
 
 namespace aliaslab {
 
@@ -41,11 +42,7 @@ namespace {
 enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
            kRefSpp = 15 };
 
-std::string real(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+std::string real(double v) { return formatNumber(v, "%.9g"); }
 
 std::string quoted(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;

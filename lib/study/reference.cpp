@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/format.h"
 #include "filter/filter.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
@@ -37,11 +38,7 @@ std::string jsonString(const std::string& s) {
   return out + "\"";
 }
 
-std::string jsonNumber(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
+std::string jsonNumber(double v) { return formatNumber(v, "%.9g"); }
 
 // The batch size actually used: at most half the total, so there are two halves.
 int effectiveBatch(const ReferenceOptions& o) { return std::min(o.batchSpp, o.spp / 2); }
