@@ -211,6 +211,33 @@ TEST(Film, AccumulatorOverBatchesEqualsReconstructionOfUnion) {
   EXPECT_LT(maxDiff(acc.resolve(1).image, reconstruct(all, *lanczos, ReconMode::WeightedAverage).image), 1e-6);
 }
 
+TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
+  // filters of equal radius share one pass (footprints once, then each filter's weights): the result must be
+  // exactly each filter's own reconstruct(), including a unit-weight box, a radius wider than a block
+  // (sample by sample) and a radius no other filter has
+  const SampleBuffer b = makeSamples(37, 29, 6, 21, noisy);
+  std::vector<std::unique_ptr<Filter>> owned;
+  for (const auto& name : filterNames()) owned.push_back(makeFilter(name, 1.5f));
+  owned.push_back(makeFilter("box", 0.5f)), owned.push_back(makeFilter("tent", 9.f)), owned.push_back(makeFilter("lanczos", 9.f));
+  owned.push_back(makeFilter("mitchell", 2.3f));
+  std::vector<const Filter*> filters;
+  for (const auto& f : owned) filters.push_back(f.get());
+  for (int threads : {1, 3}) {
+    Accumulator acc(37, 29, filters);
+    std::vector<double> seconds;
+    acc.add(b, threads, &seconds);
+    ASSERT_EQ(seconds.size(), filters.size());
+    for (size_t k = 0; k < filters.size(); ++k) {
+      const Reconstruction own = reconstruct(b, *filters[k], ReconMode::WeightedAverage, 1), fused = acc.resolve(k);
+      EXPECT_EQ(maxDiff(own.image, fused.image), 0.0) << filters[k]->describe() << " threads " << threads;
+      EXPECT_EQ(own.stats.undefinedPixels, fused.stats.undefinedPixels);
+      EXPECT_EQ(own.stats.negativePixels, fused.stats.negativePixels);
+      EXPECT_EQ(own.stats.nonFiniteSamples, fused.stats.nonFiniteSamples);
+      EXPECT_GE(seconds[k], 0.0);
+    }
+  }
+}
+
 TEST(Film, IdenticalForAnyThreadCount) {
   auto f = makeFilter("mitchell", 2.3f);
   const SampleBuffer b = makeSamples(40, 37, 4, 3, noisy);

@@ -1,5 +1,9 @@
 // The streaming weighted-average accumulator (references without stored samples).
+#include <algorithm>
+#include <chrono>
 #include <stdexcept>
+
+#include "core/parallel.h"
 
 #include "film/film_impl.h"
 
@@ -12,15 +16,28 @@ Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filte
   plain_.assign(n, 0.0);
 }
 
-void Accumulator::add(const SampleBuffer& batch, int threads) {
+void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double>* filterSeconds) {
   if (batch.width() != width_ || batch.height() != height_)
     throw std::invalid_argument("Accumulator::add: batch is " + std::to_string(batch.width()) + "x" +
                                 std::to_string(batch.height()) + ", accumulator " + std::to_string(width_) + "x" +
                                 std::to_string(height_));
-  nonFinite_ += filmimpl::countNonFinite(batch);
-  filmimpl::addPlainSums(batch, plain_.data());
-  for (size_t k = 0; k < filters_.size(); ++k) filmimpl::splatWeighted(batch, *filters_[k], sums_[k].data(), threads);
+  const auto t0 = std::chrono::steady_clock::now();
+  nonFinite_ += filmimpl::addPlainSums(batch, plain_.data());
+  std::vector<double*> sums;
+  for (auto& s : sums_) sums.push_back(s.data());
+  std::vector<double> own(filters_.size(), 0.0);
+  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr);
   samplesAdded_ += batch.samples().size();
+  if (filterSeconds && !filters_.empty()) {
+    // own CPU time over the threads the bands could use approximates wall time; the rest is shared equally
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const int used = std::max(1, std::min(resolveThreads(threads), (height_ + 31) / 32));
+    double ownWall = 0;
+    for (double& o : own) ownWall += (o /= used);
+    const double shared = std::max(0.0, wall - ownWall) / static_cast<double>(filters_.size());
+    filterSeconds->resize(filters_.size());
+    for (size_t k = 0; k < own.size(); ++k) (*filterSeconds)[k] = own[k] + shared;
+  }
 }
 
 Reconstruction Accumulator::resolve(size_t k) const {

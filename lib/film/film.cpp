@@ -82,7 +82,7 @@ Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool cl
   const int W = samples.width(), H = samples.height(), spp = samples.spp();
   const int R = classic ? classicSupport(filter) : 0;
   std::vector<double> sums(4 * size_t(W) * H, 0.0), plain(4 * size_t(W) * H, 0.0);
-  addPlainSums(samples, plain.data());
+  const size_t nonFinite = addPlainSums(samples, plain.data());
   parallelFor(H, threads, [&](int j) {
     for (int i = 0; i < W; ++i) {
       double* out = &sums[4 * (size_t(j) * W + i)];
@@ -100,7 +100,7 @@ Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool cl
   });
   const double tol = classic ? std::max(1e-8 * std::abs(filter.evalClassic(0, 0)), 1e-30)
                              : std::max(1e-8 * filter.absIntegral(), 1e-30);
-  return resolveSums(W, H, sums.data(), plain.data(), tol, countNonFinite(samples));
+  return resolveSums(W, H, sums.data(), plain.data(), tol, nonFinite);
 }
 
 }  // namespace
@@ -110,10 +110,10 @@ Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, Re
     case ReconMode::WeightedAverage: {
       const size_t n = 4 * size_t(samples.width()) * samples.height();
       std::vector<double> sums(n, 0.0), plain(n, 0.0);
-      addPlainSums(samples, plain.data());
+      const size_t nonFinite = addPlainSums(samples, plain.data());
       splatWeighted(samples, filter, sums.data(), threads);
       return resolveSums(samples.width(), samples.height(), sums.data(), plain.data(), weightTolerance(filter),
-                         countNonFinite(samples));
+                         nonFinite);
     }
     case ReconMode::Classic: return gather(samples, filter, true, threads);
     case ReconMode::ImportanceSampled: return gather(samples, filter, false, threads);

@@ -100,11 +100,19 @@ Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, Re
 /// once, in double precision, without storing samples: memory is
 /// width x height x filters x 4 doubles. add() may be called with any number
 /// of batches (each a SampleBuffer of the full image); the result equals
-/// reconstructing the union of all batches. Deterministic for any thread count.
+/// reconstructing the union of all batches, and one add() then resolve(k)
+/// equals reconstruct(batch, filter k, WeightedAverage) bit for bit. The
+/// work that does not depend on the filter (finiteness, the fallback sums,
+/// each sample's footprint for a radius) is done once per batch or radius,
+/// so one more filter costs only its weights and accumulation. The sweep
+/// reconstructs every weighted-average row of a sample set this way.
+/// Deterministic for any thread count.
 class Accumulator {
  public:
   Accumulator(int width, int height, std::vector<const Filter*> filters);
-  void add(const SampleBuffer& batch, int threads = 0);
+  /// filterSeconds (if not null): resized to the filter count, filter k's share of this call's wall time:
+  /// its own weights and accumulation (CPU time over the threads used) plus an equal share of the rest.
+  void add(const SampleBuffer& batch, int threads = 0, std::vector<double>* filterSeconds = nullptr);
   /// Resolves filter k's image (same outcomes and counts as reconstruct()).
   Reconstruction resolve(size_t k) const;
   size_t samplesAdded() const { return samplesAdded_; }

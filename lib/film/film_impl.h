@@ -1,6 +1,8 @@
 // Internal pieces of the film shared by reconstruct() and the Accumulator
 // (not an interface: only lib/film includes this).
 #pragma once
+#include <vector>
+
 #include "film/film.h"
 
 namespace aliaslab::filmimpl {
@@ -9,7 +11,6 @@ namespace aliaslab::filmimpl {
 inline bool finiteSample(const FilmSample& s) {
   return (s.x - s.x) + (s.y - s.y) + (s.L[0] - s.L[0]) + (s.L[1] - s.L[1]) + (s.L[2] - s.L[2]) == 0;
 }
-size_t countNonFinite(const SampleBuffer& samples);
 
 /// Adds (f L, f) of every finite sample into `sums` (r, g, b, weight per
 /// pixel, width x height) for every pixel whose centre is within the
@@ -24,8 +25,18 @@ size_t countNonFinite(const SampleBuffer& samples);
 void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads,
                    bool allowAvx2 = true);
 
-/// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel).
-void addPlainSums(const SampleBuffer& samples, double* plain);
+/// splatWeighted for several filters at once, sums[k] for filters[k], each
+/// exactly as on its own: filters of equal radius share one pass, so each
+/// sample's finiteness test and footprint are computed once per radius and
+/// each filter adds only its weights and accumulation. ownSeconds (if not
+/// null, K entries, added to): each filter's own part of that work, in
+/// seconds summed over the threads.
+void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
+              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true);
+
+/// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel); returns the
+/// number of samples skipped as non-finite.
+size_t addPlainSums(const SampleBuffer& samples, double* plain);
 
 /// Turns weighted sums into an image with the documented degenerate outcomes.
 Reconstruction resolveSums(int width, int height, const double* sums, const double* plain, double tolerance,

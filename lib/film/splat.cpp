@@ -10,8 +10,12 @@
 // CPU has it, sums bit for bit like the SSE one. A sample whose footprint is
 // wider than n (on a pixel boundary) is added on its own with eval(). The
 // band is then added to the image's sums: every pixel's sum runs in sample
-// order, for any thread count.
+// order, for any thread count. Filters of one radius share the pass (one
+// footprint per sample, one batch, then each filter's weights and
+// accumulation into its own band buffer), which is what makes one more
+// filter cheap in a sweep or a reference.
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -25,6 +29,7 @@ namespace {
 
 constexpr int kBand = 32;    // output rows per parallel work item
 constexpr int kBatch = 128;  // samples per Filter::evalBatch call (a multiple of 4)
+using Clock = std::chrono::steady_clock;
 constexpr int kMaxBlock = 16; // largest n x n block (r <= 8); wider footprints sample by sample
 
 /// (r, g, b, weight) in double: one AVX register, two SSE ones (aligned to 32 also without AVX).
@@ -116,54 +121,64 @@ Kernel pickKernel(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
 
 }  // namespace
 
-size_t countNonFinite(const SampleBuffer& samples) {
-  size_t n = 0;
-  for (const FilmSample& s : samples.samples()) n += !finiteSample(s);
-  return n;
-}
-
-void addPlainSums(const SampleBuffer& samples, double* plain) {
+size_t addPlainSums(const SampleBuffer& samples, double* plain) {
   const int spp = samples.spp();
+  size_t skipped = 0;
   for (int j = 0; j < samples.height(); ++j)
     for (int i = 0; i < samples.width(); ++i) {
       const FilmSample* s = samples.pixel(i, j);
       double* p = plain + 4 * (static_cast<size_t>(j) * samples.width() + i);
       for (int k = 0; k < spp; ++k)
         if (finiteSample(s[k])) p[0] += s[k].L[0], p[1] += s[k].L[1], p[2] += s[k].L[2], p[3] += 1;
+        else ++skipped;
     }
+  return skipped;
 }
 
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
-  const int W = samples.width(), H = samples.height();
+namespace {
+
+/// Per source row (the samples of one row of pixels): the least and greatest y (NaN ignored).
+struct RowSpans {
+  std::vector<float> ymin, ymax;
+};
+
+/// The fused pass for filters that share one radius (see splatAll).
+void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
+                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds) {
+  const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const size_t rowSamples = static_cast<size_t>(W) * samples.spp();
-  const float r = filter.radius();
+  const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
   const Kernel kernel = pickKernel(n, allowAvx2, std::make_integer_sequence<int, 6>());
-  const bool unit = filter.unitWeights();
 
-  // per source row: the output rows its samples can reach (wider by one; NaN ignored)
+  // per source row: the output rows its samples can reach (wider by one)
   std::vector<int> reachLo(H), reachHi(H);
-  parallelFor(H, threads, [&](int sj) {
-    float ymin = kInf, ymax = -kInf;
-    const FilmSample* row = samples.pixel(0, sj);
-    for (size_t k = 0; k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
-    reachLo[sj] = static_cast<int>(std::clamp(ymin - r - 1, -1.f, float(H))) - 1;
-    reachHi[sj] = static_cast<int>(std::clamp(ymax + r + 1, -1.f, float(H)));
-  });
+  for (int sj = 0; sj < H; ++sj) {
+    reachLo[sj] = static_cast<int>(std::clamp(spans.ymin[sj] - r - 1, -1.f, float(H))) - 1;
+    reachHi[sj] = static_cast<int>(std::clamp(spans.ymax[sj] + r + 1, -1.f, float(H)));
+  }
 
   const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
+  std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
   parallelFor(bands, threads, [&](int band) {
     const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
-    std::vector<Sum> buffer(static_cast<size_t>(kBand + pad) * width);
+    std::vector<std::vector<Sum>> buffer(K, std::vector<Sum>(static_cast<size_t>(kBand + pad) * width));
     std::vector<float> w(static_cast<size_t>(pad) * pad * kBatch);
+    double* own = ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr;
     auto batch = std::make_unique<Batch>();
     Batch& b = *batch;
     int count = 0;
+    // each filter's own work on the batch: its weights (none for unitWeights) and the accumulation
     auto flush = [&] {
       if (!count) return;
       for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
-      if (!unit) filter.evalBatch(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
-      kernel(b, count, unit ? nullptr : w.data(), n, buffer.data(), width);
+      for (int f = 0; f < K; ++f) {
+        const auto t0 = own ? Clock::now() : Clock::time_point();
+        const bool unit = filters[f]->unitWeights();
+        if (!unit) filters[f]->evalBatch(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
+        kernel(b, count, unit ? nullptr : w.data(), n, buffer[f].data(), width);
+        if (own) own[f] += std::chrono::duration<double>(Clock::now() - t0).count();
+      }
       count = 0;
     };
     for (int sj = 0; sj < H; ++sj) {
@@ -179,11 +194,13 @@ void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* su
         const F4 L = {q.L[0], q.L[1], q.L[2], 1.f};
         if (ihi - ilo >= pad || jhi - jlo >= pad) {  // wider than a block: on its own, in sample order
           flush();
-          for (int j = jlo; j <= jhi; ++j)
-            for (int i = ilo; i <= ihi; ++i)
-              buffer[(j - j0) * width + i].v +=
-                  static_cast<double>(filter.eval(q.x - (static_cast<float>(i) + 0.5f), q.y - (static_cast<float>(j) + 0.5f))) *
-                  __builtin_convertvector(L, V4);
+          for (int f = 0; f < K; ++f)
+            for (int j = jlo; j <= jhi; ++j)
+              for (int i = ilo; i <= ihi; ++i)
+                buffer[f][(j - j0) * width + i].v +=
+                    static_cast<double>(filters[f]->eval(q.x - (static_cast<float>(i) + 0.5f),
+                                                         q.y - (static_cast<float>(j) + 0.5f))) *
+                    __builtin_convertvector(L, V4);
           continue;
         }
         b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
@@ -193,10 +210,48 @@ void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* su
       }
     }
     flush();
-    for (int j = j0; j < j1; ++j)
-      for (int i = 0; i < W; ++i)
-        for (int c = 0; c < 4; ++c) sums[4 * (static_cast<size_t>(j) * W + i) + c] += buffer[(j - j0) * width + i].v[c];
+    for (int f = 0; f < K; ++f)
+      for (int j = j0; j < j1; ++j)
+        for (int i = 0; i < W; ++i)
+          for (int c = 0; c < 4; ++c)
+            sums[f][4 * (static_cast<size_t>(j) * W + i) + c] += buffer[f][(j - j0) * width + i].v[c];
   });
+  if (ownSeconds)
+    for (int band = 0; band < bands; ++band)
+      for (int f = 0; f < K; ++f) ownSeconds[f] += ownBand[static_cast<size_t>(band) * K + f];
+}
+
+}  // namespace
+
+void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
+              int threads, double* ownSeconds, bool allowAvx2) {
+  const int H = samples.height();
+  const size_t rowSamples = static_cast<size_t>(samples.width()) * samples.spp();
+  RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
+  parallelFor(H, threads, [&](int sj) {
+    float ymin = kInf, ymax = -kInf;
+    const FilmSample* row = samples.pixel(0, sj);
+    for (size_t k = 0; k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
+    spans.ymin[sj] = ymin, spans.ymax[sj] = ymax;
+  });
+  std::vector<bool> done(filters.size(), false);
+  for (size_t first = 0; first < filters.size(); ++first) {
+    if (done[first]) continue;
+    std::vector<const Filter*> group;
+    std::vector<double*> groupSums;
+    std::vector<size_t> index;
+    for (size_t k = first; k < filters.size(); ++k)
+      if (!done[k] && filters[k]->radius() == filters[first]->radius())
+        group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
+    std::vector<double> own(group.size(), 0.0);
+    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr);
+    if (ownSeconds)
+      for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
+  }
+}
+
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
+  splatAll(samples, {&filter}, {sums}, threads, nullptr, allowAvx2);
 }
 
 }  // namespace aliaslab::filmimpl

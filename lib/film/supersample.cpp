@@ -37,11 +37,10 @@ Reconstruction reconstructSupersample(const SampleBuffer& samples, int threads) 
                                    std::to_string(spp));
   const int fw = W * k, fh = H * k;
   Reconstruction out{Image(W, H), {}};
-  out.stats.nonFiniteSamples = countNonFinite(samples);
 
   // fine image by position: mean of the samples in each cell
   std::vector<double> cell(4 * size_t(fw) * fh, 0.0), plain(4 * size_t(W) * H, 0.0);
-  addPlainSums(samples, plain.data());
+  out.stats.nonFiniteSamples = addPlainSums(samples, plain.data());
   for (const FilmSample& s : samples.samples()) {
     if (!finiteSample(s)) continue;
     const int fx = std::clamp(static_cast<int>(std::floor(std::clamp(s.x * k, -1.f, float(fw)))), 0, fw - 1);

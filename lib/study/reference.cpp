@@ -62,7 +62,8 @@ void validateReferenceOptions(const ReferenceOptions& o) {
 }
 
 std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& o) {
-  uint64_t h = hashWords(scene.contentHash, o.spp, o.seed, effectiveBatch(o));
+  constexpr uint64_t kReferenceAlgorithm = 2;  // see reference.h
+  uint64_t h = hashWords(scene.contentHash, o.spp, o.seed, effectiveBatch(o), kReferenceAlgorithm);
   h = hashBytes(filterDescribe, h);
   h = hashBytes(o.sampler, h);
   return hex16(h);

@@ -14,7 +14,10 @@
 //
 // The cache key hashes the scene's content hash (scene and OBJ bytes, size,
 // tracing flags), the filter's describe(), refSpp, the sampler, the seed and
-// the batch size. Each reference is stored as <cache>/<key>.exr beside
+// the batch size, and kReferenceAlgorithm, a number raised whenever a code
+// change alters reference pixels (so a cache made by older code is not
+// reused; 2 since the batched splat, which moved Gaussian and
+// Blackman-Harris weights by float ulps). Each reference is stored as <cache>/<key>.exr beside
 // <key>.json (its manifest). cachedReferences() loads what is there and
 // renders the missing ones together in one pass; files are written to a
 // temporary name and renamed, so concurrent shards can share a cache.

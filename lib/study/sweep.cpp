@@ -190,8 +190,23 @@ SweepSummary runSweep(const StudyConfig& config) {
           const double traceMs = msSince(t0);
           sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
           ++sum.sampleSetsTraced;
+          // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
+          std::vector<Pending*> weighted;
+          std::vector<const Filter*> filters;
+          for (Pending& p : rows)
+            if (p.mode == ReconMode::WeightedAverage) weighted.push_back(&p), filters.push_back(p.filter.get());
+          if (!weighted.empty()) {
+            Accumulator acc(scene->width, scene->height, filters);
+            std::vector<double> seconds;
+            acc.add(samples, threads, &seconds);
+            for (size_t i = 0; i < weighted.size(); ++i) {
+              t0 = Clock::now();
+              Reconstruction r = acc.resolve(i);
+              keep(*weighted[i], std::move(r), traceMs, 1000.0 * seconds[i] + msSince(t0));
+            }
+          }
           for (Pending& p : rows) {
-            if (p.mode == ReconMode::ImportanceSampled) continue;
+            if (p.mode == ReconMode::ImportanceSampled || p.mode == ReconMode::WeightedAverage) continue;
             t0 = Clock::now();
             Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
             keep(p, std::move(r), traceMs, msSince(t0));

@@ -7,9 +7,16 @@
 //   OneMore/<scene>/<filter>_r<r>     what the sweep does per extra row and
 //                                     seed: reconstruct() (weighted average)
 //                                     and the MetricAccumulator update
+//   Sweep15/<scene>                   the sweep's way: the default study's 15
+//                                     weighted pairs (box, tent, gaussian,
+//                                     mitchell, lanczos x r = 0.5, 1, 2) from
+//                                     one Accumulator pass that shares each
+//                                     radius's footprints, then resolve and
+//                                     metrics per pair
 // Each OneMore run reports extra_cost = its time / the Trace time of the
 // same scene measured just before it in the same run (the Trace benchmark
-// of a scene is registered, so it runs, before that scene's OneMore ones).
+// of a scene is registered, so it runs, before that scene's OneMore ones);
+// Sweep15 reports extra_avg (mean pair) and three pairs' own extra cost.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -86,6 +93,45 @@ void oneMore(benchmark::State& state, const std::string& path, const std::string
   state.SetLabel(filter->describe());
 }
 
+/// The default study's 15 weighted (filter, radius) pairs of one sample set as the sweep runs them: one
+/// Accumulator pass (shared footprints per radius), then resolve and the metric update per pair. Each pair's
+/// cost is its share from Accumulator::add (own weights and accumulation plus an equal part of the shared
+/// work) plus its resolve and metrics; extra_avg = mean pair cost / trace; extra_<filter>_r<r>: three pairs' own.
+void sweepPairs(benchmark::State& state, const std::string& path) {
+  Workload& w = workload(path);
+  const char* names[] = {"box", "tent", "gaussian", "mitchell", "lanczos"};
+  std::vector<std::unique_ptr<Filter>> owned;
+  std::vector<const Filter*> filters;
+  std::vector<std::string> labels;
+  for (float r : {0.5f, 1.f, 2.f})
+    for (const char* name : names) {
+      owned.push_back(makeFilter(name, r)), filters.push_back(owned.back().get());
+      char label[48];
+      std::snprintf(label, sizeof label, "extra_%s_r%g", name, r);
+      labels.push_back(label);
+    }
+  const Image stand = reconstruct(w.samples, *filters[0], ReconMode::WeightedAverage, 1).image;
+  std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(stand, stand));
+  std::vector<double> pairSeconds(filters.size(), 0.0), seconds;
+  for (auto _ : state) {
+    Accumulator acc(w.scene->width, w.scene->height, filters);
+    acc.add(w.samples, 1, &seconds);
+    for (size_t k = 0; k < filters.size(); ++k) {
+      const auto t0 = std::chrono::steady_clock::now();
+      metrics[k].add(acc.resolve(k).image);
+      pairSeconds[k] += seconds[k] + aliaslab::seconds(t0);
+    }
+  }
+  if (w.traceSeconds <= 0) return;
+  const double per = static_cast<double>(state.iterations()) * w.traceSeconds;
+  double total = 0;
+  for (size_t k = 0; k < filters.size(); ++k) total += pairSeconds[k];
+  state.counters["extra_avg"] = total / static_cast<double>(filters.size()) / per;
+  for (size_t k = 0; k < filters.size(); ++k)
+    if (labels[k] == "extra_box_r0.5" || labels[k] == "extra_tent_r1" || labels[k] == "extra_lanczos_r2")
+      state.counters[labels[k]] = pairSeconds[k] / per;
+}
+
 }  // namespace
 }  // namespace aliaslab
 
@@ -102,6 +148,7 @@ int main(int argc, char** argv) {
       std::snprintf(label, sizeof label, "OneMore/%s/%s_r%g", stem.c_str(), name, radius);
       benchmark::RegisterBenchmark(label, oneMore, path, std::string(name), radius)->Unit(benchmark::kMillisecond);
     }
+    benchmark::RegisterBenchmark(("Sweep15/" + stem).c_str(), sweepPairs, path)->Unit(benchmark::kMillisecond);
   }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
