@@ -31,7 +31,7 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
   if (filterSeconds && !filters_.empty()) {
     // own CPU time over the threads the bands could use approximates wall time; the rest is shared equally
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const int used = std::max(1, std::min(resolveThreads(threads), (height_ + 31) / 32));
+    const int used = std::max(1, std::min(resolveThreads(threads), (height_ + filmimpl::kBand - 1) / filmimpl::kBand));
     double ownWall = 0;
     for (double& o : own) ownWall += (o /= used);
     const double shared = std::max(0.0, wall - ownWall) / static_cast<double>(filters_.size());

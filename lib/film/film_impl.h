@@ -12,6 +12,9 @@ inline bool finiteSample(const FilmSample& s) {
   return (s.x - s.x) + (s.y - s.y) + (s.L[0] - s.L[0]) + (s.L[1] - s.L[1]) + (s.L[2] - s.L[2]) == 0;
 }
 
+/// Output rows per parallel work item of the splat (a band).
+constexpr int kBand = 32;
+
 /// Adds (f L, f) of every finite sample into `sums` (r, g, b, weight per
 /// pixel, width x height) for every pixel whose centre is within the
 /// support: the fast splat, banded over output rows so each pixel's sum

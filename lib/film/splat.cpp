@@ -27,7 +27,6 @@
 namespace aliaslab::filmimpl {
 namespace {
 
-constexpr int kBand = 32;    // output rows per parallel work item
 constexpr int kBatch = 128;  // samples per Filter::evalBatch call (a multiple of 4)
 using Clock = std::chrono::steady_clock;
 constexpr int kMaxBlock = 16; // largest n x n block (r <= 8); wider footprints sample by sample
