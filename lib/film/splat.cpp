@@ -19,8 +19,11 @@
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <new>
 #include <utility>
 #include <vector>
+
+#include <sys/mman.h>
 
 #include "core/parallel.h"
 #include "film/film_impl.h"
@@ -56,6 +59,28 @@ inline void centresWithin(float p, float r, int& lo, int& hi) {
   lo = index(std::ceil(p - 0.5f - r)) - 1, hi = index(std::floor(p - 0.5f + r)) + 1;
   for (int step = 0; step < 2; ++step) lo += !inside(p, r, lo), hi -= !inside(p, r, hi);
 }
+
+/// n zeroed Sums in pages of their own, returned to the system when destroyed. The band buffers of a
+/// fused pass (K at once per thread) held through the heap raised a 256 x 256 reference's peak by 4-9 MB:
+/// glibc kept the freed blocks (results/study_speed.md).
+class SumPages {
+ public:
+  explicit SumPages(size_t n) : n_(n), bytes_(std::max<size_t>(n * sizeof(Sum), 1)) {
+    void* p = ::mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) throw std::bad_alloc();
+    data_ = static_cast<Sum*>(p);
+    std::uninitialized_value_construct_n(data_, n);
+  }
+  SumPages(const SumPages&) = delete;
+  SumPages& operator=(const SumPages&) = delete;
+  ~SumPages() { ::munmap(data_, bytes_); }
+  Sum* data() { return data_; }
+  void clear() { std::fill(data_, data_ + n_, Sum{}); }
+
+ private:
+  size_t n_, bytes_;
+  Sum* data_ = nullptr;
+};
 
 /// Samples waiting for one evalBatch call (padded to a multiple of 4).
 struct Batch {
@@ -161,11 +186,10 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
   const size_t bandSize = static_cast<size_t>(kBand + pad) * width;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  // Work space (K band buffers, weights, a batch) reused from band to band: at most one per thread is ever
-  // allocated. (A fresh allocation per band let glibc's heap keep every band's buffers: +9 MB peak in a
-  // 256 x 256 reference with 4 filters per radius.)
+  // Work space (K band buffers, weights, a batch) reused from band to band: at most one per thread.
   struct Workspace {
-    std::vector<Sum> buffer;  // K band buffers, one after the other
+    explicit Workspace(size_t sums, size_t weights) : buffer(sums), w(weights) {}
+    SumPages buffer;  // K band buffers, one after the other
     std::vector<float> w;
     Batch batch;
   };
@@ -178,12 +202,8 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       std::lock_guard lock(poolMutex);
       if (!pool.empty()) space = std::move(pool.back()), pool.pop_back();
     }
-    if (!space) {
-      space = std::make_unique<Workspace>();
-      space->buffer.resize(K * bandSize), space->w.resize(static_cast<size_t>(pad) * pad * kBatch);
-    } else {
-      std::fill(space->buffer.begin(), space->buffer.end(), Sum{});
-    }
+    if (space) space->buffer.clear();
+    else space = std::make_unique<Workspace>(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
     auto buffer = [&](int f) { return space->buffer.data() + f * bandSize; };
     std::vector<float>& w = space->w;
     double* own = ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr;
