@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <mutex>
 #include <new>
@@ -75,7 +76,8 @@ class SumPages {
   SumPages& operator=(const SumPages&) = delete;
   ~SumPages() { ::munmap(data_, bytes_); }
   Sum* data() { return data_; }
-  void clear() { std::fill(data_, data_ + n_, Sum{}); }
+  size_t size() const { return n_; }
+  void clear(size_t n) { std::fill(data_, data_ + std::min(n, n_), Sum{}); }
 
  private:
   size_t n_, bytes_;
@@ -162,6 +164,40 @@ size_t addPlainSums(const SampleBuffer& samples, double* plain) {
 
 namespace {
 
+/// A thread's work space in a pass: K band buffers one after the other, the weights, a batch.
+struct Workspace {
+  Workspace(size_t sums, size_t weights) : buffer(sums), w(weights) {}
+  SumPages buffer;
+  std::vector<float> w;
+  Batch batch;
+};
+
+/// Work spaces reused from band to band and from radius to radius within one splatAll: at most one per
+/// thread, as large as the largest pass needs.
+class WorkspacePool {
+ public:
+  /// A work space with at least `sums` zeroed Sums and `weights` floats.
+  std::unique_ptr<Workspace> take(size_t sums, size_t weights) {
+    std::unique_ptr<Workspace> space;
+    {
+      std::lock_guard lock(mutex_);
+      if (!free_.empty()) space = std::move(free_.back()), free_.pop_back();
+    }
+    if (!space || space->buffer.size() < sums) return std::make_unique<Workspace>(sums, weights);
+    space->buffer.clear(sums);
+    if (space->w.size() < weights) space->w.resize(weights);
+    return space;
+  }
+  void give(std::unique_ptr<Workspace> space) {
+    std::lock_guard lock(mutex_);
+    free_.push_back(std::move(space));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::unique_ptr<Workspace>> free_;
+};
+
 /// Per source row (the samples of one row of pixels): the least and greatest y (NaN ignored).
 struct RowSpans {
   std::vector<float> ymin, ymax;
@@ -169,7 +205,8 @@ struct RowSpans {
 
 /// The fused pass for filters that share one radius (see splatAll).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds) {
+                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
+                     WorkspacePool& pool) {
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const size_t rowSamples = static_cast<size_t>(W) * samples.spp();
   const float r = filters[0]->radius();
@@ -186,24 +223,9 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
   const size_t bandSize = static_cast<size_t>(kBand + pad) * width;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  // Work space (K band buffers, weights, a batch) reused from band to band: at most one per thread.
-  struct Workspace {
-    explicit Workspace(size_t sums, size_t weights) : buffer(sums), w(weights) {}
-    SumPages buffer;  // K band buffers, one after the other
-    std::vector<float> w;
-    Batch batch;
-  };
-  std::mutex poolMutex;
-  std::vector<std::unique_ptr<Workspace>> pool;
   parallelFor(bands, threads, [&](int band) {
     const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
-    std::unique_ptr<Workspace> space;
-    {
-      std::lock_guard lock(poolMutex);
-      if (!pool.empty()) space = std::move(pool.back()), pool.pop_back();
-    }
-    if (space) space->buffer.clear();
-    else space = std::make_unique<Workspace>(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
+    std::unique_ptr<Workspace> space = pool.take(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
     auto buffer = [&](int f) { return space->buffer.data() + f * bandSize; };
     std::vector<float>& w = space->w;
     double* own = ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr;
@@ -213,27 +235,33 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
     auto flush = [&] {
       if (!count) return;
       for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
+      auto t0 = own ? Clock::now() : Clock::time_point();
       for (int f = 0; f < K; ++f) {
-        const auto t0 = own ? Clock::now() : Clock::time_point();
         const bool unit = filters[f]->unitWeights();
         if (!unit) filters[f]->evalBatch(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
         kernel(b, count, unit ? nullptr : w.data(), n, buffer(f), width);
-        if (own) own[f] += std::chrono::duration<double>(Clock::now() - t0).count();
+        if (own) {
+          const auto t1 = Clock::now();
+          own[f] += std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
+        }
       }
       count = 0;
     };
+    // (local copies: the captured ones would be reloaded after every store into the batch)
+    const float radius = r, lo = -r - 1, xHi = W + r + 1, yHi = H + r + 1;
+    const int lastColumn = W - 1, lastRow = j1 - 1, block = pad, stride = width;
     for (int sj = 0; sj < H; ++sj) {
       if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
       const FilmSample* row = samples.pixel(0, sj);
       for (size_t k = 0; k < rowSamples; ++k) {
         const FilmSample& q = row[k];
-        if (!finiteSample(q) || !(q.x > -r - 1 && q.x < W + r + 1 && q.y > -r - 1 && q.y < H + r + 1)) continue;
+        if (!finiteSample(q) || !(q.x > lo && q.x < xHi && q.y > lo && q.y < yHi)) continue;
         int ilo, ihi, jlo, jhi;
-        centresWithin(q.x, r, ilo, ihi), centresWithin(q.y, r, jlo, jhi);
-        ilo = std::max(ilo, 0), ihi = std::min(ihi, W - 1), jlo = std::max(jlo, j0), jhi = std::min(jhi, j1 - 1);
+        centresWithin(q.x, radius, ilo, ihi), centresWithin(q.y, radius, jlo, jhi);
+        ilo = std::max(ilo, 0), ihi = std::min(ihi, lastColumn), jlo = std::max(jlo, j0), jhi = std::min(jhi, lastRow);
         if (ilo > ihi || jlo > jhi) continue;
         const F4 L = {q.L[0], q.L[1], q.L[2], 1.f};
-        if (ihi - ilo >= pad || jhi - jlo >= pad) {  // wider than a block: on its own, in sample order
+        if (ihi - ilo >= block || jhi - jlo >= block) {  // wider than a block: on its own, in sample order
           flush();
           for (int f = 0; f < K; ++f)
             for (int j = jlo; j <= jhi; ++j)
@@ -245,7 +273,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
           continue;
         }
         b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
-        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * width + ilo, b.L[count] = L;
+        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * stride + ilo, b.L[count] = L;
         b.nx[count] = ihi - ilo + 1, b.ny[count] = jhi - jlo + 1;
         if (++count == kBatch) flush();
       }
@@ -253,11 +281,14 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
     flush();
     for (int f = 0; f < K; ++f)
       for (int j = j0; j < j1; ++j)
-        for (int i = 0; i < W; ++i)
-          for (int c = 0; c < 4; ++c)
-            sums[f][4 * (static_cast<size_t>(j) * W + i) + c] += buffer(f)[(j - j0) * width + i].v[c];
-    std::lock_guard lock(poolMutex);
-    pool.push_back(std::move(space));
+        for (int i = 0; i < W; ++i) {  // (sums need not be aligned for V4)
+          double* sum = sums[f] + 4 * (static_cast<size_t>(j) * W + i);
+          V4 v;
+          std::memcpy(&v, sum, sizeof v);
+          v += buffer(f)[(j - j0) * width + i].v;
+          std::memcpy(sum, &v, sizeof v);
+        }
+    pool.give(std::move(space));
   });
   if (ownSeconds)
     for (int band = 0; band < bands; ++band)
@@ -277,6 +308,7 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
     for (size_t k = 0; k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
     spans.ymin[sj] = ymin, spans.ymax[sj] = ymax;
   });
+  WorkspacePool pool;
   std::vector<bool> done(filters.size(), false);
   for (size_t first = 0; first < filters.size(); ++first) {
     if (done[first]) continue;
@@ -287,7 +319,7 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
       if (!done[k] && filters[k]->radius() == filters[first]->radius())
         group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
     std::vector<double> own(group.size(), 0.0);
-    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr);
+    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr, pool);
     if (ownSeconds)
       for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
   }

@@ -51,7 +51,7 @@ class Filter {
   /// rounding: the Gaussian multiplies per-axis exponentials).
   virtual void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const;
   /// The film's fast path, one call per batch of samples, vectorised across
-  /// them: the weights of sample s < count at film position (x[s], y[s]) at
+  /// them (4 lanes, or 8 where the CPU has AVX2, with the same bits): the weights of sample s < count at film position (x[s], y[s]) at
   /// the centres of the n x n pixels whose first centre is (cx[s], cy[s])
   /// (a pixel centre: column + 0.5, row + 0.5):
   ///   out[(b * n + a) * stride + s] = eval(x[s] - (cx[s] + a), y[s] - (cy[s] + b)),

@@ -16,6 +16,10 @@
 
 #include "filter/filter.h"
 
+// The templated profiles below are instantiated for 8 lanes (Pack8) only to be inlined into functions built
+// for AVX2, so no call passes a Pack8 across the ABI that GCC's -Wpsabi note is about.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
 namespace aliaslab::filterimpl {
 
 /// Composite 8-point Gauss-Legendre rule over `cells` equal cells of [a, b].
@@ -99,6 +103,52 @@ inline Lanes ifLess(const Lanes& a, float bound, const Lanes& v, const Lanes& w)
   return out;
 }
 
+// 8 lanes where the CPU has AVX2: GCC vector types in functions built for AVX2 by the target attribute.
+// Built without FMA, nothing is contracted, so lane by lane these are the float operations of the 4-lane
+// path and of eval(): the same bits on any CPU. A filter opts in with g8 (see SeparableFilter).
+#define ALIASLAB_AVX2 [[gnu::always_inline, gnu::target("avx2")]] inline
+using Pack8 = float __attribute__((vector_size(32)));
+using Mask8 = int __attribute__((vector_size(32)));
+inline bool cpuHasAvx2() {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  return avx2;
+}
+ALIASLAB_AVX2 Pack8 load8(const float* p) {
+  Pack8 v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+ALIASLAB_AVX2 void store8(float* p, const Pack8& v) { __builtin_memcpy(p, &v, sizeof v); }
+ALIASLAB_AVX2 Pack8 abs8(const Pack8& v) { return Pack8(Mask8(v) & 0x7fffffff); }
+/// Lane-wise a <= bound ? v : 0 (0 for NaN a), as keepLe.
+ALIASLAB_AVX2 Pack8 keepLe8(const Pack8& a, float bound, const Pack8& v) { return Pack8((a <= bound) & Mask8(v)); }
+/// Lane-wise a < bound ? v : w, as ifLess.
+ALIASLAB_AVX2 Pack8 ifLess8(const Pack8& a, float bound, const Pack8& v, const Pack8& w) { return a < bound ? v : w; }
+ALIASLAB_AVX2 Pack8 sqrt8(const Pack8& v) { return _mm256_sqrt_ps(v); }
+/// exp in 8 lanes, bit for bit Eigen's 4-lane Array4f::exp() (Eigen 3.4's pexp_float with pldexp_generic,
+/// multiply-adds unfused as in an SSE build), which the Gaussian's 4-lane path uses.
+ALIASLAB_AVX2 Pack8 exp8(const Pack8& in) {
+  // Eigen's pmin(a, b) / pmax(a, b) are minps(b, a) / maxps(b, a): b < a ? b : a, b > a ? b : a
+  const Pack8 x0 = 88.723f < in ? Pack8{} + 88.723f : in, x = -88.723f > x0 ? Pack8{} - 88.723f : x0;
+  const Pack8 m = _mm256_floor_ps(x * 1.44269504088896341f + 0.5f);
+  Pack8 r = m * -0.693359375f + x;
+  r = m * 2.12194440e-4f + r;
+  const Pack8 r2 = r * r, r3 = r2 * r;
+  Pack8 y = 1.9875691500E-4f * r + 1.3981999507E-3f, y1 = 4.1665795894E-2f * r + 1.6666665459E-1f;
+  const Pack8 y2 = r + 1.f;
+  y = y * r + 8.3334519073E-3f;
+  y1 = y1 * r + 5.0000001201E-1f;
+  y = y * r3 + y1;
+  y = y * r2 + y2;
+  // pldexp_generic(y, m): 2^m in four factors
+  const Pack8 e0 = -278.f > m ? Pack8{} - 278.f : m, ef = 278.f < e0 ? Pack8{} + 278.f : e0;
+  const Mask8 e = __builtin_convertvector(ef, Mask8), b = e >> 2;
+  Pack8 c = Pack8((b + 127) << 23), out = ((y * c) * c) * c;
+  c = Pack8((((e - b) - b) - b + 127) << 23);
+  out = out * c;
+  return in > out ? in : out;
+}
+
 /// Scratch floats for one evalBatch call, on the stack unless large.
 class Scratch {
  public:
@@ -115,7 +165,7 @@ class Scratch {
 
 /// f(dx, dy) = g(dx) g(dy) on the square [-r, r]^2; Derived::g(x) is the profile for |x| <= r.
 /// Derived may define g4 (g in 4 lanes, bit for bit g; also called beyond r and on padding)
-/// to vectorise evalBatch.
+/// to vectorise evalBatch, and g8 (the same in 8 lanes, ALIASLAB_AVX2) to use AVX2 where the CPU has it.
 template <class Derived>
 class SeparableFilter : public Filter {
  public:
@@ -137,19 +187,40 @@ class SeparableFilter : public Filter {
     const size_t stride = batchStride(count);
     Scratch scratch(2 * n * stride);
     float *gx = scratch.data(), *gy = gx + n * stride;
-    profiles(x, cx, n, stride, gx), profiles(y, cy, n, stride, gy);
+    size_t done = 0;  // samples done in 8 lanes
+    if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
+      if (cpuHasAvx2()) done = evalBatch8(x, y, cx, cy, n, stride, gx, gy, out);
+    profiles(x, cx, n, stride, done, gx), profiles(y, cy, n, stride, done, gy);
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a)
-        for (size_t s = 0; s < stride; s += 4)
+        for (size_t s = done; s < stride; s += 4)
           lanes(out + (b * n + a) * stride + s) = lanes(gx + a * stride + s) * lanes(gy + b * stride + s);
   }
 
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
-  /// out[a * stride + s] = profile(p[s] - (c[s] + a)) for a < n.
-  void profiles(const float* p, const float* c, int n, size_t stride, float* out) const {
+  /// evalBatch in 8 lanes for the first stride rounded down to 8 samples (returned), the same operations.
+  [[gnu::target("avx2")]] size_t evalBatch8(const float* x, const float* y, const float* cx, const float* cy, int n,
+                                            size_t stride, float* gx, float* gy, float* out) const {
+    const size_t end = stride & ~size_t(7);
     const float r = radius();
-    for (size_t s = 0; s < stride; s += 4)
+    for (size_t s = 0; s < end; s += 8)
+      for (int a = 0; a < n; ++a) {
+        const Pack8 dx = load8(x + s) - (load8(cx + s) + static_cast<float>(a));
+        const Pack8 dy = load8(y + s) - (load8(cy + s) + static_cast<float>(a));
+        store8(gx + a * stride + s, keepLe8(abs8(dx), r, self().g8(dx)));
+        store8(gy + a * stride + s, keepLe8(abs8(dy), r, self().g8(dy)));
+      }
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a)
+        for (size_t s = 0; s < end; s += 8)
+          store8(out + (b * n + a) * stride + s, load8(gx + a * stride + s) * load8(gy + b * stride + s));
+    return end;
+  }
+  /// out[a * stride + s] = profile(p[s] - (c[s] + a)) for a < n, from sample `from` on.
+  void profiles(const float* p, const float* c, int n, size_t stride, size_t from, float* out) const {
+    const float r = radius();
+    for (size_t s = from; s < stride; s += 4)
       for (int a = 0; a < n; ++a) {
         const Lanes d = lanes(p + s) - (lanes(c + s) + static_cast<float>(a));
         Lanes g;
@@ -186,12 +257,29 @@ class RadialFilter : public Filter {
     const size_t stride = batchStride(count);
     Scratch scratch(2 * n * stride);
     float *dx2 = scratch.data(), *dy2 = dx2 + n * stride;
-    squaredOffsets(x, cx, n, stride, dx2), squaredOffsets(y, cy, n, stride, dy2);
+    size_t done = 0;  // samples done in 8 lanes
+    if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
+      if (cpuHasAvx2()) {
+        done = squaredOffsets8(x, cx, n, stride, dx2), squaredOffsets8(y, cy, n, stride, dy2);
+        weights8(dx2, dy2, n, stride, out);
+      }
+    squaredOffsets(x, cx, n, stride, dx2, done), squaredOffsets(y, cy, n, stride, dy2, done);
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a)
-        for (size_t s = 0; s < stride; s += 4) {
+        for (size_t s = done; s < stride; s += 4) {
           const Lanes d2 = lanes(dx2 + a * stride + s) + lanes(dy2 + b * stride + s);
           lanes(out + (b * n + a) * stride + s) = keepLe(d2, disc_, self().g4(sqrt4(d2)));
+        }
+  }
+  /// The weights loop of evalBatch in 8 lanes (Derived::g8, ALIASLAB_AVX2) for the first stride rounded
+  /// down to 8 samples, the same operations.
+  [[gnu::target("avx2")]] void weights8(const float* dx2, const float* dy2, int n, size_t stride, float* out) const {
+    const size_t end = stride & ~size_t(7);
+    for (int b = 0; b < n; ++b)
+      for (int a = 0; a < n; ++a)
+        for (size_t s = 0; s < end; s += 8) {
+          const Pack8 d2 = load8(dx2 + a * stride + s) + load8(dy2 + b * stride + s);
+          store8(out + (b * n + a) * stride + s, keepLe8(d2, disc_, self().g8(sqrt8(d2))));
         }
   }
   /// g(d) in 4 lanes (default: lane by lane; also called beyond r).
@@ -202,10 +290,21 @@ class RadialFilter : public Filter {
   }
 
  protected:
-  /// out[a * stride + s] = (p[s] - (c[s] + a))^2 for a < n.
-  static void squaredOffsets(const float* p, const float* c, int n, size_t stride, float* out) {
+  /// out[a * stride + s] = (p[s] - (c[s] + a))^2 for a < n, from sample `from` on.
+  static void squaredOffsets(const float* p, const float* c, int n, size_t stride, float* out, size_t from = 0) {
     for (int a = 0; a < n; ++a)
-      for (size_t s = 0; s < stride; s += 4) lanes(out + a * stride + s) = (lanes(p + s) - (lanes(c + s) + float(a))).square();
+      for (size_t s = from; s < stride; s += 4)
+        lanes(out + a * stride + s) = (lanes(p + s) - (lanes(c + s) + float(a))).square();
+  }
+  /// The same in 8 lanes for the first stride rounded down to 8 samples (returned).
+  [[gnu::target("avx2")]] static size_t squaredOffsets8(const float* p, const float* c, int n, size_t stride, float* out) {
+    const size_t end = stride & ~size_t(7);
+    for (int a = 0; a < n; ++a)
+      for (size_t s = 0; s < end; s += 8) {
+        const Pack8 d = load8(p + s) - (load8(c + s) + static_cast<float>(a));
+        store8(out + a * stride + s, d * d);
+      }
+    return end;
   }
   /// The largest dx^2 + dy^2 with sqrt(dx^2 + dy^2) <= r in float (the disc test without the sqrt).
   static float discBound(float r) {

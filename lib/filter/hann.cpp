@@ -20,13 +20,14 @@ class HannFilter final : public SeparableFilter<HannFilter> {
     const double i1 = integrate([&](double x) { return g(static_cast<float>(x)); }, -r, r, 1024);
     integral_ = i1 * i1;
   }
-  // by trig::sincPi and cosPi, the same code for g and g4 (bit for bit)
+  // by trig::sincPi and cosPi, the same code for g, g4 and g8 (bit for bit)
   template <class T>
-  T gt(const T& x) const {
+  [[gnu::always_inline]] T gt(const T& x) const {
     return trig::sincPi(T(x * scale_)) * (0.5f * (1.f + trig::cosPi(T(x * invR_))));
   }
   float g(float x) const { return gt(x); }
   Lanes g4(const Lanes& x) const { return gt(x); }
+  ALIASLAB_AVX2 Pack8 g8(const Pack8& x) const { return gt(x); }
   double integral() const override { return integral_; }
   std::string name() const override { return "hann"; }
   FilterParams params() const override { return {{"tau", tau_}}; }

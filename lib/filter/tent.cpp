@@ -18,6 +18,10 @@ class TentFilter final : public RadialFilter<TentFilter> {
   float g(float d) const { return std::max(0.f, 1.f - d * invR_); }
   // 0 beyond r up to rounding (1 - d / r <= 0 there)
   Lanes g4(const Lanes& d) const { return (1.f - d * invR_).max(0.f); }
+  ALIASLAB_AVX2 Pack8 g8(const Pack8& d) const {
+    const Pack8 v = 1.f - d * invR_;
+    return v > 0.f ? v : Pack8{};
+  }
   double integral() const override { return M_PI * double(radius()) * radius() / 3.0; }
   std::string name() const override { return "tent"; }
 
