@@ -116,6 +116,29 @@ TEST_P(FilterContract, EvalBatchEqualsEval) {
   }
 }
 
+TEST_P(FilterContract, EightLanesGiveTheFourLaneBits) {
+  // evalBatch's 8-lane path (CPUs with AVX2) and its 4-lane path give the same weights, bit for bit, so a
+  // study's numbers do not depend on the CPU (the Gaussian included, whose weights are not eval()'s bits)
+  if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the 4-lane path runs";
+  const float r = filter->radius();
+  const int n = int(std::ceil(2 * r)) + 2, count = 64, stride = Filter::batchStride(count);
+  std::vector<float> x(stride), y(stride), cx(stride), cy(stride), eight(size_t(n) * n * stride), four(eight.size());
+  HashRng rng(hashWords(5, r * 1000));
+  for (int s = 0; s < stride; ++s) {
+    x[s] = 30 * rng.nextFloat() - 5, y[s] = 30 * rng.nextFloat() - 5;
+    cx[s] = std::floor(x[s] - r) - 0.5f, cy[s] = std::floor(y[s] - r) - 0.5f;
+  }
+  filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, eight.data());
+  filterimpl::eightLanesAllowed() = false;
+  filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, four.data());
+  filterimpl::eightLanesAllowed() = true;
+  size_t differ = 0, nonzero = 0;
+  for (size_t k = 0; k < eight.size(); ++k)
+    differ += std::memcmp(&eight[k], &four[k], sizeof(float)) != 0, nonzero += four[k] != 0;
+  EXPECT_EQ(differ, 0u) << "of " << eight.size();
+  EXPECT_GT(nonzero, size_t(count) / 8);  // not all cut to 0 (about (2r)^2 per sample for r < 0.5: 23 at r = 0.3)
+}
+
 TEST_P(FilterContract, IntegralMatchesQuadrature) {
   const double q = quad2(*filter, [](double v) { return v; }, 64);
   EXPECT_NEAR(filter->integral(), q, 1e-4 * std::abs(q));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -113,6 +114,13 @@ inline bool cpuHasAvx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2");
   return avx2;
 }
+/// Off: evalBatch stays at 4 lanes on any CPU (for tests comparing the two paths).
+inline std::atomic<bool>& eightLanesAllowed() {
+  static std::atomic<bool> allowed{true};
+  return allowed;
+}
+/// Whether evalBatch takes its 8-lane path.
+inline bool eightLanes() { return cpuHasAvx2() && eightLanesAllowed().load(std::memory_order_relaxed); }
 ALIASLAB_AVX2 Pack8 load8(const float* p) {
   Pack8 v;
   __builtin_memcpy(&v, p, sizeof v);
@@ -189,7 +197,7 @@ class SeparableFilter : public Filter {
     float *gx = scratch.data(), *gy = gx + n * stride;
     size_t done = 0;  // samples done in 8 lanes
     if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
-      if (cpuHasAvx2()) done = evalBatch8(x, y, cx, cy, n, stride, gx, gy, out);
+      if (eightLanes()) done = evalBatch8(x, y, cx, cy, n, stride, gx, gy, out);
     profiles(x, cx, n, stride, done, gx), profiles(y, cy, n, stride, done, gy);
     for (int b = 0; b < n; ++b)
       for (int a = 0; a < n; ++a)
@@ -259,7 +267,7 @@ class RadialFilter : public Filter {
     float *dx2 = scratch.data(), *dy2 = dx2 + n * stride;
     size_t done = 0;  // samples done in 8 lanes
     if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
-      if (cpuHasAvx2()) {
+      if (eightLanes()) {
         done = squaredOffsets8(x, cx, n, stride, dx2), squaredOffsets8(y, cy, n, stride, dy2);
         weights8(dx2, dy2, n, stride, out);
       }

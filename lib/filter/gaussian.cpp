@@ -43,7 +43,7 @@ class GaussianFilter final : public RadialFilter<GaussianFilter> {
     Scratch scratch(4 * n * stride);
     float *dx2 = scratch.data(), *dy2 = dx2 + n * stride, *ex = dy2 + n * stride, *ey = ex + n * stride;
     size_t done = 0;  // samples done in 8 lanes
-    if (cpuHasAvx2()) {
+    if (eightLanes()) {
       done = squaredOffsets8(x, cx, n, stride, dx2), squaredOffsets8(y, cy, n, stride, dy2);
       weights8(dx2, dy2, ex, ey, n, stride, out);
     }
