@@ -76,8 +76,7 @@ class SumPages {
   SumPages& operator=(const SumPages&) = delete;
   ~SumPages() { ::munmap(data_, bytes_); }
   Sum* data() { return data_; }
-  size_t size() const { return n_; }
-  void clear(size_t n) { std::fill(data_, data_ + std::min(n, n_), Sum{}); }
+  void clear() { std::fill(data_, data_ + n_, Sum{}); }
 
  private:
   size_t n_, bytes_;
@@ -172,20 +171,20 @@ struct Workspace {
   Batch batch;
 };
 
-/// Work spaces reused from band to band within one pass: at most one per thread. (Kept from radius to
-/// radius, they raised a 256 x 256 reference's peak by 2.3 MB: results/study_speed.md.)
+/// Work spaces of one size reused from band to band within one pass: at most one per thread. (Kept from
+/// radius to radius, they raised a 256 x 256 reference's peak by 2.3 MB: results/study_speed.md.)
 class WorkspacePool {
  public:
-  /// A work space with at least `sums` zeroed Sums and `weights` floats.
-  std::unique_ptr<Workspace> take(size_t sums, size_t weights) {
+  WorkspacePool(size_t sums, size_t weights) : sums_(sums), weights_(weights) {}
+  /// A work space with zeroed sums.
+  std::unique_ptr<Workspace> take() {
     std::unique_ptr<Workspace> space;
     {
       std::lock_guard lock(mutex_);
       if (!free_.empty()) space = std::move(free_.back()), free_.pop_back();
     }
-    if (!space || space->buffer.size() < sums) return std::make_unique<Workspace>(sums, weights);
-    space->buffer.clear(sums);
-    if (space->w.size() < weights) space->w.resize(weights);
+    if (!space) return std::make_unique<Workspace>(sums_, weights_);
+    space->buffer.clear();
     return space;
   }
   void give(std::unique_ptr<Workspace> space) {
@@ -194,6 +193,7 @@ class WorkspacePool {
   }
 
  private:
+  size_t sums_, weights_;
   std::mutex mutex_;
   std::vector<std::unique_ptr<Workspace>> free_;
 };
@@ -222,10 +222,10 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
   const size_t bandSize = static_cast<size_t>(kBand + pad) * width;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  WorkspacePool pool;
+  WorkspacePool pool(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
   parallelFor(bands, threads, [&](int band) {
     const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
-    std::unique_ptr<Workspace> space = pool.take(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
+    std::unique_ptr<Workspace> space = pool.take();
     auto buffer = [&](int f) { return space->buffer.data() + f * bandSize; };
     std::vector<float>& w = space->w;
     double* own = ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr;
