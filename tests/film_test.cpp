@@ -2,6 +2,7 @@
 // independent brute-force weighted average written here.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 
 #include "core/error.h"
@@ -225,8 +226,18 @@ TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
   for (int threads : {1, 3}) {
     Accumulator acc(37, 29, filters);
     std::vector<double> seconds;
-    acc.add(b, threads, &seconds);
+    double shared = -1;
+    const auto t0 = std::chrono::steady_clock::now();
+    acc.add(b, threads, &seconds, &shared);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     ASSERT_EQ(seconds.size(), filters.size());
+    // the shares add up to the call's wall time: each filter's own part plus 1/K of the shared rest
+    double total = 0;
+    for (double s : seconds) total += s;
+    EXPECT_GE(shared, 0.0);
+    EXPECT_LE(shared, total * (1 + 1e-9));
+    EXPECT_LE(total, wall * (1 + 1e-9));
+    for (double s : seconds) EXPECT_GE(s, shared / static_cast<double>(filters.size()) * (1 - 1e-9));
     for (size_t k = 0; k < filters.size(); ++k) {
       const Reconstruction own = reconstruct(b, *filters[k], ReconMode::WeightedAverage, 1), fused = acc.resolve(k);
       EXPECT_EQ(maxDiff(own.image, fused.image), 0.0) << filters[k]->describe() << " threads " << threads;

@@ -16,7 +16,8 @@ Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filte
   plain_.assign(n, 0.0);
 }
 
-void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double>* filterSeconds) {
+void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double>* filterSeconds,
+                      double* sharedSeconds) {
   if (batch.width() != width_ || batch.height() != height_)
     throw std::invalid_argument("Accumulator::add: batch is " + std::to_string(batch.width()) + "x" +
                                 std::to_string(batch.height()) + ", accumulator " + std::to_string(width_) + "x" +
@@ -34,9 +35,10 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
     const int used = std::max(1, std::min(resolveThreads(threads), (height_ + filmimpl::kBand - 1) / filmimpl::kBand));
     double ownWall = 0;
     for (double& o : own) ownWall += (o /= used);
-    const double shared = std::max(0.0, wall - ownWall) / static_cast<double>(filters_.size());
+    const double rest = std::max(0.0, wall - ownWall), shared = rest / static_cast<double>(filters_.size());
     filterSeconds->resize(filters_.size());
     for (size_t k = 0; k < own.size(); ++k) (*filterSeconds)[k] = own[k] + shared;
+    if (sharedSeconds) *sharedSeconds = rest;
   }
 }
 

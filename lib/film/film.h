@@ -112,7 +112,10 @@ class Accumulator {
   Accumulator(int width, int height, std::vector<const Filter*> filters);
   /// filterSeconds (if not null): resized to the filter count, filter k's share of this call's wall time:
   /// its own weights and accumulation (CPU time over the threads used) plus an equal share of the rest.
-  void add(const SampleBuffer& batch, int threads = 0, std::vector<double>* filterSeconds = nullptr);
+  /// sharedSeconds (if not null, with filterSeconds): that rest, the work no filter owns (finiteness, the
+  /// fallback sums, each radius's footprints and band set-up, adding the bands into the sums).
+  void add(const SampleBuffer& batch, int threads = 0, std::vector<double>* filterSeconds = nullptr,
+           double* sharedSeconds = nullptr);
   /// Resolves filter k's image (same outcomes and counts as reconstruct()).
   Reconstruction resolve(size_t k) const;
   size_t samplesAdded() const { return samplesAdded_; }

@@ -16,7 +16,11 @@
 // Each OneMore run reports extra_cost = its time / the Trace time of the
 // same scene measured just before it in the same run (the Trace benchmark
 // of a scene is registered, so it runs, before that scene's OneMore ones);
-// Sweep15 reports extra_avg (mean pair) and each pair's own extra cost.
+// Sweep15 reports extra_avg (mean pair) and each pair's own extra cost, and
+// splits the mean pair into shared_avg (1/15 of the work no filter owns:
+// finiteness, fallback sums, each radius's footprints, band set-up and
+// merging), own_avg (the filter's weights and accumulation) and resolve_avg
+// (its resolve and metric update).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -113,20 +117,30 @@ void sweepPairs(benchmark::State& state, const std::string& path) {
   const Image stand = reconstruct(w.samples, *filters[0], ReconMode::WeightedAverage, 1).image;
   std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(stand, stand));
   std::vector<double> pairSeconds(filters.size(), 0.0), seconds;
+  double sharedTotal = 0, resolveTotal = 0;  // the work no filter owns; resolve and metrics of every pair
   for (auto _ : state) {
     Accumulator acc(w.scene->width, w.scene->height, filters);
-    acc.add(w.samples, 1, &seconds);
+    double shared = 0;
+    acc.add(w.samples, 1, &seconds, &shared);
+    sharedTotal += shared;
     for (size_t k = 0; k < filters.size(); ++k) {
       const auto t0 = std::chrono::steady_clock::now();
       metrics[k].add(acc.resolve(k).image);
-      pairSeconds[k] += seconds[k] + aliaslab::seconds(t0);
+      const double resolveAndMetrics = aliaslab::seconds(t0);
+      resolveTotal += resolveAndMetrics;
+      pairSeconds[k] += seconds[k] + resolveAndMetrics;
     }
   }
   if (w.traceSeconds <= 0) return;
   const double per = static_cast<double>(state.iterations()) * w.traceSeconds;
+  const double pairs = static_cast<double>(filters.size());
   double total = 0;
   for (size_t k = 0; k < filters.size(); ++k) total += pairSeconds[k];
-  state.counters["extra_avg"] = total / static_cast<double>(filters.size()) / per;
+  state.counters["extra_avg"] = total / pairs / per;
+  // extra_avg = shared_avg (1/15 of the shared work) + own_avg (weights, accumulation) + resolve_avg
+  state.counters["shared_avg"] = sharedTotal / pairs / per;
+  state.counters["resolve_avg"] = resolveTotal / pairs / per;
+  state.counters["own_avg"] = (total - sharedTotal - resolveTotal) / pairs / per;
   for (size_t k = 0; k < filters.size(); ++k) state.counters[labels[k]] = pairSeconds[k] / per;
 }
 
