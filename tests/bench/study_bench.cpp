@@ -19,8 +19,9 @@
 // Sweep15 reports extra_avg (mean pair) and each pair's own extra cost, and
 // splits the mean pair into shared_avg (1/15 of the work no filter owns:
 // finiteness, fallback sums, each radius's footprints, band set-up and
-// merging), own_avg (the filter's weights and accumulation) and resolve_avg
-// (its resolve and metric update).
+// merging), own_avg (the filter's weights and accumulation), resolve_avg
+// (its resolve and metric update) and sums_avg (1/15 of making and freeing
+// the accumulator, whose sums are 4 doubles per pixel and filter).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -28,6 +29,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
 
 #include "film/film.h"
 #include "render/render.h"
@@ -117,30 +119,38 @@ void sweepPairs(benchmark::State& state, const std::string& path) {
   const Image stand = reconstruct(w.samples, *filters[0], ReconMode::WeightedAverage, 1).image;
   std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(stand, stand));
   std::vector<double> pairSeconds(filters.size(), 0.0), seconds;
-  double sharedTotal = 0, resolveTotal = 0;  // the work no filter owns; resolve and metrics of every pair
+  // the work no filter owns; resolve and metrics of every pair; making and freeing the accumulator
+  double sharedTotal = 0, resolveTotal = 0, sumsTotal = 0;
   for (auto _ : state) {
-    Accumulator acc(w.scene->width, w.scene->height, filters);
+    auto t0 = std::chrono::steady_clock::now();
+    auto acc = std::make_unique<Accumulator>(w.scene->width, w.scene->height, filters);
+    sumsTotal += aliaslab::seconds(t0);
     double shared = 0;
-    acc.add(w.samples, 1, &seconds, &shared);
+    acc->add(w.samples, 1, &seconds, &shared);
     sharedTotal += shared;
     for (size_t k = 0; k < filters.size(); ++k) {
-      const auto t0 = std::chrono::steady_clock::now();
-      metrics[k].add(acc.resolve(k).image);
+      t0 = std::chrono::steady_clock::now();
+      metrics[k].add(acc->resolve(k).image);
       const double resolveAndMetrics = aliaslab::seconds(t0);
       resolveTotal += resolveAndMetrics;
       pairSeconds[k] += seconds[k] + resolveAndMetrics;
     }
+    t0 = std::chrono::steady_clock::now();
+    acc.reset();
+    sumsTotal += aliaslab::seconds(t0);
   }
   if (w.traceSeconds <= 0) return;
   const double per = static_cast<double>(state.iterations()) * w.traceSeconds;
   const double pairs = static_cast<double>(filters.size());
-  double total = 0;
+  double total = sumsTotal;  // each pair's sums are its own memory: an equal share of making and freeing them
   for (size_t k = 0; k < filters.size(); ++k) total += pairSeconds[k];
   state.counters["extra_avg"] = total / pairs / per;
-  // extra_avg = shared_avg (1/15 of the shared work) + own_avg (weights, accumulation) + resolve_avg
+  // extra_avg = shared_avg (1/15 of the shared work) + own_avg (weights, accumulation) + resolve_avg + sums_avg
   state.counters["shared_avg"] = sharedTotal / pairs / per;
   state.counters["resolve_avg"] = resolveTotal / pairs / per;
-  state.counters["own_avg"] = (total - sharedTotal - resolveTotal) / pairs / per;
+  state.counters["sums_avg"] = sumsTotal / pairs / per;
+  state.counters["own_avg"] = (total - sumsTotal - sharedTotal - resolveTotal) / pairs / per;
+  for (size_t k = 0; k < filters.size(); ++k) pairSeconds[k] += sumsTotal / pairs;
   for (size_t k = 0; k < filters.size(); ++k) state.counters[labels[k]] = pairSeconds[k] / per;
 }
 
