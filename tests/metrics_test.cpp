@@ -148,3 +148,42 @@ TEST(Metrics, NeedsTwoImages) {
   acc.add(g);
   EXPECT_THROW(acc.result(), std::logic_error);
 }
+
+TEST(Metrics, RunningUpdateMatchesTwoPassStatistics) {
+  // The accumulator's one-pass update (4 channels at a time, the rest one by one: 7 x 5 x 3 = 105 channels)
+  // against the textbook two-pass formulas computed here: mean, then squared deviations; the values are
+  // offset from 0 so the two orders of summation differ only by rounding (relative 1e-12).
+  const int w = 7, h = 5, k = 6;
+  Image g(w, h), a(w, h);
+  std::vector<Image> images(k, Image(w, h));
+  auto value = [](uint64_t key) { return static_cast<float>(10.0 + toUnitDouble(hashWords(key, 17))); };
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const uint64_t p = static_cast<uint64_t>(y * w + x) * 3;
+      g.set(x, y, Color(value(p), value(p + 1), value(p + 2)));
+      a.set(x, y, Color(value(p + 1000), value(p + 1001), value(p + 1002)));
+      for (int i = 0; i < k; ++i) {
+        const uint64_t q = p + 10000 * static_cast<uint64_t>(i + 1);
+        images[i].set(x, y, Color(value(q), value(q + 1), value(q + 2)));
+      }
+    }
+  const Metrics m = computeMetrics(images, g, a);
+  const size_t n = static_cast<size_t>(w) * h * 3;
+  double variance = 0, bias2 = 0, sse = 0, sseArea = 0;
+  for (size_t c = 0; c < n; ++c) {
+    double mean = 0;
+    for (const Image& im : images) mean += im.data()[c] / static_cast<double>(k);
+    double squares = 0;
+    for (const Image& im : images) {
+      const double x = im.data()[c];
+      squares += (x - mean) * (x - mean), sse += (x - g.data()[c]) * (x - g.data()[c]);
+      sseArea += (x - a.data()[c]) * (x - a.data()[c]);
+    }
+    variance += squares / (k - 1), bias2 += (mean - g.data()[c]) * (mean - g.data()[c]);
+  }
+  const double noise = variance / n;
+  EXPECT_NEAR(m.noise, noise, 1e-12 * noise);
+  EXPECT_NEAR(m.aliasing, bias2 / n - noise / k, 1e-12 * (bias2 / n));
+  EXPECT_NEAR(m.mse, sse / (n * k), 1e-12 * m.mse);
+  EXPECT_NEAR(m.mseArea, sseArea / (n * k), 1e-12 * m.mseArea);
+}
