@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/hash.h"
@@ -270,6 +271,47 @@ TEST(Film, Avx2AndSseKernelsSumBitForBitAlike) {
       filmimpl::splatWeighted(b, *f, fast.data(), 1);
       filmimpl::splatWeighted(b, *f, sse.data(), 1, false);
       EXPECT_TRUE(fast == sse) << f->describe();
+    }
+}
+
+TEST(Film, EightSampleSetUpMatchesOneByOneOnAwkwardSamples) {
+  // The AVX2 set-up (8 samples at once, where the CPU has it) falls back to one by one for any group with
+  // a sample it does not handle; both must give the same sums. Samples here: inside their pixel, exactly on
+  // pixel edges and centres (footprints wider than a block), next to the image's first rows and columns
+  // (centresWithin's float branch), far outside, in a neighbour's pixel, with NaN or inf positions or
+  // radiance; 9 per pixel so groups of 8 straddle pixels; 45 rows = two bands.
+  const int w = 70, h = 45, spp = 9;
+  SampleBuffer b(w, h, spp);
+  const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      for (int k = 0; k < spp; ++k) {
+        FilmSample& s = b.pixel(i, j)[k];
+        const uint64_t key = hashWords(77, i, j, k);
+        s.x = i + toUnitFloat(hashWords(key, 0)), s.y = j + toUnitFloat(hashWords(key, 1));
+        s.L = noisy(s.x, s.y, hashWords(key, 2));
+        switch (hashWords(key, 3) % 40) {
+          case 0: s.x = static_cast<float>(i); break;
+          case 1: s.y = static_cast<float>(j); break;
+          case 2: s.x = i + 0.5f, s.y = j + 0.5f; break;
+          case 3: s.x = nan; break;
+          case 4: s.y = -inf; break;
+          case 5: s.L[1] = inf; break;
+          case 6: s.L[2] = nan; break;
+          case 7: s.x = -30.f; break;
+          case 8: s.y = h + 40.f; break;
+          case 9: s.x += 1.5f, s.y -= 2.25f; break;
+          case 10: s.weight = nan; break;  // not read by the weighted average
+          default: break;
+        }
+      }
+  for (const char* name : {"box", "tent", "mitchell", "lanczos", "gaussian"})
+    for (float r : {0.5f, 1.f, 1.5f, 2.f, 2.3f, 3.7f}) {
+      auto f = makeFilter(name, r);
+      std::vector<double> fast(4 * static_cast<size_t>(w) * h, 0.0), plain(fast);
+      filmimpl::splatWeighted(b, *f, fast.data(), 1);
+      filmimpl::splatWeighted(b, *f, plain.data(), 1, false);
+      EXPECT_TRUE(fast == plain) << f->describe();
     }
 }
 

@@ -22,7 +22,8 @@ constexpr int kBand = 32;
 /// Filter::evalBatch (eval() bit for bit; Blackman-Harris and the Gaussian
 /// within float rounding), summed in double: float x float products are
 /// exact, so the AVX2 + FMA kernel used where the CPU has it sums exactly
-/// like the SSE one (allowAvx2 = false forces the SSE kernel, for tests).
+/// like the SSE one (allowAvx2 = false forces the SSE kernel and the
+/// sample-by-sample set-up, for tests).
 /// Float sums were measured no faster and lose the 1e-6 agreement where
 /// negative lobes cancel.
 void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads,

@@ -13,10 +13,15 @@
 // order, for any thread count. Filters of one radius share the pass (one
 // footprint per sample, one batch, then each filter's weights and
 // accumulation into its own band buffer), which is what makes one more
-// filter cheap in a sweep or a reference.
+// filter cheap in a sweep or a reference. Where the CPU has AVX2, the
+// set-up (finiteness, range, footprint, batch entry) takes 8 samples at a
+// time (setup8), the scalar loop's operations lane by lane; a group with
+// any sample it does not handle (near the image's first rows and columns,
+// partly outside the band, wider than a block, not finite) goes one by one.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -24,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include <immintrin.h>
 #include <sys/mman.h>
 
 #include "core/parallel.h"
@@ -145,6 +151,86 @@ Kernel pickKernel(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
   return k;
 }
 
+/// What one band does with the footprints of a sample (the parameters of the set-up in splatSameRadius).
+struct Reach {
+  float radius, lo, xHi, yHi;  ///< the radius; positions outside (lo, xHi) x (lo, yHi) reach no pixel
+  int lastColumn, j0, lastRow;  ///< clamp of the footprints: columns [0, lastColumn], rows [j0, lastRow]
+  int block, stride;            ///< n (footprints up to n x n go in a batch) and the band buffer's width
+};
+
+static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y) == sizeof(float) &&
+                  offsetof(FilmSample, L) == 2 * sizeof(float),
+              "setup8 reads FilmSample as 6 floats: x, y, L, weight");
+
+/// centresWithin's bounds in double for 8 positions: first = ceil(p - 0.5 - r), last = floor(p - 0.5 + r).
+[[gnu::target("avx2"), gnu::always_inline]] inline void bounds8(__m256 p, float radius, __m256i& first, __m256i& last) {
+  const __m256d half = _mm256_set1_pd(0.5), r = _mm256_set1_pd(radius);
+  const __m256d a = _mm256_sub_pd(_mm256_cvtps_pd(_mm256_castps256_ps128(p)), half);
+  const __m256d z = _mm256_sub_pd(_mm256_cvtps_pd(_mm256_extractf128_ps(p, 1)), half);
+  constexpr int up = _MM_FROUND_TO_POS_INF | _MM_FROUND_NO_EXC, down = _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC;
+  first = _mm256_setr_m128i(_mm256_cvttpd_epi32(_mm256_round_pd(_mm256_sub_pd(a, r), up)),
+                            _mm256_cvttpd_epi32(_mm256_round_pd(_mm256_sub_pd(z, r), up)));
+  last = _mm256_setr_m128i(_mm256_cvttpd_epi32(_mm256_round_pd(_mm256_add_pd(a, r), down)),
+                           _mm256_cvttpd_epi32(_mm256_round_pd(_mm256_add_pd(z, r), down)));
+}
+
+/// The set-up of 8 consecutive samples at once (AVX2), the scalar loop's operations lane by lane:
+/// 0 = every one of them is skipped; 1 = all 8 go in the batch, written at b[count .. count + 7]; 2 = some
+/// other mix (the caller takes them one by one). Only for footprints at |p| >= r + 2 on both axes,
+/// where centresWithin computes the bounds in double.
+[[gnu::target("avx2")]] int setup8(const FilmSample* q, const Reach& c, Batch& b, int count) {
+  // (x, y) of each sample as one 64-bit load, then x and y apart (faster than two gathers)
+  auto pair = [q](int s) {
+    double v;
+    std::memcpy(&v, &q[s].x, sizeof v);
+    return v;
+  };
+  const __m256 p0 = _mm256_castpd_ps(_mm256_setr_pd(pair(0), pair(1), pair(2), pair(3)));  // x0 y0 x1 y1 x2 y2 x3 y3
+  const __m256 p1 = _mm256_castpd_ps(_mm256_setr_pd(pair(4), pair(5), pair(6), pair(7)));
+  // per 128-bit half: x0 x1 x4 x5 | x2 x3 x6 x7, then the 64-bit pieces in order
+  const __m256 x = _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(p0, p1, 0x88)), 0xd8));
+  const __m256 y = _mm256_castpd_ps(_mm256_permute4x64_pd(_mm256_castps_pd(_mm256_shuffle_ps(p0, p1, 0xdd)), 0xd8));
+  const __m256 lo = _mm256_set1_ps(c.lo);
+  const __m256 in = _mm256_and_ps(
+      _mm256_and_ps(_mm256_cmp_ps(x, lo, _CMP_GT_OQ), _mm256_cmp_ps(x, _mm256_set1_ps(c.xHi), _CMP_LT_OQ)),
+      _mm256_and_ps(_mm256_cmp_ps(y, lo, _CMP_GT_OQ), _mm256_cmp_ps(y, _mm256_set1_ps(c.yHi), _CMP_LT_OQ)));
+  const int inMask = _mm256_movemask_ps(in);
+  if (inMask == 0) return 0;  // no position in range (NaN and inf fail too)
+  if (inMask != 0xff) return 2;
+  const __m256 absMask = _mm256_castsi256_ps(_mm256_set1_epi32(0x7fffffff)), near = _mm256_set1_ps(c.radius + 2);
+  if (_mm256_movemask_ps(_mm256_or_ps(_mm256_cmp_ps(_mm256_and_ps(x, absMask), near, _CMP_LT_OQ),
+                                      _mm256_cmp_ps(_mm256_and_ps(y, absMask), near, _CMP_LT_OQ))))
+    return 2;  // near 0: centresWithin's float branch
+  __m256i ilo, ihi, jlo, jhi;
+  bounds8(x, c.radius, ilo, ihi), bounds8(y, c.radius, jlo, jhi);
+  ilo = _mm256_max_epi32(ilo, _mm256_setzero_si256()), ihi = _mm256_min_epi32(ihi, _mm256_set1_epi32(c.lastColumn));
+  jlo = _mm256_max_epi32(jlo, _mm256_set1_epi32(c.j0)), jhi = _mm256_min_epi32(jhi, _mm256_set1_epi32(c.lastRow));
+  const int empty = _mm256_movemask_ps(
+      _mm256_castsi256_ps(_mm256_or_si256(_mm256_cmpgt_epi32(ilo, ihi), _mm256_cmpgt_epi32(jlo, jhi))));
+  if (empty == 0xff) return 0;  // none reaches a pixel of the band
+  if (empty) return 2;
+  const __m256i last = _mm256_set1_epi32(c.block - 1), spanX = _mm256_sub_epi32(ihi, ilo), spanY = _mm256_sub_epi32(jhi, jlo);
+  if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_cmpgt_epi32(spanX, last), _mm256_cmpgt_epi32(spanY, last)))))
+    return 2;  // wider than a block: on its own
+  // radiance: (r, g, b, weight) of each sample, finite in r, g, b (finiteSample), stored as (r, g, b, 1)
+  __m128 L[8], bad = _mm_setzero_ps();
+  for (int s = 0; s < 8; ++s) L[s] = _mm_loadu_ps(&q[s].L[0]), bad = _mm_or_ps(bad, _mm_sub_ps(L[s], L[s]));
+  if (_mm_movemask_ps(_mm_cmpneq_ps(bad, _mm_setzero_ps())) & 7) return 2;  // NaN or inf somewhere
+  const __m128 one = _mm_set1_ps(1.f);
+  for (int s = 0; s < 8; ++s) _mm_storeu_ps(reinterpret_cast<float*>(&b.L[count + s]), _mm_blend_ps(L[s], one, 8));
+  _mm256_storeu_ps(b.x + count, x), _mm256_storeu_ps(b.y + count, y);
+  const __m256 halfPixel = _mm256_set1_ps(0.5f);
+  _mm256_storeu_ps(b.cx + count, _mm256_add_ps(_mm256_cvtepi32_ps(ilo), halfPixel));
+  _mm256_storeu_ps(b.cy + count, _mm256_add_ps(_mm256_cvtepi32_ps(jlo), halfPixel));
+  const __m256i at = _mm256_add_epi32(_mm256_mullo_epi32(_mm256_sub_epi32(jlo, _mm256_set1_epi32(c.j0)),
+                                                         _mm256_set1_epi32(c.stride)), ilo);
+  const __m256i unit = _mm256_set1_epi32(1);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(b.at + count), at);
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(b.nx + count), _mm256_add_epi32(spanX, unit));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(b.ny + count), _mm256_add_epi32(spanY, unit));
+  return 1;
+}
+
 }  // namespace
 
 size_t addPlainSums(const SampleBuffer& samples, double* plain) {
@@ -211,6 +297,8 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
   const Kernel kernel = pickKernel(n, allowAvx2, std::make_integer_sequence<int, 6>());
+  static const bool cpuAvx2 = __builtin_cpu_supports("avx2");
+  const bool vectorSetup = cpuAvx2 && allowAvx2 && n <= kMaxBlock;  // (r <= 8: centresWithin's bounds fit)
 
   // per source row: the output rows its samples can reach (wider by one)
   std::vector<int> reachLo(H), reachHi(H);
@@ -250,10 +338,22 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
     // (local copies: the captured ones would be reloaded after every store into the batch)
     const float radius = r, lo = -r - 1, xHi = W + r + 1, yHi = H + r + 1;
     const int lastColumn = W - 1, lastRow = j1 - 1, block = pad, stride = width;
+    const Reach reach{radius, lo, xHi, yHi, lastColumn, j0, lastRow, block, stride};
     for (int sj = 0; sj < H; ++sj) {
       if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
       const FilmSample* row = samples.pixel(0, sj);
-      for (size_t k = 0; k < rowSamples; ++k) {
+      size_t k = 0, next = 0;  // next: where the 8-sample set-up may go on (after a group taken one by one)
+      for (; k < rowSamples; ++k) {
+        if (vectorSetup && k == next && k + 8 <= rowSamples) {
+          if (count > kBatch - 8) flush();
+          const int status = setup8(row + k, reach, b, count);
+          if (status != 2) {  // all 8 skipped or all 8 in the batch
+            if (status == 1 && (count += 8) == kBatch) flush();
+            k += 7, next = k + 1;
+            continue;
+          }
+          next = k + 8;  // these 8 one by one
+        }
         const FilmSample& q = row[k];
         if (!finiteSample(q) || !(q.x > lo && q.x < xHi && q.y > lo && q.y < yHi)) continue;
         int ilo, ihi, jlo, jhi;
