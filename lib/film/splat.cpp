@@ -97,40 +97,45 @@ struct Batch {
   F4 L[kBatch];                                                     ///< (r, g, b, 1)
 };
 
-/// The end of the run of samples from s on that share their footprint's first pixel (batch.at).
-inline int runEnd(const Batch& batch, int s, int count) {
-  int e = s + 1;
-  while (e < count && batch.at[e] == batch.at[s]) ++e;
-  return e;
+/// For n = N <= 2: add(sum, p, t, L_t) adds sample t's contribution to the sum of pixel p (row-major in the
+/// N x N block), for every pixel and sample, run by run. A run is the samples with the same first pixel (a
+/// pixel's samples at small radii); it adds into registers: each pixel's sum is loaded once, takes the run's
+/// contributions in sample order and is stored once. The same additions as one sample at a time, without
+/// the store-to-load round trip that chained them (measured: a third less time at n = 1; larger blocks
+/// gained nothing).
+template <int N, class Add>
+inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, Sum* buffer, int width,
+                                                   Add&& add) {
+  for (int s = 0; s < count;) {
+    int e = s + 1;
+    while (e < count && batch.at[e] == batch.at[s]) ++e;
+    Sum* block = buffer + batch.at[s];
+    V4 acc[N * N];
+#pragma GCC unroll 4
+    for (int p = 0; p < N * N; ++p) acc[p] = block[(p / N) * width + p % N].v;
+    for (int t = s; t < e; ++t) {
+      const V4 L = __builtin_convertvector(batch.L[t], V4);
+#pragma GCC unroll 4
+      for (int p = 0; p < N * N; ++p) add(acc[p], p, t, L);
+    }
+#pragma GCC unroll 4
+    for (int p = 0; p < N * N; ++p) block[(p / N) * width + p % N].v = acc[p];
+    s = e;
+  }
 }
 
 /// buffer[at + b * width + a] += w(a, b) L for every sample of the batch (N: n known at compile time, 0: any),
-/// w(a, b) = w[(b * n + a) * kBatch + s]. For n <= 2, a run of samples with the same first pixel (a pixel's
-/// samples at small radii) adds into registers: each pixel's sum is loaded once, takes the run's products in
-/// sample order and is stored once, the same additions as one sample at a time without the store-to-load
-/// round trip that chained them (measured: a third less time at n = 1; larger blocks gained nothing).
+/// w(a, b) = w[(b * n + a) * kBatch + s]; in runs for n <= 2 (addRuns).
 template <int N>
 inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
                                                       Sum* buffer, int width) {
-  if (N) n = N;
   constexpr size_t stride = kBatch;  // evalBatch is always called for a whole batch: constant offsets
-  if constexpr (N == 1 || N == 2) {  // runs: the whole block in registers
-    for (int s = 0; s < count;) {
-      const int e = runEnd(batch, s, count);
-      Sum* block = buffer + batch.at[s];
-      V4 acc[N * N];
-#pragma GCC unroll 4
-      for (int p = 0; p < N * N; ++p) acc[p] = block[(p / N) * width + p % N].v;
-      for (int t = s; t < e; ++t) {
-        const V4 L = __builtin_convertvector(batch.L[t], V4);
-#pragma GCC unroll 4
-        for (int p = 0; p < N * N; ++p) acc[p] += static_cast<double>(w[p * stride + t]) * L;
-      }
-#pragma GCC unroll 4
-      for (int p = 0; p < N * N; ++p) block[(p / N) * width + p % N].v = acc[p];
-      s = e;
-    }
-  } else {  // larger blocks: enough independent sums per sample; runs measured no faster
+  if constexpr (N == 1 || N == 2) {
+    addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+      sum += static_cast<double>(w[p * stride + t]) * L;
+    });
+  } else {  // larger blocks: enough independent sums per sample
+    if (N) n = N;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
@@ -144,25 +149,12 @@ inline __attribute__((always_inline)) void accumulate(const Batch& batch, int co
 /// The same for Filter::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
 template <int N>
 inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
-  if (N) n = N;
-  if constexpr (N == 1 || N == 2) {  // runs: the whole block in registers, as accumulate
-    for (int s = 0; s < count;) {
-      const int e = runEnd(batch, s, count);
-      Sum* block = buffer + batch.at[s];
-      V4 acc[N * N];
-#pragma GCC unroll 4
-      for (int p = 0; p < N * N; ++p) acc[p] = block[(p / N) * width + p % N].v;
-      for (int t = s; t < e; ++t) {
-        const V4 L = __builtin_convertvector(batch.L[t], V4);
-#pragma GCC unroll 4
-        for (int p = 0; p < N * N; ++p)
-          acc[p] += L * static_cast<double>(p % N < batch.nx[t]) * static_cast<double>(p / N < batch.ny[t]);
-      }
-#pragma GCC unroll 4
-      for (int p = 0; p < N * N; ++p) block[(p / N) * width + p % N].v = acc[p];
-      s = e;
-    }
+  if constexpr (N == 1 || N == 2) {
+    addRuns<N>(batch, count, buffer, width, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+      sum += L * static_cast<double>(p % N < batch.nx[t]) * static_cast<double>(p / N < batch.ny[t]);
+    });
   } else {
+    if (N) n = N;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
