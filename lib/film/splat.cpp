@@ -18,6 +18,11 @@
 // time (setup8), the scalar loop's operations lane by lane; a group with
 // any sample it does not handle (near the image's first rows and columns,
 // partly outside the band, wider than a block, not finite) goes one by one.
+//
+// In this file, in order: the band buffers (Sum, SumPages) and the batch;
+// the accumulation kernels (addRuns, accumulate, accumulateUnit, pickKernel);
+// the 8-sample set-up (Reach, bounds8, setup8); addPlainSums; the work
+// spaces; the pass per radius (splatSameRadius); splatAll.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -217,7 +222,7 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
 /// 0 = every one of them is skipped; 1 = all 8 go in the batch, written at b[count .. count + 7]; 2 = some
 /// other mix (the caller takes them one by one). Only for footprints at |p| >= r + 2 on both axes,
 /// where centresWithin computes the bounds in double.
-[[gnu::target("avx2")]] int setup8(const FilmSample* q, const Reach& c, Batch& b, int count) {
+[[gnu::target("avx2")]] int setup8(const FilmSample* q, Reach c, Batch& b, int count) {
   // (x, y) of each sample as one 64-bit load, then x and y apart (faster than two gathers)
   auto pair = [q](int s) {
     double v;
@@ -374,10 +379,9 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       }
       count = 0;
     };
-    // (local copies: the captured ones would be reloaded after every store into the batch)
-    const float radius = r, lo = -r - 1, xHi = W + r + 1, yHi = H + r + 1;
-    const int lastColumn = W - 1, lastRow = j1 - 1, block = pad, stride = width;
-    const Reach reach{radius, lo, xHi, yHi, lastColumn, j0, lastRow, block, stride};
+    // (a local copy, passed to setup8 by value: captured values would be reloaded after every store into
+    // the batch)
+    const Reach c{r, -r - 1, W + r + 1, H + r + 1, W - 1, j0, j1 - 1, pad, width};
     for (int sj = 0; sj < H; ++sj) {
       if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
       const FilmSample* row = samples.pixel(0, sj);
@@ -385,7 +389,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       for (; k < rowSamples; ++k) {
         if (vectorSetup && k == next && k + 8 <= rowSamples) {
           if (count > kBatch - 8) flush();
-          const int status = setup8(row + k, reach, b, count);
+          const int status = setup8(row + k, c, b, count);
           if (status != 2) {  // all 8 skipped or all 8 in the batch
             if (status == 1 && (count += 8) == kBatch) flush();
             k += 7, next = k + 1;
@@ -394,13 +398,13 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
           next = k + 8;  // these 8 one by one
         }
         const FilmSample& q = row[k];
-        if (!finiteSample(q) || !(q.x > lo && q.x < xHi && q.y > lo && q.y < yHi)) continue;
+        if (!finiteSample(q) || !(q.x > c.lo && q.x < c.xHi && q.y > c.lo && q.y < c.yHi)) continue;
         int ilo, ihi, jlo, jhi;
-        centresWithin(q.x, radius, ilo, ihi), centresWithin(q.y, radius, jlo, jhi);
-        ilo = std::max(ilo, 0), ihi = std::min(ihi, lastColumn), jlo = std::max(jlo, j0), jhi = std::min(jhi, lastRow);
+        centresWithin(q.x, c.radius, ilo, ihi), centresWithin(q.y, c.radius, jlo, jhi);
+        ilo = std::max(ilo, 0), ihi = std::min(ihi, c.lastColumn), jlo = std::max(jlo, c.j0), jhi = std::min(jhi, c.lastRow);
         if (ilo > ihi || jlo > jhi) continue;
         const F4 L = {q.L[0], q.L[1], q.L[2], 1.f};
-        if (ihi - ilo >= block || jhi - jlo >= block) {  // wider than a block: on its own, in sample order
+        if (ihi - ilo >= c.block || jhi - jlo >= c.block) {  // wider than a block: on its own, in sample order
           flush();
           for (int f = 0; f < K; ++f)
             for (int j = jlo; j <= jhi; ++j)
@@ -412,7 +416,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
           continue;
         }
         b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
-        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * stride + ilo, b.L[count] = L;
+        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * c.stride + ilo, b.L[count] = L;
         b.nx[count] = ihi - ilo + 1, b.ny[count] = jhi - jlo + 1;
         if (++count == kBatch) flush();
       }
