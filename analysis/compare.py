@@ -10,7 +10,8 @@ the metrics (mse, aliasing, noise, mse_area) that changed by more than their
 seed-to-seed uncertainty and the timings (trace_ms, reconstruct_ms and their
 sum) whose ratio exceeds --time-ratio either way (rows where both times are
 below --min-ms are ignored). Exit status: 1 when some mse got significantly
-worse (a regression), 2 on bad input, 0 otherwise.
+worse (a regression), 2 on bad input (including two CSVs without a
+configuration in common), 0 otherwise.
 
 Uncertainty. Write a pixel's error in seed k as e = b + eps, with b the
 structured part (aliasing) and eps the seed-dependent part, Var eps = s^2
@@ -147,6 +148,10 @@ def main(argv=None):
     metrics, times, only_b, only_a = compare(before, after, args.z, args.time_ratio, args.min_ms, args.rel_tol,
                                              args.independent_pixels)
     matched = len(before) - len(only_b)
+    if matched == 0:
+        common.fail(f"no configuration is in both {args.before} and {args.after}: they match on "
+                    f"(scene, width, height, sampler, spp, filter, radius, filter_params, reconstruction); "
+                    f"compare two runs of the same study (e.g. sweep --preset default before and after a change)")
     print(f"matched {matched} configuration(s); {len(only_b)} only in {args.before}, "
           f"{len(only_a)} only in {args.after}")
     for name, keys in ((args.before, only_b), (args.after, only_a)):

@@ -132,7 +132,8 @@ TEST_P(BadInput, SceneFileErrorsHaveTheExactClassAndLine) {
   const Case& c = GetParam();
   if (c.errorClass != "ParseError" && c.errorClass != "FileError") GTEST_SKIP() << "not a scene-file case";
   const auto argv = split(c.argv, " ");
-  auto it = std::find(argv.begin(), argv.end(), c.program == "sweep" ? "--scenes" : "-input");
+  auto it = std::find(argv.begin(), argv.end(),
+                      c.program == "sweep" ? "--scenes" : c.program == "reference" ? "--scene" : "-input");
   ASSERT_NE(it, argv.end());
   std::string input = replaceAll(*(it + 1), "@DIR@", kDir);
   input = replaceAll(input, "@SRC@", ALIASLAB_SOURCE_DIR);

@@ -1,7 +1,9 @@
 // The sweep's guarantees: resume after truncation or kill -9, shards merged
 // under GNU parallel equal one run, one trace per sample set whatever the
 // number of filters, the theory's orderings on the zone plate, and bad input
-// refused before any work. Tiny sizes (24x24, <= 16 spp, 256-spp references).
+// refused before any work, a merge refusing an incomplete set of shards, and
+// reference manifests that point at the cached images. Tiny sizes (24x24,
+// <= 16 spp, 256-spp references).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
@@ -12,6 +14,8 @@
 #include <sstream>
 
 #include "scratch_dir.h"
+#include "core/error.h"
+#include "study/config.h"
 #include "study/csv.h"
 #include "study/sweep.h"
 
@@ -154,11 +158,55 @@ echo $((1000 + RANDOM))
   for (std::string line; std::getline(log, line);) jobs.push_back(line);
   ASSERT_EQ(jobs.size(), 3u);
   EXPECT_NE(jobs[0].find("--refs-only"), std::string::npos) << jobs[0];
+  // the references use the task's cores, not the shards' --threads 1
+  EXPECT_NE(jobs[0].find("--threads ${SLURM_CPUS_PER_TASK:-0}"), std::string::npos) << jobs[0];
+  EXPECT_EQ(jobs[0].find("--threads 1"), std::string::npos) << jobs[0];
   EXPECT_NE(jobs[1].find("--array=0-2"), std::string::npos) << jobs[1];
   EXPECT_NE(jobs[1].find("--dependency=afterok:"), std::string::npos) << jobs[1];
   EXPECT_NE(jobs[2].find("--merge"), std::string::npos) << jobs[2];
   EXPECT_NE(jobs[2].find("study.shard-2-of-3.csv"), std::string::npos) << jobs[2];
   EXPECT_EQ(withoutThreads(withoutTiming((dir / "study.csv").string())), withoutThreads(withoutTiming(fullCsv())));
+}
+
+TEST(SweepShards, MergeRefusesAnIncompleteSetOfShardFiles) {
+  const fs::path dir = workDir() / "incomplete";
+  fs::create_directories(dir);
+  std::vector<std::string> shard;
+  for (int i = 0; i < 3; ++i) {
+    shard.push_back((dir / ("study.shard-" + std::to_string(i) + "-of-3.csv")).string());
+    std::ofstream(shard.back()) << csvHeader() << "\n";
+  }
+  const std::string merged = (dir / "merged.csv").string();
+  std::string output;
+  EXPECT_EQ(run("--merge " + merged + " " + shard[0] + " " + shard[2], &output), 2);
+  EXPECT_NE(output.find("--merge: shard 1 of 3 is missing"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(merged));
+  EXPECT_EQ(run("--merge " + merged + " " + shard[2] + " " + shard[0] + " " + shard[1], &output), 0) << output;
+  EXPECT_TRUE(fs::exists(merged));
+
+  // In-process: every shard once, of one split; other names are not checked.
+  EXPECT_NO_THROW(checkShardSet({"a/study.shard-1-of-2.csv", "b/study.shard-0-of-2.csv", "mine.csv"}));
+  EXPECT_THROW(checkShardSet({"study.shard-0-of-2.csv", "study.shard-1-of-3.csv"}), OptionError);  // two splits
+  EXPECT_THROW(checkShardSet({"study.shard-0-of-2.csv", "study.shard-1-of-2.csv", "x/study.shard-1-of-2.csv"}),
+               OptionError);  // one given twice
+  EXPECT_THROW(checkShardSet({"study.shard-0-of-1.csv", "study.shard-1-of-1.csv"}), OptionError);  // beyond N-1
+}
+
+TEST(SweepOutput, ReferenceManifestsPointAtTheCachedImages) {
+  fullCsv();  // (writes full/references/zoneplate.json)
+  const fs::path manifest = workDir() / "full" / "references" / "zoneplate.json";
+  std::ifstream in(manifest);
+  ASSERT_TRUE(in) << manifest;
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  int images = 0;
+  const std::string field = "\"image\": \"";
+  for (size_t at = text.find(field); at != std::string::npos; at = text.find(field, at + 1)) {
+    const size_t from = at + field.size();
+    const std::string image = text.substr(from, text.find('"', from) - from);
+    EXPECT_TRUE(fs::is_regular_file(manifest.parent_path() / image)) << image;
+    ++images;
+  }
+  EXPECT_EQ(images, 3);  // box 0.5, box 1, tent 1
 }
 
 TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {

@@ -96,6 +96,14 @@ class Compare(unittest.TestCase):
         se = compare.standard_errors({"seeds": 8, "noise": 0.5, "aliasing": 0.0, "mse_area": 0.5, "mse": 0.5})
         self.assertAlmostEqual(se["mse"], 0.5 * math.sqrt(2 / 8))
 
+    def test_no_configuration_in_common_exits_2(self):
+        def other_size(r):
+            r["width"] = int(r["width"]) + 1
+        b = synthetic.write(self.path("b.csv"), modify=other_size)
+        code, out = run(self.a, b)
+        self.assertEqual(code, 2, out)
+        self.assertNotIn("no significant accuracy regression", out)
+
     def test_bad_input_exits_2(self):
         with open(self.path("bad.csv"), "w") as f:
             f.write("scene,width\na,1\n")

@@ -1,8 +1,9 @@
-// reference: high-sample ground truth of one scene for several (filter,
-// radius) pairs plus the pixel-area reference (box r = 0.5), in one
-// streamed pass (lib/study/reference.h). Writes one EXR per filter and
+// reference: high-sample ground truth of one scene for every filter x every
+// radius plus the pixel-area reference (box r = 0.5), in one streamed pass
+// (lib/study/reference.h). Writes one EXR per filter and
 // manifest.json into --out; with --cache the references are also looked up
-// in / stored into the sweep's cache.
+// in / stored into the sweep's cache. Bad input (options, scene files)
+// exits 2 before any work, like the sweep; a failure during work exits 1.
 //
 //   reference --scene scenes/zoneplate.txt --filters box,tent,gaussian --radii 0.5,1,2
 //             --spp 4096 --out results/refs/zoneplate
@@ -16,6 +17,7 @@
 #include "core/cli.h"
 #include "core/error.h"
 #include "filter/filter.h"
+#include "study/config.h"
 #include "study/reference.h"
 #include "study/study_scene.h"
 
@@ -34,7 +36,8 @@ int main(int argc, char** argv) {
   app.add_option("--filters", filters, "filter names")->delimiter(',')->capture_default_str();
   app.add_option("--radii", radii, "radii in pixels (every filter x every radius)")->delimiter(',')->capture_default_str();
   app.add_option("--size", size, "W H (default: the scene's # render: line)")->expected(2);
-  app.add_option("--spp", o.spp, "samples per pixel in total")->capture_default_str();
+  app.add_option("--spp", o.spp, "samples per pixel in total: even, two halves of whole batches (the error estimate)")
+      ->capture_default_str();
   app.add_option("--sampler", o.sampler, "scrambled low-discrepancy sampler")->capture_default_str();
   app.add_option("--seed", o.seed, "base seed of the batch scrambles")->check(CLI::NonNegativeNumber)->capture_default_str();
   app.add_option("--batch", o.batchSpp, "samples per pixel per streamed batch")->capture_default_str();
@@ -44,19 +47,24 @@ int main(int argc, char** argv) {
   if (const int rc = parseCommandLine(app, argc, argv, "reference"); rc >= 0) return rc;
 
   try {
-    // Validate everything before work.
-    validateReferenceOptions(o);
+    // Validate everything before work; messages name this program's options.
+    relabelOption("--ref-spp", "--spp", [&] { relabelOption("--ref-batch", "--batch", [&] { validateReferenceOptions(o); }); });
+    if (o.threads < 0) throw OptionError("--threads", "must be >= 0");
+    if (filters.empty()) throw OptionError("--filters", "needs at least one filter");
+    if (radii.empty()) throw OptionError("--radii", "needs at least one radius");
     if (!fs::is_regular_file(scenePath)) throw FileError(scenePath, "scene file not found");
     std::vector<FilterSpec> specs{{"box", 0.5}};
     for (const std::string& f : filters)
       for (double r : radii) {
-        makeFilter(f, static_cast<float>(r));
+        relabelOption("--filter", "--filters", [&] {
+          relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
+        });
         if (std::find(specs.begin(), specs.end(), FilterSpec{f, r}) == specs.end()) specs.push_back({f, r});
       }
     const auto scene = loadStudyScene(scenePath, size.empty() ? 0 : size[0], size.empty() ? 0 : size[1]);
-    std::error_code ec;
-    fs::create_directories(out, ec);
-    if (!fs::is_directory(out)) throw OptionError("--out", "cannot create folder '" + out + "'");
+    std::vector<std::pair<std::string, std::string>> folders{{out, "--out"}};
+    if (!cache.empty()) folders.emplace_back(cache, "--cache");
+    requireOutputFolders(folders);
 
     // One pass (or the cache), then images and the manifest.
     const ReferenceSet set = cache.empty() ? renderReferences(*scene, specs, o) : cachedReferences(*scene, specs, o, cache);

@@ -4,7 +4,7 @@
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
 //   sweep --preset default                     (the default study, results/study)
-//   sweep ... --shard 2/8                      (a deterministic eighth of the groups)
+//   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
 #include <CLI/CLI.hpp>
@@ -15,6 +15,7 @@
 
 #include "core/cli.h"
 #include "core/error.h"
+#include "study/config.h"
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/sweep.h"
@@ -48,7 +49,6 @@ int main(int argc, char** argv) {
   std::string preset, shard;
   std::vector<int> size;
   std::vector<std::string> merge;
-  bool images = true;
   app.set_config("--config", "", "read options from a TOML/INI file (keys = long option names)");
   app.add_option("--preset", preset, "'default': the default study (explicit options still override)")
       ->check(CLI::IsMember({"default"}));
@@ -71,17 +71,19 @@ int main(int argc, char** argv) {
   app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
   app.add_option("--cache", c.cache, "reference cache folder")->capture_default_str();
   app.add_option("--threads", c.threads, "worker threads (0 = all cores)")->capture_default_str();
-  auto* imagesOpt = app.add_flag("--images,!--no-images", images,
-                                 "write images (default: on when the study has at most 200 configurations)");
-  app.add_option("--shard", shard, "i/N: run the groups g with g mod N == i");
+  bool imagesOn = false, imagesOff = false, quiet = false;
+  app.add_flag("--images", imagesOn, "write images (default: when the study has at most 200 configurations)");
+  app.add_flag("--no-images", imagesOff, "write no images");
+  app.add_option("--shard", shard, "i/N, i = 0..N-1: run the groups g with g mod N == i");
   app.add_flag("--refs-only", c.refsOnly, "render and cache the references, then stop");
-  app.add_flag("!--quiet", c.progress, "no progress output");
-  app.add_option("--merge", merge, "OUT IN1 [IN2 ...]: merge shard CSVs into OUT in canonical order, then stop")
-      ->expected(2, 100000);
+  app.add_flag("--quiet", quiet, "no progress output");
+  app.add_option("--merge", merge, "merge the shard CSVs IN1 IN2 ... into OUT in canonical order, then stop")
+      ->expected(2, -1)->option_text("OUT IN1 [IN2 ...]");
   if (const int rc = parseCommandLine(app, argc, argv, "sweep"); rc >= 0) return rc;
 
   try {
     if (!merge.empty()) {
+      checkShardSet(std::vector<std::string>(merge.begin() + 1, merge.end()));
       mergeCsvFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
       // Contact sheets of the whole study when the shards wrote images beside it.
       const auto images = std::filesystem::path(merge[0]).parent_path() / "images";
@@ -89,7 +91,9 @@ int main(int argc, char** argv) {
       std::printf("merged %zu files into %s\n", merge.size() - 1, merge[0].c_str());
       return 0;
     }
-    if (imagesOpt->count()) c.images = images;
+    if (imagesOn && imagesOff) throw OptionError("--images", "give --images or --no-images, not both");
+    if (imagesOn || imagesOff) c.images = imagesOn;
+    c.progress = !quiet;
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
     const SweepSummary s = runSweep(c);

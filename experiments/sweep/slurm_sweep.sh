@@ -16,13 +16,14 @@ set -euo pipefail
 source "$(dirname "$0")/shard_args.sh" "$@"
 # shellcheck disable=SC2086
 quoted=$(printf '%q ' "${SWEEP_ARGS[@]}")
+refQuoted=$(printf '%q ' "${REF_ARGS[@]}")
 mkdir -p "$OUT/slurm"
 # Each task uses the cores Slurm gives it, unless the options say otherwise.
 threads='--threads ${SLURM_CPUS_PER_TASK:-0}'
 [[ -n $THREADS_GIVEN ]] && threads=
 
 refs=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep-refs --cpus-per-task=2 \
-  --output="$OUT/slurm/refs-%j.log" --wrap="$SWEEP $quoted --refs-only")
+  --output="$OUT/slurm/refs-%j.log" --wrap="$SWEEP $refQuoted --threads \${SLURM_CPUS_PER_TASK:-0} --refs-only")
 
 array=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep --cpus-per-task=2 \
   --dependency=afterok:$refs --array=0-$((N - 1)) --output="$OUT/slurm/shard-%a.log" \

@@ -43,7 +43,7 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
     throw OptionError("--filter", "unknown filter '" + name + "' (valid: " + list + ")");
   }
   if (!std::isfinite(radius) || radius <= 0)
-    throw OptionError("--radius", "filter radius must be finite and > 0, got " + std::to_string(radius));
+    throw OptionError("--radius", "filter radius must be finite and > 0, got " + formatNumber(radius));
   // Below kMinFilterRadius squared offsets underflow in float; above kMaxFilterRadius
   // the importance weight (the integral of |f|) overflows.
   if (radius < kMinFilterRadius || radius > kMaxFilterRadius)

@@ -6,9 +6,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
 #include <set>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
 #include "study/study_scene.h"
@@ -94,7 +97,36 @@ void parseShard(const std::string& text, int& index, int& count) {
     throw OptionError("--shard", "expected i/N (e.g. 0/4), found '" + text + "'");
   }
   if (count < 1 || index < 0 || index >= count)
-    throw OptionError("--shard", "need 0 <= i < N, found '" + text + "'");
+    throw OptionError("--shard", "need 0 <= i < N (shards are numbered 0 to N-1), found '" + text + "'");
+}
+
+void checkShardSet(const std::vector<std::string>& inputs) {
+  static const std::regex name(R"(shard-(\d+)-of-(\d+)\.csv$)");
+  std::map<int, std::vector<int>> seen;  // N -> the i given
+  for (const std::string& in : inputs) {
+    std::smatch m;
+    const std::string file = fs::path(in).filename().string();
+    if (!std::regex_search(file, m, name)) continue;
+    try {
+      seen[std::stoi(m[2].str())].push_back(std::stoi(m[1].str()));
+    } catch (const std::exception&) {
+      throw OptionError("--merge", "shard number out of range in '" + in + "'");
+    }
+  }
+  if (seen.size() > 1)
+    throw OptionError("--merge", "the inputs are shards of different splits (" + std::to_string(seen.begin()->first) +
+                                     " and " + std::to_string(seen.rbegin()->first) + " shards)");
+  for (auto& [count, given] : seen) {
+    std::sort(given.begin(), given.end());
+    for (int i = 0; i < count; ++i)
+      if (!std::binary_search(given.begin(), given.end(), i))
+        throw OptionError("--merge", "shard " + std::to_string(i) + " of " + std::to_string(count) +
+                                         " is missing (study.shard-" + std::to_string(i) + "-of-" +
+                                         std::to_string(count) + ".csv); the merge would lack its rows");
+    if (given.back() >= count || std::adjacent_find(given.begin(), given.end()) != given.end())
+      throw OptionError("--merge", "shard files of " + std::to_string(count) +
+                                       " shards given twice or numbered beyond N-1");
+  }
 }
 
 std::string csvPath(const StudyConfig& config) {
@@ -107,13 +139,35 @@ std::string csvPath(const StudyConfig& config) {
 }
 
 namespace {
-// A folder we can create and write into (probed with a temporary file).
-void requireWritableFolder(const std::string& dir, const std::string& option) {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir)) throw OptionError(option, "cannot create folder '" + dir + "'");
-  if (::access(dir.c_str(), W_OK) != 0) throw OptionError(option, "folder '" + dir + "' is not writable");
-}
+// The folders a validation created (deepest last), removed again when a later check fails.
+class NewFolders {
+ public:
+  ~NewFolders() {
+    if (keep_) return;
+    std::error_code ec;
+    for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // only if still empty
+  }
+  /// `dir` exists and is writable afterwards, or OptionError(option); remembers what it had to create.
+  void require(const std::string& dir, const std::string& option) {
+    std::vector<fs::path> missing;
+    std::error_code ec;
+    for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+      missing.push_back(p);
+      if (p == p.parent_path()) break;
+    }
+    fs::create_directories(dir, ec);
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it)
+      if (fs::is_directory(*it, ec)) made_.push_back(*it);
+    if (!fs::is_directory(dir, ec)) throw OptionError(option, "cannot create folder '" + dir + "'");
+    if (::access(dir.c_str(), W_OK) != 0) throw OptionError(option, "folder '" + dir + "' is not writable");
+  }
+  /// Every check passed: keep the folders.
+  void keep() { keep_ = true; }
+
+ private:
+  std::vector<fs::path> made_;
+  bool keep_ = false;
+};
 }  // namespace
 
 void validateStudy(const StudyConfig& c) {
@@ -135,7 +189,7 @@ void validateStudy(const StudyConfig& c) {
     if (spp < 1) throw OptionError("--spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
     if (!(std::isfinite(r) && r > 0)) throw OptionError("--radii", "radii must be finite and > 0, found " +
-                                                                      std::to_string(r));
+                                                                      formatNumber(r));
   // Names: the factories' own messages list the valid ones.
   for (const std::string& m : c.reconstruction) parseReconMode(m);
   for (const std::string& s : c.samplers)
@@ -152,13 +206,14 @@ void validateStudy(const StudyConfig& c) {
     loadStudyScene(path, c.width, c.height, c.maxSize);
   }
 
-  // Output folders.
-  requireWritableFolder(c.out, "--out");
-  requireWritableFolder(fs::path(csvPath(c)).parent_path().string().empty()
-                            ? "."
-                            : fs::path(csvPath(c)).parent_path().string(),
-                        "--csv");
-  requireWritableFolder(c.cache, "--cache");
+  // Output folders: all or none (a failed check removes the folders made before it).
+  requireOutputFolders({{c.out, "--out"}, {fs::path(csvPath(c)).parent_path().string(), "--csv"}, {c.cache, "--cache"}});
+}
+
+void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders) {
+  NewFolders made;
+  for (const auto& [dir, option] : folders) made.require(dir.empty() ? "." : dir, option);
+  made.keep();
 }
 
 }  // namespace aliaslab

@@ -76,6 +76,15 @@ std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& conf
 /// Parses "i/N" (0 <= i < N). Throws OptionError("--shard").
 void parseShard(const std::string& text, int& index, int& count);
 
+/// Checks the inputs of `sweep --merge`: among files named *shard-i-of-N.csv (the sweep's own names), every i
+/// in 0..N-1 must be there once, all with the same N, so a merge cannot silently lack a shard's rows. Files
+/// named otherwise (a --csv path) are not checked. Throws OptionError("--merge").
+void checkShardSet(const std::vector<std::string>& inputs);
+
+/// Creates every (folder, option) that is missing and checks that it is writable; when one fails, the folders
+/// created before it are removed again (nothing is left behind) and OptionError(option) is thrown.
+void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders);
+
 /// Checks names, numbers, scenes (existence and parse) and the output
 /// folder (created if missing, must be writable). Throws InputError.
 void validateStudy(const StudyConfig& config);

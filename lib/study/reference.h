@@ -81,7 +81,7 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
 
 /// JSON manifest of a reference set: scene, size, flags, spp, sampler, seed,
 /// git revision, seconds, and per filter describe(), ref_error, key, image file.
-/// `imageNames[i]` is the image file written for filter i ("" for none).
+/// `imageNames[i]` is the image file of filter i as a path from the manifest's folder ("" for none).
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames);
 

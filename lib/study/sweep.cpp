@@ -143,9 +143,14 @@ SweepSummary runSweep(const StudyConfig& config) {
     const ReferenceImage& area = *refOf.at(kArea);
     const fs::path imageDir = fs::path(config.out) / "images" / scene->stem;
     if (!config.refsOnly) {
+      // each image as a path from the manifest's folder to the cached EXR
+      const fs::path manifests = fs::path(config.out) / "references";
       std::vector<std::string> names;
-      for (const auto& r : refs.images) names.push_back("cache/" + r.key + ".exr");
-      fs::create_directories(fs::path(config.out) / "references");
+      for (const auto& r : refs.images)
+        names.push_back((fs::absolute(fs::path(config.cache) / (r.key + ".exr")).lexically_normal())
+                            .lexically_relative(fs::absolute(manifests).lexically_normal())
+                            .string());
+      fs::create_directories(manifests);
       writeTextFile((fs::path(config.out) / "references" / (scene->stem + ".json")).string(),
                     referenceManifest(*scene, refs, names));
       if (sum.images) {
