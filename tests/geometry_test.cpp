@@ -95,20 +95,26 @@ TEST(Sphere, RespectsTminAndCurrentHit) {
 // ---- Plane: n.P = d ----------------------------------------------------------
 
 TEST(Plane, HitAtOffsetOverNormalDotDirection) {
-  Plane p({0, 2, 0}, 3.f, kMatA);  // normalised to y = 3
+  Plane p({0, 2, 0}, 3.f, kMatA);  // 2 y = 3: the plane y = 1.5 (SCENE_FORMAT: n.P = d for the n given)
   Hit h;
   ASSERT_TRUE(p.intersect(makeRay({0, 0, 0}, {1, 0.5f, 0}), 0.f, h));
-  EXPECT_FLOAT_EQ(h.t, 6.f);
+  EXPECT_FLOAT_EQ(h.t, 3.f);
   EXPECT_EQ(h.normal, Vec3(0, 1, 0));  // geometric normal from either side
   Hit back;
   ASSERT_TRUE(p.intersect(makeRay({0, 10, 0}, {0, -1, 0}), 0.f, back));
+  EXPECT_FLOAT_EQ(back.t, 8.5f);
   EXPECT_EQ(back.normal, Vec3(0, 1, 0));
   Hit parallel;
   EXPECT_FALSE(p.intersect(makeRay({0, 0, 0}, {1, 0, 0}), -kInf, parallel));
   Hit behindOrigin;
   EXPECT_FALSE(p.intersect(makeRay({0, 0, 0}, {0, -1, 0}), 0.f, behindOrigin));
   ASSERT_TRUE(p.intersect(makeRay({0, 0, 0}, {0, -1, 0}), -kInf, behindOrigin));
-  EXPECT_FLOAT_EQ(behindOrigin.t, -3.f);
+  EXPECT_FLOAT_EQ(behindOrigin.t, -1.5f);
+  // a unit normal keeps d as it is, bit for bit (|n| = 1 exactly)
+  Plane unit({0, 1, 0}, 0.3f, kMatA);
+  Hit u;
+  ASSERT_TRUE(unit.intersect(makeRay({0, 0, 0}, {0, 1, 0}), 0.f, u));
+  EXPECT_EQ(u.t, 0.3f);
   EXPECT_FALSE(p.bounded());
 }
 

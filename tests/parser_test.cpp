@@ -165,8 +165,8 @@ TEST(ParserGroup, PrimitivesNestedGroupsAndMaterialIndex) {
   h = shoot(s, Vec3(2.2f, 0.2f, 10), Vec3(0, 0, -1));  // the triangle inherits MaterialIndex 1
   EXPECT_NEAR(h.t, 10.f, 1e-5f);
   EXPECT_EQ(h.material, s.materials[1].get());
-  h = shoot(s, Vec3(-3, 0, 10), Vec3(0, 0, -1));  // plane z = -5 (normal normalised)
-  EXPECT_NEAR(h.t, 15.f, 1e-5f);
+  h = shoot(s, Vec3(-3, 0, 10), Vec3(0, 0, -1));  // n.P = d: 2 z = -5, the plane z = -2.5
+  EXPECT_NEAR(h.t, 12.5f, 1e-5f);
   EXPECT_EQ(h.material, s.materials[1].get());
 }
 

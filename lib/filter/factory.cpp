@@ -1,4 +1,5 @@
-// makeFilter: one explicit if-chain over the names, parameter checking.
+// The one table of filter names (filterNames() order, shape parameters and their defaults) and
+// makeFilter(): name, radius and parameter checks, then the filter's make function.
 #include <algorithm>
 #include <cmath>
 
@@ -16,30 +17,60 @@ constexpr float kMinFilterRadius = 1e-3f, kMaxFilterRadius = 1024.f;
 namespace filterimpl {
 void requireRange(const std::string& filter, const std::string& param, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi))
-    throw OptionError("--filter-param", filter + " " + param + " must be in [" + std::to_string(lo) + ", " +
-                                            std::to_string(hi) + "], got " + std::to_string(value));
+    throw OptionError("--filter-param", filter + " " + param + " must be in [" + formatNumber(lo) + ", " +
+                                            formatNumber(hi) + "], got " + formatNumber(value));
 }
 }  // namespace filterimpl
 
+namespace {
+using Maker = std::unique_ptr<Filter> (*)(float, const FilterParams&);
+struct Entry {
+  const char* name;
+  Maker make;        ///< declared in filter_impl.h, defined in the filter's own file
+  FilterParams defaults;  ///< every shape parameter the filter takes, with its default
+};
+// Registered filters, in the fixed order of filterNames(): adding a filter is its file, its make function's
+// declaration in filter_impl.h and one line here.
+const std::vector<Entry>& registry() {
+  using namespace filterimpl;
+  static const std::vector<Entry> entries = {
+      {"box", makeBox, {}},
+      {"tent", makeTent, {}},
+      {"gaussian", makeGaussian, {{"sigma", 0.5}, {"subtract_edge", 0}}},
+      {"mitchell", makeMitchell, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}}},
+      {"catmullrom", makeCatmullRom, {}},
+      {"lanczos", makeLanczos, {{"tau", 3}}},
+      {"hann", makeHann, {{"tau", 3}}},
+      {"blackmanharris", makeBlackmanHarris, {}},
+  };
+  return entries;
+}
+const Entry* find(const std::string& name) {
+  for (const Entry& e : registry())
+    if (name == e.name) return &e;
+  return nullptr;
+}
+}  // namespace
+
 const std::vector<std::string>& filterNames() {
-  static const std::vector<std::string> names = {"box",     "tent", "gaussian", "mitchell", "catmullrom",
-                                                 "lanczos", "hann", "blackmanharris"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const Entry& e : registry()) v.emplace_back(e.name);
+    return v;
+  }();
   return names;
 }
 
 FilterParams defaultFilterParams(const std::string& name) {
-  if (name == "gaussian") return {{"sigma", 0.5}, {"subtract_edge", 0}};
-  if (name == "mitchell") return {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}};
-  if (name == "lanczos" || name == "hann") return {{"tau", 3}};
-  return {};
+  const Entry* e = find(name);
+  return e ? e->defaults : FilterParams{};
 }
 
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params) {
-  using namespace filterimpl;
-  const auto& names = filterNames();
-  if (std::find(names.begin(), names.end(), name) == names.end()) {
+  const Entry* entry = find(name);
+  if (!entry) {
     std::string list;
-    for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+    for (const auto& n : filterNames()) list += (list.empty() ? "" : ", ") + n;
     throw OptionError("--filter", "unknown filter '" + name + "' (valid: " + list + ")");
   }
   if (!std::isfinite(radius) || radius <= 0)
@@ -51,7 +82,7 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
                                       formatNumber(kMaxFilterRadius) + "] pixels, got " + formatNumber(radius));
 
   // merge the given shape parameters over the defaults; unknown names fail
-  FilterParams p = defaultFilterParams(name);
+  FilterParams p = entry->defaults;
   for (const auto& [key, value] : params) {
     if (!p.count(key)) {
       std::string valid;
@@ -60,19 +91,11 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
                                               " (valid: " + (valid.empty() ? "none" : valid) + ")");
     }
     if (!std::isfinite(value))
-      throw OptionError("--filter-param", name + " " + key + " must be finite, got " + std::to_string(value));
+      throw OptionError("--filter-param", name + " " + key + " must be finite, got " + formatNumber(value));
     p[key] = value;
   }
 
-  std::unique_ptr<Filter> f;
-  if (name == "box") f = makeBox(radius, p);
-  else if (name == "tent") f = makeTent(radius, p);
-  else if (name == "gaussian") f = makeGaussian(radius, p);
-  else if (name == "mitchell") f = makeMitchell(radius, p);
-  else if (name == "catmullrom") f = makeCatmullRom(radius, p);
-  else if (name == "lanczos") f = makeLanczos(radius, p);
-  else if (name == "hann") f = makeHann(radius, p);
-  else f = makeBlackmanHarris(radius, p);
+  std::unique_ptr<Filter> f = entry->make(radius, p);
   f->prepare();
   return f;
 }

@@ -1,11 +1,12 @@
-// Plane: n.P = d, hit at t = (d - n.o) / (n.d).
+// Plane: n.P = d for the n given (stored as n / |n| and d / |n|, the same
+// plane), hit at t = (d - n.o) / (n.d).
 #include "geometry/flatten_util.h"
 #include "geometry/primitives.h"
 
 namespace aliaslab {
 
 Plane::Plane(const Vec3& normal, float offset, const Material* material)
-    : normal(normal.normalized()), offset(offset), material(material) {}
+    : normal(normal.normalized()), offset(offset / normal.norm()), material(material) {}
 
 bool Plane::intersect(const Ray& ray, float tmin, Hit& hit) const {
   const float nd = normal.dot(ray.direction);

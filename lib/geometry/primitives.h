@@ -20,7 +20,7 @@ class Sphere final : public Object {
   const Material* material;
 };
 
-/// Plane { normal n offset d }: the infinite plane n.P = d (n normalised on construction).
+/// Plane { normal n offset d }: the infinite plane n.P = d, whatever |n| (kept as n / |n| and d / |n|).
 class Plane final : public Object {
  public:
   Plane(const Vec3& normal, float offset, const Material* material);
