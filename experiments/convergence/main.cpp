@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -20,8 +21,10 @@
 #include "core/cli.h"
 #include "study/reference.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/format.h"
 #include "sampling/sampler.h"
+#include "study/config.h"
 #include "study/convergence.h"
 
 namespace fs = std::filesystem;
@@ -59,20 +62,30 @@ int main(int argc, char** argv) {
   app.add_option("--realisations", p.realisations, "Independent sets per (sampler, N)")->capture_default_str()
       ->check(CLI::Range(2, 1 << 20));
   app.add_option("--max-n", p.maxN, "Largest N")->capture_default_str()->check(CLI::Range(16, 1 << 16));
-  app.add_option("--fit-min", p.fitMin, "Smallest N in the slope fit")->capture_default_str();
+  auto* fitMinOpt = app.add_option("--fit-min", p.fitMin, "Smallest N in the slope fit (at most --max-n / 2 by default)")
+                        ->capture_default_str();
   app.add_option("--fit-max", p.fitMax, "Largest N in the slope fit")->capture_default_str();
-  app.add_option("--seed", p.seed, "Sampler seed")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
   app.add_option("--sampler", p.samplers, "Samplers to run (default: all)");
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
   app.add_flag("!--no-chart", p.chart, "Skip the chart");
   if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
   try {
+    // Validate everything before work.
     if (p.samplers.empty()) p.samplers = samplerNames();
     for (const auto& s : p.samplers) makeSampler(s, 1 << 4, p.seed);  // unknown names fail before any work
-    fs::create_directories(p.out);
-    const auto& fsList = integrands();
+    if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
+    if (!(std::isfinite(p.fitMin) && p.fitMin >= 1)) throw OptionError("--fit-min", "must be a number >= 1, found " + fmt(p.fitMin, "%g"));
+    if (!(std::isfinite(p.fitMax) && p.fitMax >= 1)) throw OptionError("--fit-max", "must be a number >= 1, found " + fmt(p.fitMax, "%g"));
+    p.fitMax = std::min<double>(p.fitMax, p.maxN);  // the fit can only use measured N
+    if (!fitMinOpt->count()) p.fitMin = std::min<double>(p.fitMin, p.maxN / 2);
     const auto ns = sampleCounts(p.maxN);
+    if (std::count_if(ns.begin(), ns.end(), [&](int n) { return (n & (n - 1)) == 0 && n >= p.fitMin && n <= p.fitMax; }) < 2)
+      throw OptionError("--fit-min", "the fit range [" + fmt(p.fitMin, "%g") + ", " + fmt(p.fitMax, "%g") +
+                                         "] (--fit-max capped at --max-n) holds fewer than two powers of two");
+    requireOutputFolders({{p.out, "--out"}});
+    const auto& fsList = integrands();
 
     // Measure: one CSV row per (sampler, integrand, N).
     std::ostringstream csv;
@@ -126,17 +139,17 @@ int main(int argc, char** argv) {
       }
     writeTextFile((fs::path(p.out) / "slopes.md").string(), md.str());
 
-    // Chart through the Python plotter.
-    if (p.chart) {
-      const std::string cmd = "/usr/bin/python3 '" + std::string(ALIASLAB_SOURCE_DIR) +
-                              "/analysis/convergence_chart.py' '" + (fs::path(p.out) / "convergence.csv").string() +
-                              "' --out '" + p.out + "' --fit-min " + fmt(p.fitMin, "%g") + " --fit-max " +
-                              fmt(p.fitMax, "%g");
-      if (std::system(cmd.c_str()) != 0) std::cerr << "warning: the chart failed: " << cmd << "\n";
-    }
+    // Chart through the Python plotter (arguments passed as they are: no shell).
+    if (p.chart && runProgram({"/usr/bin/python3", std::string(ALIASLAB_SOURCE_DIR) + "/analysis/convergence_chart.py",
+                               (fs::path(p.out) / "convergence.csv").string(), "--out", p.out, "--fit-min",
+                               fmt(p.fitMin, "%g"), "--fit-max", fmt(p.fitMax, "%g")}) != 0)
+      std::cerr << "convergence: warning: the chart failed (analysis/convergence_chart.py); the CSV and slopes.md are written\n";
     std::cout << "wrote " << p.out << "/convergence.csv and slopes.md\n";
   } catch (const InputError& e) {
     std::cerr << "convergence: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "convergence: failed: " << e.what() << "\n";
     return 1;
   }
   return 0;

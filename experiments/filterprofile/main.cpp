@@ -14,6 +14,7 @@
 // Filters are drawn at their natural radius (box 0.5, tent 1, gaussian 1.5 =
 // 3 sigma, mitchell and catmullrom 2, lanczos and hann 3, blackmanharris 2).
 #include <CLI/CLI.hpp>
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -89,6 +90,14 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.1, 16.0));
   if (const int rc = parseCommandLine(app, argc, argv, "filterprofile"); rc >= 0) return rc;
   try {
+    if (!p.out.empty()) {  // a file we can write, checked before the work
+      namespace fs = std::filesystem;
+      std::error_code ec;
+      if (fs::is_directory(p.out, ec)) throw OptionError("--out", "'" + p.out + "' is a folder; give a CSV file name");
+      const fs::path dir = fs::path(p.out).parent_path().empty() ? fs::path(".") : fs::path(p.out).parent_path();
+      if (!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
+        throw OptionError("--out", "cannot write into folder '" + dir.string() + "'");
+    }
     std::ostringstream os;
     os << "filter,radius,describe,kind,x,value\n";
     for (const auto& name : filterNames()) writeFilter(os, *makeFilter(name, naturalRadius(name)), p);
@@ -99,6 +108,9 @@ int main(int argc, char** argv) {
     }
   } catch (const InputError& e) {
     std::cerr << "filterprofile: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "filterprofile: failed: " << e.what() << "\n";
     return 1;
   }
   return 0;

@@ -26,8 +26,10 @@
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
+#include "core/files.h"
 #include "core/format.h"
 #include "sampling/sampler.h"
+#include "study/config.h"
 #include "study/pointset.h"
 
 namespace fs = std::filesystem;
@@ -68,16 +70,19 @@ int main(int argc, char** argv) {
   app.add_option("--extent", p.extent, "Periodogram half-width in units of sqrt(N)")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 16.0));
-  app.add_option("--seed", p.seed, "Sampler seed")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
   app.add_option("--sampler", p.samplers, "Samplers (default: all)");
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
   app.add_flag("!--no-chart", p.chart, "Skip the chart");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
   try {
+    // Validate everything before work: every sampler at every count.
     if (p.samplers.empty()) p.samplers = samplerNames();
-    for (const auto& s : p.samplers) makeSampler(s, p.counts.front(), p.seed);  // unknown names fail first
-    fs::create_directories(p.out);
+    for (const auto& s : p.samplers)
+      for (int n : p.counts) relabelOption("--spp", "--counts", [&] { makeSampler(s, n, p.seed); });
+    if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
+    requireOutputFolders({{p.out, "--out"}});
 
     // One job per (sampler, N); each writes only its own result and images.
     std::vector<Result> results(p.samplers.size() * p.counts.size());
@@ -125,14 +130,16 @@ int main(int argc, char** argv) {
     writeTextFile((fs::path(p.out) / "pointsets.csv").string(), table.str());
     writeTextFile((fs::path(p.out) / "spectra.csv").string(), spectra.str());
 
-    if (p.chart) {
-      const std::string cmd = "/usr/bin/python3 '" + std::string(ALIASLAB_SOURCE_DIR) +
-                              "/analysis/pointset_chart.py' '" + p.out + "' --out '" + p.out + "'";
-      if (std::system(cmd.c_str()) != 0) std::cerr << "warning: the chart failed: " << cmd << "\n";
-    }
+    // Charts through the Python plotter (arguments passed as they are: no shell).
+    if (p.chart && runProgram({"/usr/bin/python3", std::string(ALIASLAB_SOURCE_DIR) + "/analysis/pointset_chart.py",
+                               p.out, "--out", p.out}) != 0)
+      std::cerr << "pointsets: warning: the chart failed (analysis/pointset_chart.py); the CSVs and images are written\n";
     std::cout << "wrote " << p.out << "/pointsets.csv, spectra.csv and images\n";
   } catch (const InputError& e) {
     std::cerr << "pointsets: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "pointsets: failed: " << e.what() << "\n";
     return 1;
   }
   return 0;

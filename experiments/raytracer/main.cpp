@@ -98,10 +98,13 @@ int main(int argc, char** argv) {
   CLI::App app{"raytracer: render a classic course scene file (aliaslab)", "raytracer"};
   RaytracerOptions o;
   addRaytracerOptions(app, o);
-  std::vector<std::string> args = translateClassicFlags(argc, argv);
-  std::reverse(args.begin(), args.end());  // CLI11 takes a vector in reverse order
   try {
+    std::vector<std::string> args = translateClassicFlags(argc, argv);
+    std::reverse(args.begin(), args.end());  // CLI11 takes a vector in reverse order
     app.parse(args);
+  } catch (const OptionError& e) {
+    std::cerr << "raytracer: " << e.what() << "\nRun with --help for the options.\n";
+    return 2;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {

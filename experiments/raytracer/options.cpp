@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "core/cli.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "filter/filter.h"
@@ -82,7 +83,7 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");
   app.add_option("--filter", o.filter, "reconstruction filter: " + filters);
   app.add_option("--radius", o.radius, "filter support radius in pixels");
-  app.add_option("--seed", o.seed, "random seed (default 0)")->check(CLI::NonNegativeNumber);
+  app.add_option("--seed", o.seed, "random seed (default 0)")->check(kSeed);
   app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
   app.footer("The classic flags take one dash as in the course (-input, -size, ...) or two.");
@@ -94,6 +95,14 @@ std::vector<std::string> translateClassicFlags(int argc, char** argv) {
     std::string a = argv[i];
     for (const char* flag : kClassicFlags)
       if (a == std::string("-") + flag) a = "-" + a;
+    // A file name that is really the next flag ("-input -size 9 9"): say so, not "-size is required".
+    const bool takesFile = a == "--input" || a == "--output" || a == "--normals";
+    if (takesFile && i + 1 < argc) {
+      const std::string next = argv[i + 1];
+      for (const char* flag : kClassicFlags)
+        if (next == std::string("-") + flag || next == std::string("--") + flag)
+          throw OptionError(a.substr(1), "needs a file name, found the flag '" + next + "'");
+    }
     args.push_back(a);
   }
   return args;
@@ -149,6 +158,23 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   }
   checkZoomed("-render_samples", o.renderSamples);
   checkZoomed("-render_filter", o.renderFilter);
+  for (const auto* v : {&o.renderSamples, &o.renderFilter})
+    if (!v->empty() && (double(w) * std::stoi((*v)[1]) > 16384 || double(h) * std::stoi((*v)[1]) > 16384))
+      throw OptionError(v == &o.renderSamples ? "-render_samples" : "-render_filter",
+                        "the zoomed image (size x zoom) must be at most 16384 on each side, like -size; found " +
+                            std::to_string(w) + " x " + std::to_string(h) + " at zoom " + (*v)[1]);
+  // Every image its own file (one would silently overwrite another).
+  std::vector<std::pair<std::string, std::string>> files;  // (option, path)
+  if (!o.output.empty()) files.emplace_back("-output", o.output);
+  if (!o.normals.empty()) files.emplace_back("-normals", o.normals);
+  if (!o.depth.empty()) files.emplace_back("-depth", o.depth[2]);
+  if (!o.renderSamples.empty()) files.emplace_back("-render_samples", o.renderSamples[0]);
+  if (!o.renderFilter.empty()) files.emplace_back("-render_filter", o.renderFilter[0]);
+  for (size_t a = 0; a < files.size(); ++a)
+    for (size_t b = a + 1; b < files.size(); ++b)
+      if (fs::weakly_canonical(files[a].second) == fs::weakly_canonical(files[b].second))
+        throw OptionError(files[b].first, "'" + files[b].second + "' is also the " + files[a].first +
+                                              " file; give each image its own name");
   if (o.output.empty() && o.normals.empty() && o.depth.empty() && o.renderSamples.empty() && o.renderFilter.empty())
     throw OptionError("-output", "nothing to write: give -output, -depth, -normals, -render_samples or -render_filter");
 

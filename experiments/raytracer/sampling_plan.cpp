@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "film/visualize.h"
 #include "render/render.h"
 
@@ -85,8 +86,10 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     const std::string fname = classicFilter.substr(0, classicFilter.find('_'));
     float radius = classicFilter[0] == 'b' ? o.boxFilter : o.tentFilter;
     if (fname == "gaussian") {
-      if (!(o.gaussianFilter > 0.f) || !std::isfinite(o.gaussianFilter))
-        throw OptionError("-gaussian_filter", "sigma must be finite and > 0");
+      // the classic support is 2 sigma, and a radius must lie in [0.001, 1024]; sigma itself in [0.001, 1000]
+      if (!(o.gaussianFilter >= 1e-3f && o.gaussianFilter <= 512.f))
+        throw OptionError("-gaussian_filter", "sigma must be in [0.001, 512] pixels (its support is 2 sigma, at most "
+                                              "1024), found " + formatNumber(o.gaussianFilter));
       params["sigma"] = o.gaussianFilter;
       radius = 2.f * o.gaussianFilter;  // classic support ceil(2 sigma - 0.5)
     } else if (!(radius > 0.f) || !std::isfinite(radius)) {
@@ -105,6 +108,9 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   if (!plan.filter && has("reconstruction") && plan.mode != ReconMode::Supersample)
     throw OptionError("--reconstruction", "'" + o.reconstruction + "' needs a filter (--filter or a classic filter flag)");
   if (plan.mode == ReconMode::Supersample) {
+    if (plan.filter)  // (it would be silently ignored)
+      throw OptionError("--reconstruction", "supersample uses its own filters (3x3 binomial, then a box down); drop " +
+                                                std::string(classicFilter.empty() ? "--filter" : "-" + classicFilter));
     const int k = static_cast<int>(std::lround(std::sqrt(double(spp))));
     if (k * k != spp)
       throw OptionError("--spp", "supersample reconstruction needs a square sample count k*k, got " +

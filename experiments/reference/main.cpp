@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
   app.add_option("--spp", o.spp, "samples per pixel in total: even, two halves of whole batches (the error estimate)")
       ->capture_default_str();
   app.add_option("--sampler", o.sampler, "scrambled low-discrepancy sampler")->capture_default_str();
-  app.add_option("--seed", o.seed, "base seed of the batch scrambles")->check(CLI::NonNegativeNumber)->capture_default_str();
+  app.add_option("--seed", o.seed, "base seed of the batch scrambles")->check(kSeed)->capture_default_str();
   app.add_option("--batch", o.batchSpp, "samples per pixel per streamed batch")->capture_default_str();
   app.add_option("--threads", o.threads, "worker threads (0 = all cores)")->capture_default_str();
   app.add_option("--out", out, "output folder for EXR images and manifest.json")->capture_default_str();

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "core/error.h"
@@ -105,7 +106,20 @@ Vec3 TokenStream::vec3(const std::string& field) {
 void TokenStream::fail(int line, const std::string& message) const { throw ParseError(file_, line, message); }
 
 std::string TokenStream::describe(const Token& token) {
-  return token.text.empty() ? "end of file" : "'" + token.text + "'";
+  if (token.text.empty()) return "end of file";
+  // printable as it is; other bytes (a NUL would cut the message short) as \xNN; long tokens cut at 60 bytes
+  std::string out = "'";
+  for (size_t i = 0; i < token.text.size() && i < 60; ++i) {
+    const unsigned char c = static_cast<unsigned char>(token.text[i]);
+    if (c >= 0x20 && c < 0x7f) {
+      out += static_cast<char>(c);
+    } else {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "\\x%02x", c);
+      out += hex;
+    }
+  }
+  return out + (token.text.size() > 60 ? "...'" : "'");
 }
 
 }  // namespace aliaslab::detail
