@@ -170,9 +170,14 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   if (!o.depth.empty()) files.emplace_back("-depth", o.depth[2]);
   if (!o.renderSamples.empty()) files.emplace_back("-render_samples", o.renderSamples[0]);
   if (!o.renderFilter.empty()) files.emplace_back("-render_filter", o.renderFilter[0]);
+  auto same = [](const std::string& x, const std::string& y) {
+    std::error_code ex, ey;
+    const fs::path cx = fs::weakly_canonical(x, ex), cy = fs::weakly_canonical(y, ey);
+    return ex || ey ? fs::absolute(x).lexically_normal() == fs::absolute(y).lexically_normal() : cx == cy;
+  };
   for (size_t a = 0; a < files.size(); ++a)
     for (size_t b = a + 1; b < files.size(); ++b)
-      if (fs::weakly_canonical(files[a].second) == fs::weakly_canonical(files[b].second))
+      if (same(files[a].second, files[b].second))
         throw OptionError(files[b].first, "'" + files[b].second + "' is also the " + files[a].first +
                                               " file; give each image its own name");
   if (o.output.empty() && o.normals.empty() && o.depth.empty() && o.renderSamples.empty() && o.renderFilter.empty())
