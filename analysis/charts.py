@@ -200,8 +200,10 @@ def main(argv=None):
         common.fail(str(e))
     if raw.empty:
         common.fail(f"{args.csv}: no data rows")
+    if args.filter is not None and not (raw["filter"] == args.filter).any():
+        common.fail(f"--filter: no rows with filter '{args.filter}'")
     df = aggregate(raw)
-    os.makedirs(args.out, exist_ok=True)
+    common.prepare_out(args.out)
     speed_accuracy(df, args.out)
     convergence(df, args.out, args.filter)
     heatmaps(df, args.out)

@@ -37,6 +37,25 @@ def fail(message):
     sys.exit(2)
 
 
+def prepare_out(path, option="--out"):
+    """Creates the output folder `path` (or fails, exit 2, naming the option) before anything is written."""
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as e:
+        fail(f"{option}: cannot create folder '{path}': {e.strerror or e}")
+    if not os.access(path, os.W_OK):
+        fail(f"{option}: folder '{path}' is not writable")
+
+
+def require_rows(df, path, columns):
+    """Fails (exit 2) unless df has every column in `columns` and at least one data row."""
+    missing = [c for c in columns if c not in df.columns]
+    if missing:
+        fail(f"{path}: line 1: missing column(s) {', '.join(missing)}")
+    if df.empty:
+        fail(f"{path}: no data rows")
+
+
 def read_study_csv(path):
     """Reads a sweep CSV, checking its columns; returns a DataFrame with
     `time_ms` = trace_ms + reconstruct_ms added. Raises InputError."""

@@ -79,6 +79,8 @@ def main(argv=None):
         df = read(args.csv)
     except (common.InputError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
         common.fail(str(e))
+    common.require_rows(df, args.csv, COLUMNS)
+    common.prepare_out(args.out)
     chart(df, args.out, args.fit_min, args.fit_max)
     return 0
 

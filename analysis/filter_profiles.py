@@ -60,19 +60,17 @@ def main(argv=None):
     src.add_argument("--csv", help="CSV written by filterprofile")
     src.add_argument("--bin", help="the filterprofile executable, run here")
     args = ap.parse_args(argv)
+    common.prepare_out(args.out)
     try:
         if args.csv:
             df = pd.read_csv(args.csv)
         else:
             text = subprocess.run([args.bin], check=True, capture_output=True, text=True).stdout
             df = pd.read_csv(io.StringIO(text))
-            os.makedirs(args.out, exist_ok=True)
             df.to_csv(os.path.join(args.out, "filter_profiles.csv"), index=False)
     except (OSError, subprocess.CalledProcessError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
         common.fail(f"{args.csv or args.bin}: {e}")
-    missing = [c for c in COLUMNS if c not in df.columns]
-    if missing:
-        common.fail(f"{args.csv or args.bin}: line 1: missing column(s) {', '.join(missing)}")
+    common.require_rows(df, args.csv or args.bin, COLUMNS)
     chart(df, args.out)
     return 0
 

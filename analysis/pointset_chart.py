@@ -70,6 +70,9 @@ def main(argv=None):
         sp = pd.read_csv(os.path.join(args.dir, "spectra.csv"))
     except (OSError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
         common.fail(f"{args.dir}: {e}")
+    common.require_rows(ps, os.path.join(args.dir, "pointsets.csv"), ["sampler", "n", "l2star_mean", "l2star_sd", "min_dist_norm_mean"])
+    common.require_rows(sp, os.path.join(args.dir, "spectra.csv"), ["sampler", "n", "sets", "k_norm", "power"])
+    common.prepare_out(args.out)
     spectra_chart(sp, args.out)
     discrepancy_chart(ps, args.out)
     return 0

@@ -11,7 +11,7 @@ tables. Images are referenced by relative paths inside RESULTS_DIR, or
 embedded as base64 data URIs with --embed.
 
 --tables prints Markdown for README.md instead: the Pareto front of every
-scene and the stability counts (from --study, default RESULTS_DIR/study.csv),
+scene and the stability counts (from --study, default RESULTS_DIR/study/study.csv),
 and a summary of the slope verdicts.
 """
 import argparse
@@ -43,15 +43,26 @@ def image_src(results, path, embed):
     return html.escape(os.path.relpath(path, results).replace(os.sep, "/"))
 
 
-def markdown_table(text):
-    """HTML of the first Markdown table in text (header, separator, rows), or ''."""
-    lines = [l for l in text.splitlines() if l.strip().startswith("|")]
-    if len(lines) < 2:
-        return ""
-    cells = [[html.escape(c.strip()) for c in l.strip().strip("|").split("|")] for l in lines]
-    head = "".join(f"<th>{c}</th>" for c in cells[0])
-    body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in cells[2:])
-    return f"<table><tr>{head}</tr>{body}</table>"
+def markdown_tables(text):
+    """HTML of every Markdown table in text (each a run of '|' lines: header, separator, rows), or ''.
+    **bold** inside cells is kept as bold."""
+    blocks, block = [], []
+    for line in text.splitlines() + [""]:
+        if line.strip().startswith("|"):
+            block.append(line)
+        elif block:
+            blocks.append(block)
+            block = []
+    out = []
+    for lines in blocks:
+        if len(lines) < 2 or not set(lines[1].replace("|", "").strip()) <= set("-: "):
+            continue  # not a table: no separator row under the header
+        cells = [[re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", html.escape(c.strip()))
+                  for c in l.strip().strip("|").split("|")] for l in lines]
+        head = "".join(f"<th>{c}</th>" for c in cells[0])
+        body = "".join("<tr>" + "".join(f"<td>{c}</td>" for c in row) + "</tr>" for row in cells[2:])
+        out.append(f"<table><tr>{head}</tr>{body}</table>")
+    return "\n".join(out)
 
 
 def pointset_grid(results, folder, files, embed):
@@ -89,7 +100,7 @@ def section(results, folder, embed):
     for f in files:
         if f.endswith(".md") and f != "README.md":
             with open(os.path.join(folder, f), encoding="utf-8") as fh:
-                table = markdown_table(fh.read())
+                table = markdown_tables(fh.read())
             if table:
                 parts.append(f"<h3>{html.escape(f)}</h3>{table}")
     grid, used = pointset_grid(results, folder, files, embed)
@@ -130,9 +141,14 @@ def build_index(results, embed=False):
             "README.md.</p>" + "\n".join(sections) + "</body></html>\n")
     path = os.path.join(results, "index.html")
     tmp = path + ".partial"
-    with open(tmp, "w", encoding="utf-8") as f:
-        f.write(page)
-    os.replace(tmp, path)
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(page)
+        os.replace(tmp, path)
+    except OSError as e:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        common.fail(f"{results}: cannot write index.html: {e.strerror or e}")
     return path
 
 
@@ -148,8 +164,11 @@ def markdown(df, float_format="{:.4g}"):
 def tables(results, study):
     import charts  # the same aggregation and front as the charts
     out = []
-    if study and os.path.isfile(study):
-        df = charts.aggregate(common.read_study_csv(study))
+    if study:
+        raw = common.read_study_csv(study)
+        if raw.empty:
+            raise common.InputError(f"{study}: no data rows")
+        df = charts.aggregate(raw)
         for scene, sd in df.groupby("scene", sort=True):
             ok = sd[(sd["flagged"] == 0) & (sd["mse"] > 0)].reset_index(drop=True)
             front = ok.iloc[common.pareto_front(ok["time_ms"], ok["mse"])]
@@ -176,14 +195,20 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description="results/index.html and README tables")
     ap.add_argument("results", help="results folder")
     ap.add_argument("--embed", action="store_true", help="embed images as base64 data URIs")
-    ap.add_argument("--study", help="study CSV for --tables (default RESULTS/study.csv)")
+    ap.add_argument("--study", help="study CSV for --tables (default RESULTS/study/study.csv, if present)")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for README.md")
     args = ap.parse_args(argv)
     if not os.path.isdir(args.results):
         common.fail(f"{args.results}: not a folder")
     if args.tables:
         try:
-            tables(args.results, args.study or os.path.join(args.results, "study.csv"))
+            study = args.study
+            if study is None:  # the default study, when there is one
+                default = os.path.join(args.results, "study", "study.csv")
+                study = default if os.path.isfile(default) else None
+                if study is None:
+                    print(f"note: no {default}: only the convergence table", file=sys.stderr)
+            tables(args.results, study)
         except common.InputError as e:
             common.fail(str(e))
         return 0

@@ -73,6 +73,67 @@ class StudyCharts(unittest.TestCase):
         self.assertEqual(cm.exception.code, 2)
 
 
+def exit_code(main, args):
+    """main(args)'s exit status, with stderr silenced (0 when it returns normally)."""
+    with open(os.devnull, "w") as devnull:
+        old, sys.stderr = sys.stderr, devnull
+        try:
+            main(args)
+        except SystemExit as e:
+            return e.code
+        finally:
+            sys.stderr = old
+    return 0
+
+
+class BadInput(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def path(self, *parts):
+        return os.path.join(self.tmp.name, *parts)
+
+    def test_unknown_filter_is_refused_before_anything_is_written(self):
+        csv = synthetic.write(self.path("study.csv"))
+        self.assertEqual(exit_code(charts.main, [csv, "--out", self.path("out"), "--filter", "nosuch"]), 2)
+        self.assertFalse(os.path.exists(self.path("out")))
+
+    def test_an_unusable_out_folder_exits_2(self):
+        csv = synthetic.write(self.path("study.csv"))
+        blocker = self.path("a_file")
+        open(blocker, "w").close()
+        self.assertEqual(exit_code(charts.main, [csv, "--out", os.path.join(blocker, "sub")]), 2)
+        conv = self.path("c.csv")
+        pd.DataFrame([("random", "disk", n, 1.0 / n, 4) for n in (1, 2, 4)],
+                     columns=convergence_chart.COLUMNS).to_csv(conv, index=False)
+        self.assertEqual(exit_code(convergence_chart.main, [conv, "--out", os.path.join(blocker, "sub")]), 2)
+
+    def test_header_only_inputs_are_no_data_rows(self):
+        conv = self.path("c.csv")
+        pd.DataFrame(columns=convergence_chart.COLUMNS).to_csv(conv, index=False)
+        self.assertEqual(exit_code(convergence_chart.main, [conv, "--out", self.path("o")]), 2)
+        prof = self.path("p.csv")
+        pd.DataFrame(columns=filter_profiles.COLUMNS).to_csv(prof, index=False)
+        self.assertEqual(exit_code(filter_profiles.main, ["--csv", prof, "--out", self.path("o")]), 2)
+        ps = self.path("ps")
+        os.makedirs(ps)
+        open(os.path.join(ps, "pointsets.csv"), "w").write("sampler,n\n")
+        open(os.path.join(ps, "spectra.csv"), "w").write("sampler,n,sets,k,k_norm,power\n")
+        self.assertEqual(exit_code(pointset_chart.main, [ps, "--out", ps]), 2)
+
+    def test_every_markdown_table_of_a_file_becomes_its_own_html_table(self):
+        text = ("| a | b |\n|---|---|\n| 1 | **2** |\n\nsome text\n\n| c |\n|---|\n| 3 |\n"
+                "| not | a table |\n")
+        page = report.markdown_tables(text)
+        self.assertEqual(page.count("<table>"), 2)
+        self.assertIn("<th>c</th>", page)
+        self.assertIn("<td><b>2</b></td>", page)
+        self.assertNotIn("<td>c</td>", page)  # the second header is not a row of the first table
+
+
 class OtherCharts(unittest.TestCase):
     def test_convergence_pointset_filter_charts_and_index(self):
         with tempfile.TemporaryDirectory() as tmp:
