@@ -198,8 +198,6 @@ def main(argv=None):
         raw = common.read_study_csv(args.csv)
     except common.InputError as e:
         common.fail(str(e))
-    if raw.empty:
-        common.fail(f"{args.csv}: no data rows")
     if args.filter is not None and not (raw["filter"] == args.filter).any():
         common.fail(f"--filter: no rows with filter '{args.filter}'")
     df = aggregate(raw)

@@ -57,7 +57,7 @@ def require_rows(df, path, columns):
 
 
 def read_study_csv(path):
-    """Reads a sweep CSV, checking its columns; returns a DataFrame with
+    """Reads a sweep CSV, checking its columns and that it has data rows; returns a DataFrame with
     `time_ms` = trace_ms + reconstruct_ms added. Raises InputError."""
     if not os.path.isfile(path):
         raise InputError(f"{path}: no such file")
@@ -68,6 +68,8 @@ def read_study_csv(path):
     missing = [c for c in STUDY_COLUMNS if c not in df.columns]
     if missing:
         raise InputError(f"{path}: line 1: missing column(s) {', '.join(missing)}")
+    if df.empty:
+        raise InputError(f"{path}: no data rows")
     text = {"scene", "sampler", "filter", "filter_params", "reconstruction"}
     for c in STUDY_COLUMNS:
         if c in text:

@@ -144,9 +144,6 @@ def main(argv=None):
         after = unique_rows(common.read_study_csv(args.after), args.after)
     except common.InputError as e:
         common.fail(str(e))
-    for path, df in ((args.before, before), (args.after, after)):
-        if df.empty:
-            common.fail(f"{path}: no data rows")
 
     metrics, times, only_b, only_a = compare(before, after, args.z, args.time_ratio, args.min_ms, args.rel_tol,
                                              args.independent_pixels)

@@ -165,10 +165,7 @@ def tables(results, study):
     import charts  # the same aggregation and front as the charts
     out = []
     if study:
-        raw = common.read_study_csv(study)
-        if raw.empty:
-            raise common.InputError(f"{study}: no data rows")
-        df = charts.aggregate(raw)
+        df = charts.aggregate(common.read_study_csv(study))
         for scene, sd in df.groupby("scene", sort=True):
             ok = sd[(sd["flagged"] == 0) & (sd["mse"] > 0)].reset_index(drop=True)
             front = ok.iloc[common.pareto_front(ok["time_ms"], ok["mse"])]
