@@ -1,5 +1,6 @@
 // The grid must return exactly brute force's closest hit (same primitive,
 // bit-identical t) on every ray, and occluded() must agree with both.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <cmath>

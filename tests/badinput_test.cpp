@@ -5,6 +5,7 @@
 // check the exact exception class and line. Beside the corpus: every prefix
 // of every bundled scene either parses or names the end of the prefix, and
 // the nesting limit is exactly 256 levels.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -8,6 +8,7 @@
 //    centre (|sum| below 1e-8 |f(0,0)|, film/film.h); the CSV must hold the
 //    sums over the seeds exactly;
 //  - the seed-0 PNG written for a row is that configuration's seed-0 image.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <unistd.h>

@@ -3,6 +3,7 @@
 // through the fuzz entry points themselves (tests/fuzz/fuzz_entry.h): each
 // input must end in an InputError or succeed, never crash, throw anything
 // else or break a checked promise. One test per input.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -2,6 +2,7 @@
 // through cameras' rays, lights' illumination, materials' responses and
 // the geometry's bounds and hits), and each malformed input gives a
 // ParseError naming the file, the right line and what was expected.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <cmath>

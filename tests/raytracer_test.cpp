@@ -2,6 +2,7 @@
 // (flat colours at pixel centres, depth and normals of a sphere), the
 // classic visualisations, determinism over thread counts, and every error
 // path (exit code, message, no output file).
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <cmath>

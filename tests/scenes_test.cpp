@@ -2,6 +2,7 @@
 // line, finds its meshes and renders finite values; the analytic pattern
 // scenes reproduce their formulas pixel for pixel, which checks the
 // camera -> plane -> pattern chain end to end.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -3,6 +3,7 @@
 // of an uninterrupted run's time) and just after its CSV reaches k rows —
 // and resumed with the same command each time. The final CSV must equal an
 // uninterrupted run's, field by field except the timing columns.
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -4,6 +4,7 @@
 // refused before any work, a merge refusing an incomplete set of shards, and
 // reference manifests that point at the cached images. Tiny sizes (24x24,
 // <= 16 spp, 256-spp references).
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 

@@ -5,6 +5,7 @@
 // Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations),
 // slopes.md, and (unless --no-chart) convergence.png/.svg drawn by
 // analysis/convergence_chart.py.
+#include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>
 
 #include <algorithm>

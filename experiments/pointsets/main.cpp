@@ -11,6 +11,7 @@
 //   periodogram_<sampler>_<N>.png  mean 2-D periodogram, DC at the centre,
 //                  grey = 0.5 + 0.25 log2 P (P = 1, white noise, is mid-grey)
 // and (unless --no-chart) spectra.png/.svg via analysis/pointset_chart.py.
+#include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cmath>

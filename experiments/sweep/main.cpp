@@ -7,6 +7,7 @@
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
+#include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>

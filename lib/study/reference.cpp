@@ -1,5 +1,7 @@
 #include "study/reference.h"
 
+#include "aliaslab_paths.h"
+
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>

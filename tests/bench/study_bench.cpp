@@ -22,6 +22,7 @@
 // merging), own_avg (the filter's weights and accumulation), resolve_avg
 // (its resolve and metric update) and sums_avg (1/15 of making and freeing
 // the accumulator, whose sums are 4 doubles per pixel and filter).
+#include "aliaslab_paths.h"
 #include <benchmark/benchmark.h>
 
 #include <algorithm>

@@ -9,6 +9,7 @@
 // Trace/grid_34x48x34/vase keeps the former automatic resolution for a
 // before/after comparison in the same run. Embree traces the flattened triangles and tests planes analytically, as
 // the grid does; scenes with other bounded primitives (spheres) are skipped.
+#include "aliaslab_paths.h"
 #include <benchmark/benchmark.h>
 
 #include <array>

@@ -6,6 +6,7 @@
 // scenes/meshes/*.obj (same relative names, so the seeds copied from
 // scenes/*.txt load a mesh; the loader itself is fuzzed by fuzz_obj, and
 // loading the 140 KB knot on every run would cost most of the time).
+#include "aliaslab_paths.h"
 #include <unistd.h>
 
 #include <filesystem>
