@@ -4,6 +4,9 @@
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
 //   sweep --preset default                     (the default study, results/study)
+//   sweep --preset full                        (the full reference study, results/study_full;
+//                                               run it sharded: experiments/run_full_study.sh)
+//   sweep ... --target gaussian:1.5            (decompose the error against another common target)
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
@@ -16,6 +19,8 @@
 
 #include "core/cli.h"
 #include "core/error.h"
+#include "filter/filter.h"
+#include "sampling/sampler.h"
 #include "study/config.h"
 #include "study/contact.h"
 #include "study/csv.h"
@@ -24,6 +29,8 @@
 using namespace aliaslab;
 
 namespace {
+constexpr int kFullRefSpp = 8192;
+
 // The default study: every scene, small sizes, course + modern samplers and
 // filters; measured to finish in under 10 minutes on 2 cores (results/study_speed.md).
 void applyDefaultPreset(StudyConfig& c) {
@@ -39,20 +46,40 @@ void applyDefaultPreset(StudyConfig& c) {
   c.out = "results/study";
   c.images = true;
 }
+
+// The full reference study (docs/science.md, "The full study"): every bundled scene at 256 px on the
+// larger side, every sampler and filter, radii 0.5-2, spp 4, 16, 64, 8 seeds, references at 8192 spp.
+// Hours on 2 cores (results/study_speed.md, "The full study"): run it sharded.
+void applyFullPreset(StudyConfig& c) {
+  c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
+  c.samplers = samplerNames();
+  c.spp = {4, 16, 64};
+  c.filters = filterNames();
+  c.radii = {0.5, 1.0, 1.5, 2.0};
+  c.reconstruction = {"weighted"};
+  c.seeds = 8;
+  c.refSpp = kFullRefSpp;
+  c.longSide = 256;
+  c.out = "results/study_full";
+  c.images = false;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
   StudyConfig c;
   for (int i = 1; i + 1 < argc; ++i)
     if (std::string(argv[i]) == "--preset" && std::string(argv[i + 1]) == "default") applyDefaultPreset(c);
+    else if (std::string(argv[i]) == "--preset" && std::string(argv[i + 1]) == "full") applyFullPreset(c);
 
   CLI::App app{"sweep: measure aliasing, noise and time over samplers x filters x radii (aliaslab)"};
   std::string preset, shard;
   std::vector<int> size;
   std::vector<std::string> merge;
   app.set_config("--config", "", "read options from a TOML/INI file (keys = long option names)");
-  app.add_option("--preset", preset, "'default': the default study (explicit options still override)")
-      ->check(CLI::IsMember({"default"}));
+  app.add_option("--preset", preset,
+                 "'default': the quick default study (results/study); 'full': the full reference study at 256 px "
+                 "(results/study_full, hours: run experiments/run_full_study.sh); explicit options still override")
+      ->check(CLI::IsMember({"default", "full"}));
   app.add_option("--scenes", c.scenes, "scene files or folders of *.txt")->delimiter(',');
   app.add_option("--samplers", c.samplers, "sampler names")->delimiter(',')->capture_default_str();
   app.add_option("--spp", c.spp, "samples per pixel list")->delimiter(',')->capture_default_str();
@@ -67,6 +94,14 @@ int main(int argc, char** argv) {
   app.add_option("--size", size, "W H: image size for every scene (default: each scene's # render: line)")
       ->expected(2);
   app.add_option("--max-size", c.maxSize, "scale scenes down so the larger side is at most this (0 = off)")
+      ->capture_default_str();
+  app.add_option("--long-side", c.longSide,
+                 "scale scenes up or down so the larger side is exactly this (0 = off; overrides --max-size)")
+      ->capture_default_str();
+  app.add_option("--target", c.target,
+                 "the common target T of mse_target, blur and cross: 'area' (the pixel-area reference, box r=0.5, "
+                 "written box:0.5) or filter:radius, e.g. gaussian:1.5 or lanczos:2, rendered and cached with the "
+                 "references (definitions: docs/science.md)")
       ->capture_default_str();
   app.add_option("--out", c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
   app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");

@@ -85,6 +85,32 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
   return out;
 }
 
+std::pair<std::string, double> parseTarget(const std::string& text) {
+  if (text == "area") return {"box", 0.5};
+  const size_t colon = text.find(':');
+  const std::string usage = "expected 'area' or filter:radius (e.g. gaussian:1.5, lanczos:2), found '" + text + "'";
+  if (colon == std::string::npos || colon == 0) throw OptionError("--target", usage);
+  const std::string name = text.substr(0, colon), radius = text.substr(colon + 1);
+  double r = 0;
+  try {
+    size_t used = 0;
+    r = std::stod(radius, &used);
+    if (used != radius.size()) throw std::invalid_argument("x");
+  } catch (const std::exception&) {
+    throw OptionError("--target", usage);
+  }
+  if (!(std::isfinite(r) && r > 0)) throw OptionError("--target", "the radius must be finite and > 0, found '" + text + "'");
+  relabelOption("--filter", "--target", [&] {
+    relabelOption("--radius", "--target", [&] { makeFilter(name, static_cast<float>(r)); });
+  });
+  return {name, r};
+}
+
+std::string targetLabel(const std::string& text) {
+  const auto [name, r] = parseTarget(text);
+  return name + ":" + formatNumber(r);
+}
+
 void parseShard(const std::string& text, int& index, int& count) {
   const size_t slash = text.find('/');
   try {
@@ -185,6 +211,8 @@ void validateStudy(const StudyConfig& c) {
   if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
     throw OptionError("--size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("--max-size", "must be >= 0");
+  if (c.longSide < 0) throw OptionError("--long-side", "must be >= 0");
+  parseTarget(c.target);
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("--spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
@@ -203,7 +231,7 @@ void validateStudy(const StudyConfig& c) {
   // Scenes: present and parseable, with a known size.
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
-    loadStudyScene(path, c.width, c.height, c.maxSize);
+    loadStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
   }
 
   // Output folders: all or none (a failed check removes the folders made before it).

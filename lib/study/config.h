@@ -31,6 +31,8 @@ struct StudyConfig {
   int refSpp = 1024;        ///< samples per pixel of the references
   int width = 0, height = 0;  ///< size override (0: each scene's `# render:` size)
   int maxSize = 0;          ///< scale each scene down so its larger side is at most this (0: off)
+  int longSide = 0;         ///< scale each scene up or down so its larger side is exactly this (0: off)
+  std::string target = "area";  ///< the common target T: "area" (= box:0.5) or "filter:radius"
   std::string out = "results/study";  ///< output folder
   std::string csv;          ///< CSV path (default out/study.csv, or out/study.shard-i-of-N.csv)
   std::string cache = "results/cache/refs";  ///< reference cache folder
@@ -72,6 +74,15 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
 
 /// Every distinct (filter, radius) of the study, in canonical order.
 std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config);
+
+/// The target T of a study as (filter, radius): "area" is the pixel-area
+/// reference (box, r = 0.5); otherwise "filter:radius", e.g. "gaussian:1.5".
+/// Throws OptionError("--target") naming the valid forms.
+std::pair<std::string, double> parseTarget(const std::string& text);
+
+/// The target as written in the CSV's `target` column: "filter:radius" with
+/// the radius in %g ("box:0.5" for the default "area").
+std::string targetLabel(const std::string& text);
 
 /// Parses "i/N" (0 <= i < N). Throws OptionError("--shard").
 void parseShard(const std::string& text, int& index, int& count);

@@ -23,7 +23,8 @@ const std::vector<std::string>& csvColumns() {
       "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
-      "reconstruct_ms", "threads"};
+      "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
+      "aliasing_se", "mse_target_se"};
   return cols;
 }
 
@@ -40,7 +41,7 @@ std::vector<size_t> csvTimingColumns() { return {21, 22}; }
 
 namespace {
 enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
-           kRefSpp = 15 };
+           kRefSpp = 15, kTarget = 24 };
 
 std::string real(double v) { return formatNumber(v, "%.9g"); }
 
@@ -52,7 +53,7 @@ std::string quoted(const std::string& s) {
 }
 
 std::string joinKey(const std::vector<std::string>& f) {
-  static const int cols[] = {kScene, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds, kRefSpp};
+  static const int cols[] = {kScene, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds, kRefSpp, kTarget};
   std::string key;
   for (int c : cols) key += f[c] + '\x1f';
   return key;
@@ -70,7 +71,9 @@ std::string formatCsvRow(const CsvRow& r) {
     << ',' << r.seeds << ',' << real(r.mse) << ',' << real(r.aliasing) << ',' << real(r.noise) << ','
     << real(r.mseArea) << ',' << real(r.psnr) << ',' << r.refSpp << ',' << real(r.refError) << ',' << r.flagged
     << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
-    << real(r.reconstructMs) << ',' << r.threads;
+    << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.target) << ',' << real(r.mseTarget) << ','
+    << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
+    << real(r.aliasingSe) << ',' << real(r.mseTargetSe);
   return s.str();
 }
 
@@ -133,7 +136,7 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
   auto order = [](const Item& a) {
     const auto& f = a.f;
     return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kFilter], num(f[kRadius]), f[kRecon],
-                           num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams]);
+                           num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams], f[kTarget]);
   };
   std::erase_if(items, [](const Item& i) { return i.f.size() != csvColumns().size(); });
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return order(a) < order(b); });

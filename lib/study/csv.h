@@ -1,14 +1,15 @@
 // The study CSV: one row per configuration, appended whole, resumable,
 // shardable, mergeable.
 //
-// Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
+// Columns (exact order; meanings in docs/science.md and the README):
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
-//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
+//   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
-// ref_spp): a rerun skips configurations whose key is already in the file.
+// ref_spp, target): a rerun skips configurations whose key is already in the file.
 // CsvAppender opens an existing file for resumption: it checks the header,
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
@@ -39,6 +40,9 @@ struct CsvRow {
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
   int threads = 0;
+  std::string target;  ///< the study's target T as "filter:radius" (default "box:0.5", the pixel area)
+  double mseTarget = 0, blur = 0, cross = 0;
+  double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;
 };
 
 /// The header line (no newline).

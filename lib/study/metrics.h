@@ -1,19 +1,39 @@
-// Error metrics of one configuration (../shared/guide/SCIENCE.md, "Metrics
-// of one configuration").
+// Error metrics of one configuration (docs/science.md, "Metrics of one
+// configuration" and "One target, four terms").
 //
 // Protocol: construct a MetricAccumulator with the reference G of the
-// configuration's (filter, radius) and the pixel-area reference A (box,
-// r = 0.5), add() the K images I_k rendered with independent seeds (any
-// order), then result(). Per pixel and channel it keeps the running mean m
-// and the sum of squared deviations (Welford, double), so memory does not
-// grow with K. With s^2 the unbiased variance over the K images:
-//   mse      = mean over k, pixels, channels of (I_k - G)^2
-//   noise    = mean over pixels, channels of s^2
-//   aliasing = mean over pixels, channels of (m - G)^2  -  noise / K
-//   mse_area = mean over k, pixels, channels of (I_k - A)^2
-//   psnr     = 10 log10(1 / mse)
-// Since mean_k (I_k - G)^2 = (m - G)^2 + (K-1)/K s^2 per pixel, mse equals
-// aliasing + noise up to rounding. K >= 2 is required for noise.
+// configuration's (filter, radius), the pixel-area reference A (box,
+// r = 0.5) and the study's target T (by default T = A), add() the K images
+// I_k rendered with independent seeds (any order), then result(). Per pixel
+// and channel it keeps the running mean m and the sum of squared deviations
+// (Welford, double). With s^2 the unbiased variance over the K images and
+// every mean taken over pixels and channels:
+//   mse        = mean over k of mean (I_k - G)^2
+//   noise      = mean s^2
+//   aliasing   = mean (m - G)^2  -  noise / K
+//   mse_area   = mean over k of mean (I_k - A)^2
+//   mse_target = mean over k of mean (I_k - T)^2
+//   blur       = mean (G - T)^2                 (the references alone)
+//   cross      = 2 mean (m - G)(G - T)
+//   psnr       = 10 log10(1 / mse)
+// Since mean_k (I_k - G)^2 = (m - G)^2 + (K-1)/K s^2 per value, mse =
+// aliasing + noise, and since I_k - T = (I_k - m) + (m - G) + (G - T),
+// mse_target = noise + aliasing + blur + cross; both hold up to rounding.
+//
+// Standard errors over the seeds (the seeds are the independent units; the
+// pixels of one image are not independent of each other, since a sample
+// lands in several pixels' footprints). With e_k = I_k - G and the K x K Gram
+// matrix C_kl = sum over values of e_k e_l: mse = tr C / (N K) and aliasing =
+// (sum over k != l of C_kl) / (N K (K-1)), a mean over seed pairs. The
+// leave-one-seed-out values of mse, noise, aliasing and mse_target follow
+// from C and the per-seed sums of (I_k - T)^2, and each *_se is the
+// jackknife sqrt((K-1)/K sum_j (theta_(-j) - mean_j theta_(-j))^2). For the
+// means mse and mse_target this equals the classic sd over seeds / sqrt(K);
+// for noise and aliasing (degree-2 U-statistics) it is slightly
+// conservative. noise_se and aliasing_se need K >= 3 (NaN for K = 2).
+// C needs every pair of seeds, so the accumulator keeps the K images (K
+// float images per configuration in flight); no state of fixed size gives
+// the pair products (docs/science.md says why).
 #pragma once
 #include <vector>
 
@@ -22,18 +42,26 @@
 namespace aliaslab {
 
 struct Metrics {
-  double mse = 0;       ///< mean squared error against G, per pixel and channel
-  double aliasing = 0;  ///< structured (seed-independent) part of mse
-  double noise = 0;     ///< seed-to-seed part of mse: mean unbiased variance
-  double mseArea = 0;   ///< mean squared error against the pixel-area reference A
-  double psnr = 0;      ///< 10 log10(1 / mse), in dB (+inf when mse == 0)
-  int images = 0;       ///< K, the number of images added
+  double mse = 0;        ///< mean squared error against G, per pixel and channel
+  double aliasing = 0;   ///< structured (seed-independent) part of mse
+  double noise = 0;      ///< seed-to-seed part of mse: mean unbiased variance
+  double mseArea = 0;    ///< mean squared error against the pixel-area reference A
+  double mseTarget = 0;  ///< mean squared error against the study's target T
+  double blur = 0;       ///< mean (G - T)^2: the filter's own deviation from the target
+  double cross = 0;      ///< 2 mean (m - G)(G - T): mse_target - noise - aliasing - blur
+  double psnr = 0;       ///< 10 log10(1 / mse), in dB (+inf when mse == 0)
+  double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;  ///< jackknife standard errors over seeds
+  int images = 0;        ///< K, the number of images added
 };
 
 class MetricAccumulator {
  public:
-  /// `reference` = G, `areaReference` = A; both must have the same size.
-  MetricAccumulator(const Image& reference, const Image& areaReference);
+  /// `reference` = G, `areaReference` = A, `target` = T; all the same size.
+  /// They are held by reference and must outlive the accumulator.
+  MetricAccumulator(const Image& reference, const Image& areaReference, const Image& target);
+  /// The target is the area reference (T = A).
+  MetricAccumulator(const Image& reference, const Image& areaReference)
+      : MetricAccumulator(reference, areaReference, areaReference) {}
 
   /// Adds one image I_k (same size as the references).
   void add(const Image& image);
@@ -47,13 +75,20 @@ class MetricAccumulator {
  private:
   const Image& reference_;
   const Image& area_;
+  const Image& target_;
   int count_ = 0;
   std::vector<double> mean_, m2_;  ///< per pixel and channel
-  double sseRef_ = 0, sseArea_ = 0;
+  double sseArea_ = 0;
+  double blur_ = 0;                ///< sum of (G - T)^2
+  std::vector<Image> images_;      ///< the K images (for the pair products of C)
+  std::vector<std::vector<double>> gram_;  ///< gram_[k][l] = C_kl for l <= k
+  std::vector<double> sseTarget_;  ///< per seed: sum of (I_k - T)^2
 };
 
 /// Metrics of K images in one call (convenience over MetricAccumulator).
 Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference);
+Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference,
+                       const Image& target);
 
 /// Mean over pixels and channels of (a - b)^2.
 double meanSquaredDifference(const Image& a, const Image& b);

@@ -92,7 +92,8 @@ RenderLine readRenderLine(const std::string& path) {
   return r;
 }
 
-std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width, int height, int maxSize) {
+std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width, int height, int maxSize,
+                                           int longSide) {
   auto s = std::make_unique<StudyScene>();
   s->path = path;
   s->stem = std::filesystem::path(path).stem().string();
@@ -102,7 +103,8 @@ std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width, i
   if (width > 0 && height > 0) s->width = width, s->height = height;
   else if (s->line.found) s->width = s->line.width, s->height = s->line.height;
   else throw FileError(path, "no '# render: -size W H' line and no --size given");
-  if (maxSize > 0 && std::max(s->width, s->height) > maxSize) {
+  if (longSide > 0) maxSize = longSide;
+  if (maxSize > 0 && (std::max(s->width, s->height) > maxSize || longSide > 0)) {
     const double scale = static_cast<double>(maxSize) / std::max(s->width, s->height);
     s->width = std::max(1, static_cast<int>(std::lround(s->width * scale)));
     s->height = std::max(1, static_cast<int>(std::lround(s->height * scale)));

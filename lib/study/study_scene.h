@@ -51,9 +51,11 @@ class StudyScene {
 
 /// Parses and prepares a scene. Size: (width, height) when both > 0, else the
 /// render line's size; then scaled down (aspect kept, rounded, >= 1) so the
-/// larger side is at most maxSize when maxSize > 0. Throws InputError, also
-/// when no size is known.
+/// larger side is at most maxSize when maxSize > 0; or, when longSide > 0,
+/// scaled up or down (aspect kept, rounded, >= 1) so the larger side is
+/// exactly longSide (maxSize is then ignored). Throws InputError, also when
+/// no size is known.
 std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width = 0, int height = 0,
-                                           int maxSize = 0);
+                                           int maxSize = 0, int longSide = 0);
 
 }  // namespace aliaslab

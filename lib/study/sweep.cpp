@@ -56,6 +56,7 @@ CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGro
   r.filterParams = cfg.mode == ReconMode::Supersample ? supersampleParams(g.spp) : filter.describe();
   r.reconstruction = toString(cfg.mode);
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
+  r.target = targetLabel(c.target);
   return r;
 }
 
@@ -92,6 +93,8 @@ SweepSummary runSweep(const StudyConfig& config) {
   if (!config.refsOnly) out = std::make_unique<CsvAppender>(csv);
   const int threads = config.threads;
   const ReferenceOptions refOpts = referenceOptions(config);
+  const auto [targetFilter, targetRadius] = parseTarget(config.target);
+  const FilterSpec targetSpec{targetFilter, targetRadius};
 
   // Work units for the progress bar: one per traced sample set.
   double units = 0;
@@ -109,11 +112,12 @@ SweepSummary runSweep(const StudyConfig& config) {
     const std::string scenePath = groups[gi].scene;
     size_t gend = gi;
     while (gend < groups.size() && groups[gend].scene == scenePath) ++gend;
-    const auto scene = loadStudyScene(scenePath, config.width, config.height, config.maxSize);
+    const auto scene = loadStudyScene(scenePath, config.width, config.height, config.maxSize, config.longSide);
 
     // Which configurations are still missing from the CSV?
     std::vector<std::vector<Pending>> pending(gend - gi);
     std::vector<FilterSpec> specs{kArea};
+    if (targetSpec != kArea) specs.push_back(targetSpec);
     for (size_t g = gi; g < gend; ++g)
       for (const Configuration& cfg : groups[g].configs) {
         Pending p;
@@ -141,6 +145,7 @@ SweepSummary runSweep(const StudyConfig& config) {
     std::map<FilterSpec, const ReferenceImage*> refOf;
     for (size_t i = 0; i < specs.size(); ++i) refOf[specs[i]] = &refs.images[i];
     const ReferenceImage& area = *refOf.at(kArea);
+    const ReferenceImage& target = *refOf.at(targetSpec);
     const fs::path imageDir = fs::path(config.out) / "images" / scene->stem;
     if (!config.refsOnly) {
       // each image as a path from the manifest's folder to the cached EXR
@@ -174,7 +179,7 @@ SweepSummary runSweep(const StudyConfig& config) {
       }
       for (Pending& p : rows) {
         p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
-        p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image);
+        p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
       }
       bool shared = false;
       for (const Pending& p : rows) shared = shared || p.mode != ReconMode::ImportanceSampled;
@@ -239,6 +244,8 @@ SweepSummary runSweep(const StudyConfig& config) {
         const Metrics m = p.metrics->result();
         CsvRow& r = p.row;
         r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.mseArea, r.psnr = m.psnr;
+        r.mseTarget = m.mseTarget, r.blur = m.blur, r.cross = m.cross;
+        r.mseSe = m.mseSe, r.noiseSe = m.noiseSe, r.aliasingSe = m.aliasingSe, r.mseTargetSe = m.mseTargetSe;
         r.refError = p.reference->error;
         r.flagged = m.mse < 4.0 * p.reference->error ? 1 : 0;
         r.nanPixels = static_cast<long long>(p.stats.nanPixels);
@@ -252,6 +259,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         out->append(r);
         ++sum.rowsWritten;
+        p.metrics.reset(), p.seed0 = Image();  // the K images and sums of a finished row are not needed again
       }
       progress.advance(std::max(0.0, groupUnits[g] - advanced));
     }
