@@ -301,11 +301,15 @@ TEST(Decomposition, TargetEqualToTheFilterReferenceLeavesNoBlurAndNoCross) {
 // jackknife over seeds must not. The reported standard error (root mean of
 // se^2 over the repetitions) must match the spread (sd over the repetitions)
 // of each estimate. With R = 2000 the sd is known to about 1.6 % and the mean
-// se^2 to a few per cent; clamping a negative variance estimate of noise or
-// aliasing at 0 biases se slightly upwards. Tolerance: the ratio se / sd in
-// [0.9, 1.15], five or more of those standard errors. (A leave-one-seed-out
-// jackknife of aliasing gives 1.57 here without structured error, its
-// known bias sqrt(2 (K-1) / (K-2)) = 1.53 at K = 8, and fails.)
+// se^2 to a few per cent. mse and mse_target: classic, unbiased; tolerance
+// se / sd in [0.9, 1.15]. noise and aliasing: the unbiased pair variance
+// floored by the scaled jackknife (metrics.cpp), biased upwards by the floor;
+// with structured error (the pair terms share a per-seed part) the floor
+// rarely acts: [0.9, 1.15]; without it (true aliasing 0, the case where the
+// floor acts most) the bound is the jackknife's own sqrt(2 (K-1) / (K-2)) =
+// 1.53 at K = 8, and the floored value measured 1.24: [0.95, 1.35]. The plain
+// jackknife gives 1.57 there and fails; the unclamped unbiased estimate gives
+// 1.0 but reported 0 for a fifth of real sweep rows.
 namespace {
 struct Spread {
   double sd, se;
@@ -353,21 +357,22 @@ std::vector<Spread> seedSpread(double structuredAmplitude, int k) {
   return out;
 }
 
-void expectSeMatchesSpread(double amplitude, int k) {
+void expectSeMatchesSpread(double amplitude, int k, double pairHigh) {
   const char* names[] = {"mse", "noise", "aliasing", "mse_target"};
   const auto spread = seedSpread(amplitude, k);
   for (int i = 0; i < 4; ++i) {
     SCOPED_TRACE(names[i]);
     ASSERT_GT(spread[i].sd, 0.0);
-    EXPECT_GT(spread[i].se / spread[i].sd, 0.9) << "se " << spread[i].se << " sd " << spread[i].sd;
-    EXPECT_LT(spread[i].se / spread[i].sd, 1.15) << "se " << spread[i].se << " sd " << spread[i].sd;
+    const bool pair = i == 1 || i == 2;  // noise, aliasing
+    EXPECT_GT(spread[i].se / spread[i].sd, pair && pairHigh > 1.15 ? 0.95 : 0.9) << "se " << spread[i].se << " sd " << spread[i].sd;
+    EXPECT_LT(spread[i].se / spread[i].sd, pair ? pairHigh : 1.15) << "se " << spread[i].se << " sd " << spread[i].sd;
   }
 }
 }  // namespace
 
-TEST(StandardErrors, MatchTheSpreadOverRepetitionsWithoutStructuredError) { expectSeMatchesSpread(0.0, 8); }
+TEST(StandardErrors, MatchTheSpreadOverRepetitionsWithoutStructuredError) { expectSeMatchesSpread(0.0, 8, 1.35); }
 
-TEST(StandardErrors, MatchTheSpreadOverRepetitionsWithStructuredError) { expectSeMatchesSpread(1.0, 8); }
+TEST(StandardErrors, MatchTheSpreadOverRepetitionsWithStructuredError) { expectSeMatchesSpread(1.0, 8, 1.15); }
 
 TEST(StandardErrors, NoiseAndAliasingNeedFourSeeds) {
   const Image g = referenceImage();

@@ -93,12 +93,15 @@ double jackknifeSe(const std::vector<double>& leaveOneOut) {
   return std::sqrt((k - 1) / k * ss);
 }
 
-// Unbiased variance of a degree-2 U-statistic U = mean over seed pairs k < l of h(k, l) (Hoeffding):
-// Var(U) = E[U^2] - theta^2, and theta^2 = E[h(k, l) h(i, j)] for four distinct seeds, so
-//   V = U^2 - (mean over pairs of disjoint pairs of h(k, l) h(i, j)),
-// with the disjoint sum = S^2 + Q - sum_j R_j^2 (S = sum of h over pairs, Q = sum of h^2, R_j = sum over
-// l != j of h(j, l)). h is centred on U first (V does not change) so no large terms cancel. Needs K >= 4;
-// V can come out negative by chance: the standard error is then 0.
+// Standard error of a degree-2 U-statistic U = mean over seed pairs k < l of h(k, l). Two estimates of Var(U):
+// - unbiased (Hoeffding): Var(U) = E[U^2] - theta^2 and theta^2 = E[h(k, l) h(i, j)] for four distinct seeds, so
+//   V = U^2 - (mean over pairs of disjoint pairs of h(k, l) h(i, j)), the disjoint sum being S^2 + Q - sum_j R_j^2
+//   (S = sum of h over pairs, Q = sum of h^2, R_j = sum over l != j of h(j, l)). It can come out negative.
+// - the leave-one-seed-out jackknife V_J, never negative, whose expectation lies between Var(U) and
+//   2 (K-1) / (K-2) Var(U) (the upper end when the pair terms share no per-seed part, e.g. zero aliasing).
+// The result is sqrt(max(V, V_J (K-2) / (2 (K-1)))): the unbiased value, floored by the jackknife scaled to a
+// lower bound in expectation, so a chance negative V does not claim a zero error. h is centred on U first
+// (V does not change) so no large terms cancel. Needs K >= 4 (NaN otherwise).
 double pairStatisticSe(const std::vector<std::vector<double>>& h) {
   const int K = static_cast<int>(h.size());
   if (K < 4) return std::numeric_limits<double>::quiet_NaN();
@@ -116,7 +119,11 @@ double pairStatisticSe(const std::vector<std::vector<double>>& h) {
   for (double v : r) r2 += v * v;
   const double disjoint = (s * s + q - r2) / (pairs * (K - 2) * (K - 3) / 2.0);
   const double mean = s / pairs;  // 0 up to rounding
-  return std::sqrt(std::max(0.0, mean * mean - disjoint));
+  const double unbiased = mean * mean - disjoint;
+  std::vector<double> leaveOneOut(K);
+  for (int j = 0; j < K; ++j) leaveOneOut[j] = (s - r[j]) / (pairs - (K - 1));
+  const double jack = jackknifeSe(leaveOneOut);
+  return std::sqrt(std::max(unbiased, jack * jack * (K - 2) / (2.0 * (K - 1))));
 }
 }  // namespace
 

@@ -23,17 +23,15 @@
 // Standard errors over the seeds (the seeds are the independent units; the
 // pixels of one image are not independent of each other, since a sample
 // lands in several pixels' footprints). With e_k = I_k - G and the K x K Gram
-// matrix C_kl = sum over values of e_k e_l: mse = tr C / (N K) and aliasing =
-// (sum over k != l of C_kl) / (N K (K-1)), a mean over seed pairs. The
-// leave-one-seed-out values of mse, noise, aliasing and mse_target follow
-// from C and the per-seed sums of (I_k - T)^2, and each *_se is the
-// jackknife sqrt((K-1)/K sum_j (theta_(-j) - mean_j theta_(-j))^2). For the
-// means mse and mse_target this equals the classic sd over seeds / sqrt(K);
-// for noise and aliasing (degree-2 U-statistics) it is slightly
-// conservative. noise_se and aliasing_se need K >= 3 (NaN for K = 2).
-// C needs every pair of seeds, so the accumulator keeps the K images (K
-// float images per configuration in flight); no state of fixed size gives
-// the pair products (docs/science.md says why).
+// matrix C_kl = sum over values of e_k e_l: mse = tr C / (N K) is a mean of
+// per-seed terms, and so is mse_target: their *_se is the sd over seeds /
+// sqrt(K) (= their jackknife). aliasing = mean over seed pairs of C_kl / N
+// and noise = mean over pairs of (C_kk + C_ll - 2 C_kl) / (2N) are pair
+// statistics: their *_se is the unbiased (Hoeffding) variance, floored by the
+// jackknife scaled to a lower bound (metrics.cpp, docs/science.md "Standard
+// errors"); they need K >= 4 (NaN otherwise). C needs every pair of seeds,
+// so the accumulator keeps the K images (K float images per configuration in
+// flight); no running state of fixed size gives all pair products.
 #pragma once
 #include <vector>
 
