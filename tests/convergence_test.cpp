@@ -23,7 +23,7 @@ void midpointMoments(const Integrand& f, int k, double& mean, double& meanSquare
 }
 
 TEST(Integrands, ExactValuesMatchQuadratureAndScience) {
-  // Values as printed in SCIENCE.md, then checked by independent quadrature.
+  // Values as printed in docs/science.md, then checked by independent quadrature.
   const std::vector<std::pair<double, double>> science = {
       {0.5, 0.5}, {0.5, 0.5}, {0.318310, 0.4658}, {0.557746, 0.2161}, {0.25, 0.2205}};
   ASSERT_EQ(integrands().size(), science.size());

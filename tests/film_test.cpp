@@ -1,4 +1,4 @@
-// Reconstruction: every mode against the mathematics of SCIENCE.md and an
+// Reconstruction: every mode against the mathematics of docs/science.md and an
 // independent brute-force weighted average written here.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // convergence: RMSE against N for every sampler on the analytic integrands
-// of SCIENCE.md, the fitted log-log slopes, and a table comparing them with
+// of docs/science.md, the fitted log-log slopes, and a table comparing them with
 // the slopes theory expects.
 //
 // Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations),

@@ -1,5 +1,5 @@
 // The `raytracer` command line: the classic course flags (single dash,
-// ../shared/guide/SCENE_FORMAT.md) plus aliaslab's general ones (double dash).
+// scenes/README.md) plus aliaslab's general ones (double dash).
 //
 // CLI11 only takes single-character names after one dash, so the classic
 // long flags are registered as `--input`, `--size`, ... and the command line

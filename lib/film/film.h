@@ -8,7 +8,7 @@
 // sign(f) * integral |f|).
 //
 // Reconstruction turns a buffer into an Image and counts what went wrong
-// (ReconStats). The modes are defined in ../shared/guide/SCIENCE.md.
+// (ReconStats). The modes are defined in docs/science.md ("Reconstruction").
 //
 // Degenerate outcomes (every mode; no NaN ever reaches an Image):
 // - a sample with a non-finite position or radiance is skipped and counted

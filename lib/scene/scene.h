@@ -22,7 +22,7 @@ struct Scene {
   std::vector<std::string> dependencies;             ///< resolved OBJ paths, for content hashing
 };
 
-/// Parses a classic course scene file (../shared/guide/SCENE_FORMAT.md plus
+/// Parses a classic course scene file (scenes/README.md plus
 /// the Pattern extension). Throws FileError when it cannot be read and
 /// ParseError "<file>:<line>: <what was expected>" for malformed content,
 /// including malformed OBJ files (which name the OBJ file and its line).

@@ -97,10 +97,10 @@ SlopeFit fitLogLogSlope(const std::vector<double>& n, const std::vector<double>&
 
 ExpectedSlope expectedSlope(const std::string& s, const Integrand& f) {
   const bool disc = f.discontinuous;
-  // Stated in SCIENCE.md.
-  if (s == "random") return {-0.5, "SCIENCE.md"};
-  if (s == "jittered") return {disc ? -0.75 : -1.0, "SCIENCE.md"};
-  if (s == "sobol" || s == "pmj02") return {disc ? -0.75 : -1.5, "SCIENCE.md (powers of two)"};
+  // Stated in docs/science.md.
+  if (s == "random") return {-0.5, "docs/science.md"};
+  if (s == "jittered") return {disc ? -0.75 : -1.0, "docs/science.md"};
+  if (s == "sobol" || s == "pmj02") return {disc ? -0.75 : -1.5, "docs/science.md (powers of two)"};
   // Literature values for the other stratified patterns.
   if (s == "multijittered" || s == "multijitter" || s == "cmj" || s == "correlated-multijittered" ||
       s == "correlated_multijittered")

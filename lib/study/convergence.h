@@ -1,4 +1,4 @@
-// Convergence of sampling patterns on analytic integrands (SCIENCE.md,
+// Convergence of sampling patterns on analytic integrands (docs/science.md,
 // "Convergence on analytic integrands").
 //
 // Protocol: an estimate of an integrand's integral over the unit square is
@@ -27,7 +27,7 @@ struct Integrand {
   bool discontinuous;          ///< true for the indicator functions
 };
 
-/// The five integrands of SCIENCE.md, in its order.
+/// The five integrands of docs/science.md, in its order.
 const std::vector<Integrand>& integrands();
 
 /// Estimates of every integrand from `realisations` sets of `sampler`:
@@ -55,7 +55,7 @@ SlopeFit fitLogLogSlope(const std::vector<double>& n, const std::vector<double>&
 /// where the expectation comes from.
 struct ExpectedSlope {
   std::optional<double> slope;  ///< empty: no stated expectation
-  std::string source;           ///< "SCIENCE.md", "literature: ...", or why there is none
+  std::string source;           ///< "docs/science.md", "literature: ...", or why there is none
 };
 ExpectedSlope expectedSlope(const std::string& sampler, const Integrand& integrand);
 

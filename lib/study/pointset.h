@@ -1,4 +1,4 @@
-// Measures of a 2-D point set in the unit square (SCIENCE.md, "Point-set
+// Measures of a 2-D point set in the unit square (docs/science.md, "Point-set
 // measures"): how uniformly it covers [0,1)^2 (L2-star discrepancy), how
 // close its closest pair is (minimum toroidal distance) and how its energy is
 // spread over frequencies (periodogram and its radial average).
