@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,8 +18,10 @@
 
 #include "scratch_dir.h"
 #include "core/error.h"
+#include "core/image.h"
 #include "study/config.h"
 #include "study/csv.h"
+#include "study/metrics.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;
@@ -293,5 +296,86 @@ TEST(SweepBadInput, RefusedBeforeAnyWorkWithTheMessageAndNoCsv) {
     EXPECT_NE(output.find(c.message), std::string::npos) << c.args << ": " << output;
     EXPECT_FALSE(fs::exists(out / "study.csv")) << c.args;
     EXPECT_FALSE(fs::exists(workDir() / "badcache")) << c.args;  // no reference work either
+  }
+}
+
+// One target (docs/science.md, "One target, four terms"): the target column, the four terms adding up to
+// mse_target on every row, blur = 0 and mse_target = mse for the target's own filter, and blur equal to the
+// mean squared difference of the two cached references, computed here from the EXR files.
+TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
+  const fs::path out = workDir() / "target";
+  ASSERT_EQ(run("--scenes " + kScene + " --size 24 24 --samplers jittered --spp 4 --filters box,gaussian --radii 1 "
+                "--seeds 4 --ref-spp 256 --threads 2 --quiet --no-images --target gaussian:1 --cache " +
+                (workDir() / "cache").string() + " --out " + out.string()),
+            0);
+  const auto& cols = csvColumns();
+  auto column = [&](const std::string& name) { return std::find(cols.begin(), cols.end(), name) - cols.begin(); };
+  const auto cFilter = column("filter"), cRadius = column("radius"), cTarget = column("target"),
+             cMse = column("mse"), cNoise = column("noise"), cAliasing = column("aliasing"),
+             cMseTarget = column("mse_target"), cBlur = column("blur"), cCross = column("cross");
+  // Reference images by (filter, radius) from the manifest.
+  const fs::path manifest = out / "references" / "zoneplate.json";
+  std::ifstream in(manifest);
+  ASSERT_TRUE(in) << manifest;
+  std::map<std::string, Image> refs;
+  for (std::string line; std::getline(in, line);) {
+    const size_t f = line.find("\"filter\": \""), r = line.find("\"radius\": "), im = line.find("\"image\": \"");
+    if (f == std::string::npos || im == std::string::npos) continue;
+    const std::string name = line.substr(f + 11, line.find('"', f + 11) - f - 11);
+    const std::string radius = line.substr(r + 10, line.find(',', r) - r - 10);
+    const std::string image = line.substr(im + 10, line.find('"', im + 10) - im - 10);
+    refs[name + ":" + radius] = readImage((manifest.parent_path() / image).string());
+  }
+  ASSERT_TRUE(refs.count("gaussian:1") && refs.count("box:1") && refs.count("box:0.5"));
+  const auto lines = readCsvLines((out / "study.csv").string());
+  ASSERT_EQ(lines.size(), 3u);  // box 0.5, box 1, gaussian 1
+  for (const std::string& l : lines) {
+    const auto f = splitCsvLine(l);
+    SCOPED_TRACE(l);
+    EXPECT_EQ(f[cTarget], "gaussian:1");
+    const double mse = std::stod(f[cMse]), mseTarget = std::stod(f[cMseTarget]), blur = std::stod(f[cBlur]),
+                 cross = std::stod(f[cCross]);
+    const double sum = std::stod(f[cNoise]) + std::stod(f[cAliasing]) + blur + cross;
+    EXPECT_NEAR(sum, mseTarget, 1e-7 * mseTarget);  // the CSV prints 9 significant digits
+    const std::string key = f[cFilter] + ":" + f[cRadius];
+    EXPECT_NEAR(blur, meanSquaredDifference(refs.at(key), refs.at("gaussian:1")), 1e-8 * blur + 1e-15);
+    if (key == "gaussian:1") {
+      EXPECT_EQ(blur, 0.0);
+      EXPECT_EQ(cross, 0.0);
+      EXPECT_NEAR(mseTarget, mse, 1e-8 * mse);
+    } else {
+      EXPECT_GT(blur, 0.0);
+    }
+  }
+}
+
+TEST(SweepTarget, DefaultTargetIsThePixelAreaWrittenBox05EqualToMseAreaWithStandardErrors) {
+  const auto& cols = csvColumns();
+  auto column = [&](const std::string& name) { return std::find(cols.begin(), cols.end(), name) - cols.begin(); };
+  for (const std::string& l : readCsvLines(fullCsv())) {
+    const auto f = splitCsvLine(l);
+    EXPECT_EQ(f[column("target")], "box:0.5");
+    EXPECT_EQ(f[column("mse_target")], f[column("mse_area")]) << l;
+    // 4 seeds: every standard error defined; the uniform grid is the same for every seed, so it has none
+    for (const char* se : {"mse_se", "noise_se", "aliasing_se", "mse_target_se"}) {
+      const double v = std::stod(f[column(se)]);
+      if (f[column("sampler")] == "uniform") EXPECT_EQ(v, 0.0) << se << " " << l;
+      else EXPECT_GT(v, 0.0) << se << " " << l;
+    }
+  }
+}
+
+TEST(SweepBadInput, AnUnusableTargetIsRefusedNamingTheOption) {
+  for (const std::string target : {"nosuch:1", "gaussian", "box:-1", "box:x", ":1"}) {
+    const fs::path out = workDir() / "badtarget";
+    std::string output;
+    EXPECT_EQ(run("--scenes " + kScene + " --size 8 8 --seeds 2 --ref-spp 32 --quiet --out " + out.string() +
+                      " --cache " + (workDir() / "badtargetcache").string() + " --target " + target,
+                  &output),
+              2)
+        << target;
+    EXPECT_NE(output.find("--target"), std::string::npos) << target << ": " << output;
+    EXPECT_FALSE(fs::exists(out / "study.csv")) << target;
+    EXPECT_FALSE(fs::exists(workDir() / "badtargetcache")) << target;
   }
 }
