@@ -4,7 +4,8 @@
 // Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
-//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
+//   lowfreq_error,lowfreq_error_se,blurred_mse   (study/spectrum.h)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -39,6 +40,7 @@ struct CsvRow {
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
   int threads = 0;
+  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< study/spectrum.h
 };
 
 /// The header line (no newline).
