@@ -553,7 +553,7 @@ double maskLowFrequencyFraction(const std::vector<double>& v) {
 }
 
 TEST(SamplerCorrelation, VoidAndClusterMaskIsABlueNoisePermutation) {
-  // Every rank once per tile; the power below a quarter of Nyquist under 1 % of the total. A white-noise
+  // Every rank once per tile; the power below a quarter of Nyquist under 0.1 % of the total (measured 1.3e-5 to 1.5e-5). A white-noise
   // permutation puts about pi (1/8)^2 = 4.9 % there (the disc's share of the frequency square), and
   // must fail the bound (the check can fail).
   for (uint64_t seed : {0u, 1u, 2u})
@@ -564,7 +564,7 @@ TEST(SamplerCorrelation, VoidAndClusterMaskIsABlueNoisePermutation) {
       for (uint16_t r : *mask) ++seen.at(r);
       for (int c : seen) ASSERT_EQ(c, 1);
       const double low = maskLowFrequencyFraction(std::vector<double>(mask->begin(), mask->end()));
-      EXPECT_LT(low, 0.01) << "seed " << seed << " channel " << channel;
+      EXPECT_LT(low, 0.001) << "seed " << seed << " channel " << channel;
       RecordProperty("low_fraction_" + std::to_string(seed) + "_" + std::to_string(channel), std::to_string(low));
       EXPECT_EQ(sampling::blueNoiseMask(seed, channel), mask) << "cached: built once";
     }
