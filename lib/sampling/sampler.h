@@ -6,7 +6,8 @@
 // get film coordinates). The points are a pure function of (seed, px, py):
 // calling generate for pixels in any order, on any thread, gives the same
 // points, and different pixels get decorrelated sets (independent
-// scrambles / permutations / jitter derived from core/hash.h).
+// scrambles / permutations / jitter derived from core/hash.h) unless the
+// pattern declares otherwise (correlatedAcrossPixels(), below).
 //
 // Counts a pattern does not naturally take (a non-square count for a grid
 // pattern, a non-power of two for a (0,2)-sequence) are handled explicitly:
@@ -17,7 +18,8 @@
 // The order of the points within a pixel carries no meaning (grid patterns
 // write them cell by cell): do not split a pixel's points by index into
 // "independent halves"; use two seeds instead. Construction may precompute
-// (pmj02 and bluenoise build a pool of 16 sequences per seed); generate()
+// (pmj02 and bluenoise build a pool of 16 sequences per seed,
+// bluenoise-dither fetches its seed's masks from a process-wide cache); generate()
 // is const and safe to call from many threads at once.
 //
 // Correlation across pixels: by default different pixels are independent
@@ -29,7 +31,8 @@
 // still a pure function of (seed, px, py): the correlation is between the
 // pixels of one seed, never between seeds.
 //
-// Names: see samplerNames(); each implementation file (lib/sampling/<name>.cpp)
+// Names: see samplerNames(); each implementation file (lib/sampling/<name>.cpp,
+// '-' written '_')
 // opens with a table of what the pattern is, how it handles counts and when
 // to use it. A composed name "WRAPPER:BASE" applies a wrapper of
 // samplerWrapperNames() to any registered base (e.g. bluenoise-dither:sobol);

@@ -28,6 +28,9 @@
 // |            | aligned sub-blocks first); warning() says the net          |
 // |            | properties hold only at powers of two                      |
 // | period     | pixels 65536 apart in x or y share the Morton code         |
+// | cost       | one hash per base-4 digit: the pixel's 16 once per pixel,  |
+// |            | the sample's L/2 per point; about 1/6 of sobol's speed     |
+// |            | (results/spectrum_ordering.md), negligible beside tracing  |
 // | use it     | pbrt-v4's default: per-pixel quality of sobol plus blue-   |
 // |            | noise-like error across pixels; correlatedAcrossPixels().  |
 #include <array>
@@ -47,6 +50,19 @@ constexpr uint32_t sobolDim1(uint32_t i) {
   for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
     if (i & 1) r ^= v;
   return r;
+}
+
+/// sobolDim1 is linear over GF(2) in the bits of i: kDim1Bytes[b][v] = sobolDim1(v << 8b), XORed byte by byte.
+constexpr std::array<std::array<uint32_t, 256>, 4> kDim1Bytes = [] {
+  std::array<std::array<uint32_t, 256>, 4> t{};
+  for (int b = 0; b < 4; ++b)
+    for (uint32_t v = 0; v < 256; ++v) t[b][v] = sobolDim1(v << (8 * b));
+  return t;
+}();
+
+inline uint32_t sobolDim1Fast(uint32_t i) {
+  return kDim1Bytes[0][i & 0xff] ^ kDim1Bytes[1][(i >> 8) & 0xff] ^ kDim1Bytes[2][(i >> 16) & 0xff] ^
+         kDim1Bytes[3][i >> 24];
 }
 
 /// Spreads the low 16 bits of v to the even bit positions.
@@ -89,7 +105,7 @@ class ZSobolSampler final : public Sampler {
       const uint64_t index = (z << log2N_) | static_cast<uint64_t>(i);
       const uint32_t s = static_cast<uint32_t>(pixelPart | shuffleDigits(index, 0, log2N_));
       const uint32_t x = reverseBits(laineKarrasPermute(s, scrambleX_));  // van der Corput of s, scrambled
-      const uint32_t y = reverseBits(laineKarrasPermute(reverseBits(sobolDim1(s)), scrambleY_));
+      const uint32_t y = reverseBits(laineKarrasPermute(reverseBits(sobolDim1Fast(s)), scrambleY_));
       out[i] = Vec2(fixedToUnit(x), fixedToUnit(y));
     }
   }
