@@ -94,7 +94,7 @@ SpectrumAccumulator::SpectrumAccumulator(const Image& reference)
   for (int v = 0; v < height_; ++v)
     for (int u = 0; u < width_; ++u) radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
   sum_.assign(3 * n, Complex(0, 0));
-  sumSquares_.assign(3 * n, 0.0);
+  sumSquares_.assign(n, 0.0);
 }
 
 void SpectrumAccumulator::add(const Image& image) {
@@ -109,7 +109,7 @@ void SpectrumAccumulator::add(const Image& image) {
       const Complex z = e[i] * inv;  // P = |z|^2 / 3 for this channel
       const double p = std::norm(z) / 3.0;
       sum_[c * n + i] += z;
-      sumSquares_[c * n + i] += p;
+      sumSquares_[i] += p;
       total += p;
       if (radius_[i] < kLowFrequencyCutoff) low += p;
       blurred += p * blurGain(radius_[i]);
@@ -132,15 +132,15 @@ SpectrumMetrics SpectrumAccumulator::result() const {
   m.lowfreqError = mean, m.lowfreqErrorSe = std::sqrt(var / k);
   m.blurredMse = blurred_ / k;
   const size_t n = static_cast<size_t>(width_) * height_;
-  for (int c = 0; c < 3; ++c)
-    for (size_t i = 0; i < n; ++i) {
-      const int b = binOf(radius_[i]);
-      const double sq = sumSquares_[c * n + i];
-      m.error.energy[b] += sq / k;
-      // sum_k |z_k - mean z|^2 = sum |z_k|^2 - |sum z_k|^2 / K (per channel, /3 for the channel mean)
-      m.noise.energy[b] += std::max(0.0, sq - std::norm(sum_[c * n + i]) / 3.0 / k) / (k - 1);
-      if (c == 0) ++m.error.count[b], ++m.noise.count[b];
-    }
+  for (size_t i = 0; i < n; ++i) {
+    const int b = binOf(radius_[i]);
+    // per channel sum_k |z_k - mean z|^2 = sum_k |z_k|^2 - |sum_k z_k|^2 / K; P takes the channel mean (/3)
+    double spread = sumSquares_[i];
+    for (int c = 0; c < 3; ++c) spread -= std::norm(sum_[c * n + i]) / 3.0 / k;
+    m.error.energy[b] += sumSquares_[i] / k;
+    m.noise.energy[b] += std::max(0.0, spread) / (k - 1);
+    ++m.error.count[b], ++m.noise.count[b];
+  }
   return m;
 }
 

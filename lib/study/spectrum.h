@@ -87,7 +87,7 @@ class SpectrumAccumulator {
   int width_, height_;
   std::vector<double> radius_;                      ///< rho per frequency
   std::vector<std::complex<double>> sum_;           ///< per channel and frequency: sum_k E_k / (W H)
-  std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k]
+  std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
   std::vector<double> lowFractions_;                ///< f_k
   double blurred_ = 0;
   int count_ = 0;
