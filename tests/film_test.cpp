@@ -394,6 +394,34 @@ TEST(Visualize, RenderSamplesPutsEachSampleInItsPixel) {
   EXPECT_FLOAT_EQ(renderSamples(SampleBuffer(2, 2, 0), 4).get(5, 1)[0], 0.f);   // (1,0) odd: black
 }
 
+TEST(Visualize, RenderSamplesShowsTheBlockNeighboursOffsets) {
+  // 2x2 film, 1 spp: pixel (i, j)'s sample at offset (0.1 + 0.4 i, 0.1 + 0.4 j). At zoom 10 every cell
+  // shows its own sample in its colour and the three others' offsets as ghosts; a ghost never covers
+  // a sample, and zoom < 4 draws the classic picture only.
+  SampleBuffer b(2, 2, 1);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      FilmSample& s = b.pixel(i, j)[0];
+      s.x = i + 0.15f + 0.4f * i, s.y = j + 0.15f + 0.4f * j;
+      s.L = Color(1.f, 0.5f * i, 0.5f * j);
+    }
+  const Image img = renderSamples(b, 10);
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i)
+      for (int nj = 0; nj < 2; ++nj)
+        for (int ni = 0; ni < 2; ++ni) {
+          const int x = 10 * i + 1 + 4 * ni, y = 10 * j + 1 + 4 * nj;  // floor((i + 0.15 + 0.4 ni) * 10)
+          const Color expect = (ni == i && nj == j) ? b.pixel(i, j)[0].L : Color(0.75f, 0.55f, 0.15f);
+          EXPECT_TRUE((img.get(x, y) == expect).all()) << "cell " << i << "," << j << " offset of " << ni << "," << nj;
+        }
+  const Image small = renderSamples(b, 3);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 6; ++x) {
+      const Color c = small.get(x, y);
+      EXPECT_FALSE(c[0] == 0.75f && c[1] == 0.55f) << x << "," << y;
+    }
+}
+
 TEST(Visualize, ColourMapsKeepSignAndOrder) {
   Image e(3, 1);
   e.set(0, 0, Color::Constant(-1)), e.set(1, 0, Color::Zero()), e.set(2, 0, Color::Constant(0.5f));

@@ -5,12 +5,16 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cctype>
+#include <complex>
 #include <cmath>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "core/error.h"
+#include "core/hash.h"
+#include "sampling/bluenoise_mask.h"
 #include "sampling/sample_math.h"
 #include "sampling/sampler.h"
 
@@ -126,6 +130,8 @@ TEST_P(SamplerContract, NeighbouringPixelsAndSeedsGiveDifferentSets) {
 TEST_P(SamplerContract, NeighbourPixelMeansUncorrelated) {
   // Pixel means of x (and y) in horizontally adjacent pixels: |r| < 5 / sqrt(pairs).
   if (GetParam() == "uniform") GTEST_SKIP() << "uniform is the same in every pixel by design";
+  if (makeSampler(GetParam(), 1, 5)->correlatedAcrossPixels())
+    GTEST_SKIP() << "correlated across pixels by design (SamplerCorrelation checks how)";
   for (int spp : {1, 7, 16}) {
     auto s = makeSampler(GetParam(), spp, 5);
     const int w = 100, h = 40;
@@ -167,14 +173,41 @@ TEST_P(SamplerContract, CoordinateMeansAreOneHalf) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllSamplers, SamplerContract, ::testing::ValuesIn(samplerNames()),
-                         [](const auto& info) { return info.param; });
+INSTANTIATE_TEST_SUITE_P(AllSamplers, SamplerContract, ::testing::ValuesIn(allSamplerNames()),
+                         [](const auto& info) {
+                           std::string n = info.param;  // "bluenoise-dither:sobol" -> "bluenoise_dither_sobol"
+                           for (char& c : n)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return n;
+                         });
 
 // ---------------------------------------------------------------------------
 TEST(SamplerFactory, NamesInDocumentedOrder) {
   const std::vector<std::string> expected = {"random", "uniform",    "jittered", "nrooks", "multijittered", "cmj",
-                                             "halton", "hammersley", "sobol",    "pmj02",  "bluenoise"};
+                                             "halton", "hammersley", "sobol",    "pmj02",  "bluenoise", "zsobol"};
   EXPECT_EQ(samplerNames(), expected);
+  EXPECT_EQ(samplerWrapperNames(), std::vector<std::string>{"bluenoise-dither"});
+  // every plain name, then the wrapper over every plain name
+  ASSERT_EQ(allSamplerNames().size(), 2 * expected.size());
+  for (size_t i = 0; i < expected.size(); ++i) {
+    EXPECT_EQ(allSamplerNames()[i], expected[i]);
+    EXPECT_EQ(allSamplerNames()[expected.size() + i], "bluenoise-dither:" + expected[i]);
+  }
+}
+
+TEST(SamplerFactory, WrapperNamesNeedOnePlainBase) {
+  for (const char* bad : {"bluenoise-dither", "bluenoise-dither:", "bluenoise-dither:sobl",
+                          "bluenoise-dither:bluenoise-dither:sobol", "dither:sobol", ":sobol"}) {
+    try {
+      makeSampler(bad, 4, 0);
+      FAIL() << "accepted " << bad;
+    } catch (const OptionError& e) {
+      EXPECT_EQ(e.option(), "--sampler") << bad;
+      EXPECT_NE(std::string(e.what()).find("bluenoise-dither:BASE"), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_THROW(makeSampler("bluenoise-dither:sobol", 0, 0), OptionError);
+  EXPECT_EQ(makeSampler("bluenoise-dither:sobol", 4, 0)->name(), "bluenoise-dither:sobol");
 }
 
 TEST(SamplerFactory, UnknownNameListsEveryValidName) {
@@ -190,7 +223,7 @@ TEST(SamplerFactory, UnknownNameListsEveryValidName) {
 }
 
 TEST(SamplerFactory, NonPositiveSppThrows) {
-  for (const std::string& n : samplerNames()) {
+  for (const std::string& n : allSamplerNames()) {
     for (int spp : {0, -3}) {
       try {
         makeSampler(n, spp, 0);
@@ -218,7 +251,7 @@ TEST(SamplerFactory, WarningsExactlyForUnnaturalCounts) {
     const bool square = static_cast<int>(std::lround(std::sqrt(spp))) * static_cast<int>(std::lround(std::sqrt(spp))) == spp;
     for (const char* grid : {"uniform", "jittered", "multijittered", "cmj"})
       EXPECT_EQ(makeSampler(grid, spp, 0)->warning().empty(), square) << grid << " " << spp;
-    for (const char* seq : {"sobol", "pmj02"}) {
+    for (const char* seq : {"sobol", "pmj02", "zsobol", "bluenoise-dither:sobol"}) {
       const std::string w = makeSampler(seq, spp, 0)->warning();
       EXPECT_EQ(w.empty(), isPow2(spp)) << seq << " " << spp;
       if (!w.empty()) {
@@ -284,13 +317,13 @@ TEST(SamplerStructure, LatinHypercubeOnePointPerRowAndColumn) {
 TEST(SamplerStructure, ElementaryIntervalsAtPowersOfTwo) {
   // Every elementary interval of area 1/N holds one point, N = 1 .. 256; and
   // for spp 256 every power-of-two prefix is a net too (the sequences are progressive).
-  for (const char* name : {"sobol", "pmj02", "hammersley"})
+  for (const char* name : {"sobol", "pmj02", "hammersley", "zsobol"})
     for (int n = 1; n <= 256; n *= 2) {
       auto s = makeSampler(name, n, 23);
       for (int p = 0; p < kPixels; ++p) {
         const auto pts = pixel(*s, p, 7);
         ASSERT_TRUE(isZeroTwoNet(pts, n)) << name << " N " << n << " pixel " << p;
-        if (n < 256 || std::string(name) == "hammersley") continue;
+        if (n < 256 || std::string(name) == "hammersley" || std::string(name) == "zsobol") continue;
         for (int prefix = 1; prefix < n; prefix *= 2) ASSERT_TRUE(isZeroTwoNet(pts, prefix)) << name << " prefix " << prefix;
       }
     }
@@ -389,6 +422,161 @@ TEST(SamplerMath, KenslerPermuteIsABijectionAndDivisorIsExact) {
 
 TEST(SamplerStructure, Pmj02RefusesHugeCounts) {
   EXPECT_THROW(makeSampler("pmj02", (1 << 16) + 1, 0), OptionError);
+}
+
+
+// ---------------------------------------------------------------------------
+// Samplers correlated across pixels (zsobol, bluenoise-dither).
+
+/// All points of the `side` x `side` pixels from (x0, y0), overlaid (sub-pixel offsets only).
+std::vector<Vec2> blockUnion(const Sampler& s, int x0, int y0, int side) {
+  std::vector<Vec2> all;
+  for (int y = y0; y < y0 + side; ++y)
+    for (int x = x0; x < x0 + side; ++x)
+      for (const Vec2& v : pixel(s, x, y)) all.push_back(v);
+  return all;
+}
+
+TEST(SamplerCorrelation, ZSobolAlignedPixelBlocksFormNets) {
+  // An aligned 2^j x 2^j block at spp = 2^k is an aligned block of 4^j 2^k Sobol' points: a
+  // (0, 2j + k, 2)-net. Covers 2x2 blocks at 4 spp and 4x4 blocks at 16 spp (and 1 .. 16 spp generally).
+  for (int spp : {1, 2, 4, 8, 16})
+    for (int side : {2, 4})
+      for (uint64_t seed : {1u, 2u}) {
+        auto s = makeSampler("zsobol", spp, seed);
+        for (int b = 0; b < 24; ++b) {
+          const int x0 = side * (b % 6) + (b < 12 ? 0 : 64), y0 = side * (b / 6) + (b < 12 ? 0 : 1000 - 1000 % side);
+          const auto pts = blockUnion(*s, x0, y0, side);
+          ASSERT_TRUE(isZeroTwoNet(pts, static_cast<int>(pts.size())))
+              << "spp " << spp << " block " << side << "x" << side << " at " << x0 << "," << y0;
+        }
+      }
+}
+
+TEST(SamplerCorrelation, IndependentSamplersDoNotFillNeighbourGaps) {
+  // The block check can fail: sobol's per-pixel scrambles (and bluenoise-dither, whose pixels share one
+  // set shifted by a mask) almost never make a 2x2 block at 4 spp a (0,4,2)-net.
+  for (const char* name : {"sobol", "bluenoise-dither:sobol"}) {
+    auto s = makeSampler(name, 4, 3);
+    int nets = 0;
+    for (int b = 0; b < 32; ++b) nets += isZeroTwoNet(blockUnion(*s, 2 * b, 6, 2), 16) ? 1 : 0;
+    EXPECT_LE(nets, 3) << name;
+  }
+}
+
+TEST(SamplerCorrelation, ZSobolNonPowerOfTwoTakesDistinctStrataOfItsBlock) {
+  // spp = 3 uses 3 of the 4 points of a (0,2,2)-net: three different quadrants; spp = 6 (block of 8,
+  // two aligned pairs and one more): the two pairs are (0,1,2)-nets, so no 1/8 column holds two points
+  // of the 8-net subset.
+  auto three = makeSampler("zsobol", 3, 4), six = makeSampler("zsobol", 6, 4);
+  for (int p = 0; p < kPixels; ++p) {
+    std::vector<int> quadrant(4, 0), column(8, 0);
+    for (const Vec2& v : pixel(*three, p, 2 * p)) ++quadrant[cellOf(v.y(), 2) * 2 + cellOf(v.x(), 2)];
+    for (int q : quadrant) ASSERT_LE(q, 1) << "pixel " << p;
+    for (const Vec2& v : pixel(*six, p, 2 * p)) ++column[cellOf(v.x(), 8)];
+    for (int c : column) ASSERT_LE(c, 1) << "pixel " << p;
+  }
+}
+
+TEST(SamplerCorrelation, NeighbourMeansAntiCorrelate) {
+  // At 1 spp the four pixels of an aligned 2x2 block hold a (0,2,2)-net (zsobol), or points shifted by
+  // blue-noise ranks (bluenoise-dither): horizontally adjacent pixels' x anti-correlate, r < -0.2
+  // (zsobol) and r < -0.1 (dither: a void-and-cluster mask's neighbours, reduced by the wrap-around of
+  // the shift); independent pixels have sd 1 / sqrt(2048 pairs) = 0.022, so -0.1 is 4.5 sd away.
+  for (const char* name : {"zsobol", "bluenoise-dither:random", "bluenoise-dither:jittered"}) {
+    const double bound = std::string(name) == "zsobol" ? -0.2 : -0.1;
+    auto s = makeSampler(name, 1, 5);
+    ASSERT_TRUE(s->correlatedAcrossPixels());
+    std::vector<double> a, b;
+    for (int y = 0; y < 64; ++y)
+      for (int x = 0; x < 64; x += 2) a.push_back(pixel(*s, x, y)[0].x()), b.push_back(pixel(*s, x + 1, y)[0].x());
+    EXPECT_LT(correlation(a, b), bound) << name;
+  }
+  EXPECT_FALSE(makeSampler("sobol", 1, 5)->correlatedAcrossPixels());
+}
+
+TEST(SamplerCorrelation, DitherSharesOneSetShiftedPerPixel) {
+  // Every pixel holds the same set up to one toroidal shift: point i minus point 0 (mod 1) is the same
+  // in every pixel, to the 2^-24 resolution of the coordinates.
+  auto s = makeSampler("bluenoise-dither:jittered", 16, 6);
+  const auto first = pixel(*s, 0, 0);
+  const auto wrapDiff = [](double a, double b) { return a - b - std::floor(a - b); };
+  for (int p = 1; p < kPixels; ++p) {
+    const auto pts = pixel(*s, 3 * p, p + 40);
+    for (size_t i = 1; i < pts.size(); ++i) {
+      for (int c : {0, 1}) {
+        const double d = wrapDiff(pts[i][c], pts[0][c]) - wrapDiff(first[i][c], first[0][c]);
+        ASSERT_LT(std::min(std::abs(d), 1 - std::abs(d)), 3e-7) << "pixel " << p << " point " << i;
+      }
+    }
+  }
+}
+
+TEST(SamplerCorrelation, DitherShiftsAreTheMaskRanks) {
+  // dither:uniform at 1 spp: x = frac(1/2 + ux + rank_x / 4096), so over one 64x64 tile the 1/4096
+  // columns holding x are a permutation (one each), and the same for y; the next tile repeats them.
+  auto s = makeSampler("bluenoise-dither:uniform", 1, 8);
+  std::vector<int> cx(4096, 0), cy(4096, 0);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const Vec2 v = pixel(*s, x + 128, y - 64)[0];
+      ++cx[cellOf(v.x(), 4096)], ++cy[cellOf(v.y(), 4096)];
+      ASSERT_EQ(v, pixel(*s, x, y)[0]);
+    }
+  for (int i = 0; i < 4096; ++i) {
+    ASSERT_EQ(cx[i], 1) << "x column " << i;
+    ASSERT_EQ(cy[i], 1) << "y row " << i;
+  }
+}
+
+/// Fraction of the power of a kMaskSize^2 mask (mean removed) at radial frequency below 1/8 cycle per
+/// pixel (a quarter of Nyquist), by a direct 2-D DFT (an independent computation, not lib/study).
+double maskLowFrequencyFraction(const std::vector<double>& v) {
+  const int n = sampling::kMaskSize;
+  double mean = 0;
+  for (double x : v) mean += x / v.size();
+  std::vector<std::complex<double>> rows(v.size()), f(v.size());
+  const double tau = 2 * std::acos(-1.0);
+  for (int y = 0; y < n; ++y)
+    for (int u = 0; u < n; ++u)
+      for (int x = 0; x < n; ++x) rows[y * n + u] += (v[y * n + x] - mean) * std::polar(1.0, -tau * u * x / n);
+  double low = 0, total = 0;
+  for (int w = 0; w < n; ++w)
+    for (int u = 0; u < n; ++u) {
+      std::complex<double> sum = 0;
+      for (int y = 0; y < n; ++y) sum += rows[y * n + u] * std::polar(1.0, -tau * w * y / n);
+      const double fu = (u < n / 2 ? u : u - n) / static_cast<double>(n), fw = (w < n / 2 ? w : w - n) / static_cast<double>(n);
+      total += std::norm(sum);
+      if (std::hypot(fu, fw) < 0.125) low += std::norm(sum);
+    }
+  return low / total;
+}
+
+TEST(SamplerCorrelation, VoidAndClusterMaskIsABlueNoisePermutation) {
+  // Every rank once per tile; the power below a quarter of Nyquist under 0.1 % of the total (measured 1.3e-5 to 1.5e-5). A white-noise
+  // permutation puts about pi (1/8)^2 = 4.9 % there (the disc's share of the frequency square), and
+  // must fail the bound (the check can fail).
+  for (uint64_t seed : {0u, 1u, 2u})
+    for (int channel : {0, 1}) {
+      const auto mask = sampling::blueNoiseMask(seed, channel);
+      ASSERT_EQ(mask->size(), 4096u);
+      std::vector<int> seen(4096, 0);
+      for (uint16_t r : *mask) ++seen.at(r);
+      for (int c : seen) ASSERT_EQ(c, 1);
+      const double low = maskLowFrequencyFraction(std::vector<double>(mask->begin(), mask->end()));
+      EXPECT_LT(low, 0.001) << "seed " << seed << " channel " << channel;
+      RecordProperty("low_fraction_" + std::to_string(seed) + "_" + std::to_string(channel), std::to_string(low));
+      EXPECT_EQ(sampling::blueNoiseMask(seed, channel), mask) << "cached: built once";
+    }
+  EXPECT_NE(*sampling::blueNoiseMask(0, 0), *sampling::blueNoiseMask(1, 0));
+  EXPECT_NE(*sampling::blueNoiseMask(0, 0), *sampling::blueNoiseMask(0, 1));
+  std::vector<double> white(4096);
+  for (int i = 0; i < 4096; ++i) white[i] = i;
+  HashRng rng(99);
+  for (int i = 4095; i > 0; --i) std::swap(white[i], white[rng.nextBelow(i + 1)]);
+  const double whiteLow = maskLowFrequencyFraction(white);
+  EXPECT_GT(whiteLow, 0.03);
+  EXPECT_LT(whiteLow, 0.07);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 // <= 16 spp, 256-spp references).
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <sys/wait.h>
 
 #include <algorithm>

@@ -78,6 +78,7 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   // General sampling.
   std::string samplers, filters;
   for (const std::string& n : samplerNames()) samplers += (samplers.empty() ? "" : ", ") + n;
+  for (const std::string& w : samplerWrapperNames()) samplers += ", " + w + ":BASE (any of these)";
   for (const std::string& n : filterNames()) filters += (filters.empty() ? "" : ", ") + n;
   app.add_option("--sampler", o.sampler, "sampler: " + samplers);
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");

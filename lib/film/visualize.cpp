@@ -3,12 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace aliaslab {
 namespace {
 
 const Color kDarkBlue(0.f, 0.f, 0.5f), kBlue(0.f, 0.f, 1.f);
+const Color kGhost(0.75f, 0.55f, 0.15f);  ///< renderSamples: a block neighbour's sample offset (amber)
 
 float channelMean(const Color& c) { return (c[0] + c[1] + c[2]) / 3.f; }
 
@@ -27,6 +29,23 @@ Image renderSamples(const SampleBuffer& samples, int zoom) {
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
       if ((x / zoom + y / zoom) % 2 == 0) img.set(x, y, Color::Constant(0.2f));
+  // Neighbours' offsets: in each pixel, the sub-pixel offsets of the other pixels of its aligned 2x2
+  // block as ghosts, so a correlated sampler's gap filling (or an independent one's clumps) shows.
+  if (zoom >= 4) {
+    for (int j = 0; j < samples.height(); ++j)
+      for (int i = 0; i < samples.width(); ++i)
+        for (const auto& [ni, nj] : {std::pair{i ^ 1, j}, std::pair{i, j ^ 1}, std::pair{i ^ 1, j ^ 1}}) {
+          if (ni >= samples.width() || nj >= samples.height()) continue;
+          const FilmSample* n = samples.pixel(ni, nj);
+          for (int k = 0; k < samples.spp(); ++k) {
+            const float ox = n[k].x - ni, oy = n[k].y - nj;  // offset inside its own pixel
+            if (!(ox >= 0 && ox < 1 && oy >= 0 && oy < 1)) continue;
+            const int x = std::min(int(std::floor((i + ox) * zoom)), (i + 1) * zoom - 1);
+            const int y = std::min(int(std::floor((j + oy) * zoom)), (j + 1) * zoom - 1);
+            img.set(x, y, kGhost);
+          }
+        }
+  }
   for (const FilmSample& s : samples.samples()) {
     const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
     if (fx >= 0 && fy >= 0 && fx < w && fy < h) img.set(int(fx), int(fy), s.L);

@@ -11,7 +11,11 @@ namespace aliaslab {
 /// The classic -render_samples picture: (w*zoom) x (h*zoom), each pixel's
 /// zoom x zoom block grey 0.2 when i + j is even else black, each sample one
 /// image pixel at (floor(x*zoom), floor(y*zoom)) in its radiance (samples
-/// outside the film are left out). zoom >= 1.
+/// outside the film are left out). zoom >= 1. With zoom >= 4 each pixel's
+/// block also shows, as amber ghost dots (0.75, 0.55, 0.15) drawn before
+/// the samples, the sub-pixel offsets of the other pixels of its aligned 2x2
+/// block (pixels (i^1, j), (i, j^1), (i^1, j^1)): samplers correlated across
+/// pixels (zsobol) fill each other's gaps, independent ones clump.
 Image renderSamples(const SampleBuffer& samples, int zoom);
 
 /// The classic -render_filter picture for a width x height film:

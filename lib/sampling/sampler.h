@@ -6,7 +6,8 @@
 // get film coordinates). The points are a pure function of (seed, px, py):
 // calling generate for pixels in any order, on any thread, gives the same
 // points, and different pixels get decorrelated sets (independent
-// scrambles / permutations / jitter derived from core/hash.h).
+// scrambles / permutations / jitter derived from core/hash.h) unless the
+// pattern declares otherwise (correlatedAcrossPixels(), below).
 //
 // Counts a pattern does not naturally take (a non-square count for a grid
 // pattern, a non-power of two for a (0,2)-sequence) are handled explicitly:
@@ -17,12 +18,25 @@
 // The order of the points within a pixel carries no meaning (grid patterns
 // write them cell by cell): do not split a pixel's points by index into
 // "independent halves"; use two seeds instead. Construction may precompute
-// (pmj02 and bluenoise build a pool of 16 sequences per seed); generate()
+// (pmj02 and bluenoise build a pool of 16 sequences per seed,
+// bluenoise-dither fetches its seed's masks from a process-wide cache); generate()
 // is const and safe to call from many threads at once.
 //
-// Names: see samplerNames(); each implementation file (lib/sampling/<name>.cpp)
+// Correlation across pixels: by default different pixels are independent
+// given the seed. A pattern may instead correlate neighbouring pixels on
+// purpose (zsobol shares one sequence over the image, bluenoise-dither
+// shifts one pattern by a blue-noise mask) so that the error moves to high
+// screen frequencies; it then returns true from correlatedAcrossPixels().
+// Each pixel's points are still unbiased (each point uniform over seeds) and
+// still a pure function of (seed, px, py): the correlation is between the
+// pixels of one seed, never between seeds.
+//
+// Names: see samplerNames(); each implementation file (lib/sampling/<name>.cpp,
+// '-' written '_')
 // opens with a table of what the pattern is, how it handles counts and when
-// to use it.
+// to use it. A composed name "WRAPPER:BASE" applies a wrapper of
+// samplerWrapperNames() to any registered base (e.g. bluenoise-dither:sobol);
+// allSamplerNames() lists every plain and composed name.
 #pragma once
 #include <cstdint>
 #include <memory>
@@ -47,6 +61,8 @@ class Sampler {
   virtual std::string describe() const = 0;
   /// Non-empty when spp is not a count this pattern naturally takes; says what it does instead.
   virtual std::string warning() const { return {}; }
+  /// True when the points of different pixels of one seed are deliberately correlated (see above).
+  virtual bool correlatedAcrossPixels() const { return false; }
 
   int spp() const { return spp_; }
   uint64_t seed() const { return seed_; }
@@ -56,11 +72,18 @@ class Sampler {
   uint64_t seed_;
 };
 
-/// Every registered name, in a fixed order (tests and the sweep iterate it).
+/// Every registered plain name, in a fixed order (tests and the sweep iterate it).
 const std::vector<std::string>& samplerNames();
 
-/// Makes a sampler by name. Throws OptionError("--sampler", ...) listing the
-/// valid names for an unknown one, and OptionError("--spp", ...) for spp < 1
+/// Wrappers that take a base sampler, used as "WRAPPER:BASE" (fixed order).
+const std::vector<std::string>& samplerWrapperNames();
+
+/// samplerNames(), then WRAPPER:BASE for every wrapper and every plain name.
+const std::vector<std::string>& allSamplerNames();
+
+/// Makes a sampler by name (plain or "WRAPPER:BASE"). Throws
+/// OptionError("--sampler", ...) listing the valid names for an unknown one
+/// (or a wrapper without a valid base, or a wrapper of a wrapper), and OptionError("--spp", ...) for spp < 1
 /// or a count the pattern refuses.
 std::unique_ptr<Sampler> makeSampler(const std::string& name, int spp, uint64_t seed);
 

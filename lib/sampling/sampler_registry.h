@@ -21,6 +21,10 @@ std::unique_ptr<Sampler> makeHammersleySampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeSobolSampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makePmj02Sampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeBlueNoiseSampler(int spp, uint64_t seed);
+std::unique_ptr<Sampler> makeZSobolSampler(int spp, uint64_t seed);
+
+/// Wrappers ("WRAPPER:BASE"): take the constructed base sampler (its spp is the wrapper's).
+std::unique_ptr<Sampler> makeBlueNoiseDitherSampler(std::unique_ptr<Sampler> base, uint64_t seed);
 
 /// The warning grid samplers give for a non-square spp ("" when square).
 std::string gridWarning(const char* name, int spp);

@@ -24,7 +24,7 @@ const std::vector<std::string>& csvColumns() {
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
-      "aliasing_se", "mse_target_se"};
+      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse"};
   return cols;
 }
 
@@ -73,7 +73,8 @@ std::string formatCsvRow(const CsvRow& r) {
     << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
     << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.target) << ',' << real(r.mseTarget) << ','
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
-    << real(r.aliasingSe) << ',' << real(r.mseTargetSe);
+    << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
+    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse);
   return s.str();
 }
 

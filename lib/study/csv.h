@@ -5,7 +5,8 @@
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
-//   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se
+//   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
+//   lowfreq_error,lowfreq_error_se,blurred_mse   (study/spectrum.h)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -43,6 +44,7 @@ struct CsvRow {
   std::string target;  ///< the study's target T as "filter:radius" (default "box:0.5", the pixel area)
   double mseTarget = 0, blur = 0, cross = 0;
   double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;
+  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< study/spectrum.h
 };
 
 /// The header line (no newline).

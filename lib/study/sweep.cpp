@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <set>
 
+#include "core/format.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
 #include "render/render.h"
@@ -17,6 +19,7 @@
 #include "study/metrics.h"
 #include "study/progress.h"
 #include "study/reference.h"
+#include "study/spectrum.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {
@@ -36,6 +39,7 @@ struct Pending {
   std::unique_ptr<Filter> filter;
   const ReferenceImage* reference = nullptr;
   std::unique_ptr<MetricAccumulator> metrics;
+  std::unique_ptr<SpectrumAccumulator> spectrum;
   ReconStats stats;
   double traceMs = 0, reconMs = 0;
   Image seed0;
@@ -58,6 +62,14 @@ CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGro
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
   r.target = targetLabel(c.target);
   return r;
+}
+
+// The per-scene spectrum CSV (study/spectrum.h) beside the study CSV: <csv folder>/spectra/<scene>.csv, or
+// <scene>.<csv stem>.csv when the CSV is not the default study.csv (shards, --csv), so shards never share one.
+std::string spectrumPath(const StudyConfig& c, const std::string& scene) {
+  const fs::path csv(csvPath(c));
+  const std::string stem = csv.filename() == "study.csv" ? "" : "." + csv.stem().string();
+  return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
 }
 
 ReferenceOptions referenceOptions(const StudyConfig& c) {
@@ -107,6 +119,7 @@ SweepSummary runSweep(const StudyConfig& config) {
   }
   ProgressBar progress(units, "sweep", config.progress && !config.refsOnly);
 
+  std::set<std::string> spectraWritten;  // spectrum CSVs to put in canonical order at the end
   for (size_t gi = 0; gi < groups.size();) {
     // One scene at a time: load it and its references once.
     const std::string scenePath = groups[gi].scene;
@@ -180,6 +193,7 @@ SweepSummary runSweep(const StudyConfig& config) {
       for (Pending& p : rows) {
         p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
         p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
+        p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
       }
       bool shared = false;
       for (const Pending& p : rows) shared = shared || p.mode != ReconMode::ImportanceSampled;
@@ -189,6 +203,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         const auto sampler = makeSampler(group.sampler, group.spp, static_cast<uint64_t>(k));
         auto keep = [&](Pending& p, Reconstruction&& r, double traceMs, double reconMs) {
           p.metrics->add(r.image);
+          p.spectrum->add(r.image);
           p.stats += r.stats;
           p.traceMs += traceMs / config.seeds, p.reconMs += reconMs / config.seeds;
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
@@ -252,6 +267,15 @@ SweepSummary runSweep(const StudyConfig& config) {
         r.negativePixels = static_cast<long long>(p.stats.negativePixels);
         r.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
         r.traceMs = p.traceMs, r.reconstructMs = p.reconMs;
+        const SpectrumMetrics sm = p.spectrum->result();
+        r.lowfreqError = sm.lowfreqError, r.lowfreqErrorSe = sm.lowfreqErrorSe, r.blurredMse = sm.blurredMse;
+        {  // spectra first: a row in the study CSV always has its spectra (a repeat is dropped at the end)
+          const std::string spectra = spectrumPath(config, r.scene);
+          fs::create_directories(fs::path(spectra).parent_path());
+          appendSpectrumCsv(spectra, r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
+                                         formatNumber(r.radius, "%.9g") + ',' + r.reconstruction, sm);
+          spectraWritten.insert(spectra);
+        }
         if (sum.images) {
           fs::create_directories(imageDir);
           writeConfigurationImages(imageDir.string(), configurationImageBase(r), p.seed0, p.reference->image,
@@ -259,7 +283,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         out->append(r);
         ++sum.rowsWritten;
-        p.metrics.reset(), p.seed0 = Image();  // the K images and sums of a finished row are not needed again
+        p.metrics.reset(), p.spectrum.reset(), p.seed0 = Image();  // a finished row's K images and sums are not needed again
       }
       progress.advance(std::max(0.0, groupUnits[g] - advanced));
     }
@@ -271,6 +295,7 @@ SweepSummary runSweep(const StudyConfig& config) {
   if (out) {
     out.reset();
     canonicaliseCsv(csv);
+    for (const std::string& spectra : spectraWritten) canonicaliseSpectrumCsv(spectra);
     if (sum.images) writeContactSheets(csv, (fs::path(config.out) / "images").string());
   }
   sum.seconds = std::chrono::duration<double>(Clock::now() - start).count();

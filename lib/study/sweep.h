@@ -10,7 +10,10 @@
 // samples per filter (traceImportanceSamples). Each image goes straight into
 // its configuration's MetricAccumulator. When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
-// the seed-0 image, signed error and noise map are written.
+// the seed-0 image, signed error and noise map are written. Each row's
+// radial error and noise spectra (study/spectrum.h) go to
+// <csv folder>/spectra/<scene>.csv (<scene>.<csv stem>.csv for shards or a
+// --csv path) just before the row, and are put in canonical order at the end.
 //
 // Resuming: configurations whose key is already in the CSV are skipped (a
 // group whose rows are all present is not traced). At the end the CSV is

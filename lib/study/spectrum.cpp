@@ -1,0 +1,233 @@
+#include "study/spectrum.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <iterator>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <unsupported/Eigen/FFT>
+
+#include "core/error.h"
+#include "core/files.h"
+#include "core/format.h"
+
+namespace aliaslab {
+
+namespace {
+using Complex = std::complex<double>;
+constexpr double kPi = 3.14159265358979323846;
+
+/// The unnormalised 2-D DFT of channel c of `image` (minus `subtract` when given), row-major v * W + u.
+std::vector<Complex> dft2(const Image& image, const Image* subtract, int c) {
+  const int w = image.width(), h = image.height();
+  Eigen::FFT<double> fft;
+  std::vector<Complex> out(static_cast<size_t>(w) * h), line(w), col(h), colOut(h), lineOut(w);
+  const float* a = image.data();
+  const float* b = subtract ? subtract->data() : nullptr;
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const size_t i = 3 * (static_cast<size_t>(y) * w + x) + c;
+      line[x] = Complex(static_cast<double>(a[i]) - (b ? static_cast<double>(b[i]) : 0.0), 0.0);
+    }
+    fft.fwd(lineOut, line);
+    std::copy(lineOut.begin(), lineOut.end(), out.begin() + static_cast<size_t>(y) * w);
+  }
+  for (int u = 0; u < w; ++u) {
+    for (int y = 0; y < h; ++y) col[y] = out[static_cast<size_t>(y) * w + u];
+    fft.fwd(colOut, col);
+    for (int v = 0; v < h; ++v) out[static_cast<size_t>(v) * w + u] = colOut[v];
+  }
+  return out;
+}
+
+int binOf(double rho) { return std::min(kSpectrumBins - 1, static_cast<int>(rho / kSpectrumBinWidth)); }
+
+double blurGain(double rho) { return std::exp(-4 * kPi * kPi * kBlurSigma * kBlurSigma * rho * rho); }
+}  // namespace
+
+double frequencyRadius(int u, int v, int width, int height) {
+  const double fu = (u < (width + 1) / 2 ? u : u - width) / static_cast<double>(width);
+  const double fv = (v < (height + 1) / 2 ? v : v - height) / static_cast<double>(height);
+  return std::hypot(fu, fv);
+}
+
+double RadialSpectrum::total() const {
+  double t = 0;
+  for (double e : energy) t += e;
+  return t;
+}
+
+std::vector<double> powerSpectrum(const Image& image) {
+  const size_t n = static_cast<size_t>(image.width()) * image.height();
+  const double scale = 1.0 / (3.0 * static_cast<double>(n) * static_cast<double>(n));
+  std::vector<double> p(n, 0.0);
+  for (int c = 0; c < 3; ++c) {
+    const auto e = dft2(image, nullptr, c);
+    for (size_t i = 0; i < n; ++i) p[i] += std::norm(e[i]) * scale;
+  }
+  return p;
+}
+
+RadialSpectrum radialSpectrum(const Image& image) {
+  RadialSpectrum r;
+  const auto p = powerSpectrum(image);
+  const int w = image.width(), h = image.height();
+  for (int v = 0; v < h; ++v)
+    for (int u = 0; u < w; ++u) {
+      const int b = binOf(frequencyRadius(u, v, w, h));
+      r.energy[b] += p[static_cast<size_t>(v) * w + u], ++r.count[b];
+    }
+  return r;
+}
+
+SpectrumAccumulator::SpectrumAccumulator(const Image& reference)
+    : reference_(reference), width_(reference.width()), height_(reference.height()) {
+  const size_t n = static_cast<size_t>(width_) * height_;
+  radius_.resize(n);
+  for (int v = 0; v < height_; ++v)
+    for (int u = 0; u < width_; ++u) radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
+  sum_.assign(3 * n, Complex(0, 0));
+  sumSquares_.assign(n, 0.0);
+}
+
+void SpectrumAccumulator::add(const Image& image) {
+  if (image.width() != width_ || image.height() != height_)
+    throw std::invalid_argument("SpectrumAccumulator::add: image size differs from the reference");
+  const size_t n = static_cast<size_t>(width_) * height_;
+  const double inv = 1.0 / static_cast<double>(n);
+  double low = 0, total = 0, blurred = 0;
+  for (int c = 0; c < 3; ++c) {
+    auto e = dft2(image, &reference_, c);
+    for (size_t i = 0; i < n; ++i) {
+      const Complex z = e[i] * inv;  // P = |z|^2 / 3 for this channel
+      const double p = std::norm(z) / 3.0;
+      sum_[c * n + i] += z;
+      sumSquares_[i] += p;
+      total += p;
+      if (radius_[i] < kLowFrequencyCutoff) low += p;
+      blurred += p * blurGain(radius_[i]);
+    }
+  }
+  lowFractions_.push_back(total > 0 ? low / total : 0.0);
+  blurred_ += blurred;
+  ++count_;
+}
+
+SpectrumMetrics SpectrumAccumulator::result() const {
+  if (count_ < 2) throw std::logic_error("SpectrumAccumulator::result needs at least 2 images");
+  SpectrumMetrics m;
+  m.images = count_;
+  const double k = count_;
+  double mean = 0;
+  for (double f : lowFractions_) mean += f / k;
+  double var = 0;
+  for (double f : lowFractions_) var += (f - mean) * (f - mean) / (k - 1);
+  m.lowfreqError = mean, m.lowfreqErrorSe = std::sqrt(var / k);
+  m.blurredMse = blurred_ / k;
+  const size_t n = static_cast<size_t>(width_) * height_;
+  for (size_t i = 0; i < n; ++i) {
+    const int b = binOf(radius_[i]);
+    // per channel sum_k |z_k - mean z|^2 = sum_k |z_k|^2 - |sum_k z_k|^2 / K; P takes the channel mean (/3)
+    double spread = sumSquares_[i];
+    for (int c = 0; c < 3; ++c) spread -= std::norm(sum_[c * n + i]) / 3.0 / k;
+    m.error.energy[b] += sumSquares_[i] / k;
+    m.noise.energy[b] += std::max(0.0, spread) / (k - 1);
+    ++m.error.count[b], ++m.noise.count[b];
+  }
+  return m;
+}
+
+// ---------------------------------------------------------------------------
+const std::string& spectrumCsvHeader() {
+  static const std::string h = "scene,sampler,spp,filter,radius,reconstruction,kind,bin,frequency,power,energy";
+  return h;
+}
+
+namespace {
+std::string real(double v) { return formatNumber(v, "%.9g"); }
+
+/// Complete lines of a spectrum CSV (header checked; a torn last line dropped).
+std::vector<std::string> readSpectrumLines(const std::string& path, bool& any) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream ss;
+  if (in) ss << in.rdbuf();
+  const std::string text = ss.str();
+  std::vector<std::string> lines;
+  any = !text.empty();
+  size_t start = 0;
+  bool header = true;
+  for (size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
+    const std::string line = text.substr(start, nl - start);
+    if (header) {
+      if (line != spectrumCsvHeader()) throw FileError(path, "not a spectrum CSV (unexpected header)");
+      header = false;
+    } else if (!line.empty()) {
+      lines.push_back(line);
+    }
+  }
+  return lines;
+}
+}  // namespace
+
+void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec)) {
+    bool any = false;
+    readSpectrumLines(path, any);  // checks the header
+    std::ifstream in(path, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const size_t keep = text.rfind('\n') == std::string::npos ? 0 : text.rfind('\n') + 1;
+    if (keep != text.size()) std::filesystem::resize_file(path, keep, ec);  // a torn last line
+    if (ec) throw FileError(path, "cannot truncate the partial last line: " + ec.message());
+  }
+  std::string out;
+  const bool fresh = !std::filesystem::exists(path, ec) || std::filesystem::file_size(path, ec) == 0;
+  if (fresh) out = spectrumCsvHeader() + '\n';
+  for (const auto& [kind, s] : {std::pair<const char*, const RadialSpectrum*>{"error", &m.error}, {"noise", &m.noise}})
+    for (int b = 0; b < kSpectrumBins; ++b)
+      if (s->count[b] > 0)
+        out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + real(RadialSpectrum::frequency(b)) + ',' +
+               real(s->power(b)) + ',' + real(s->energy[b]) + '\n';
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  if (fd < 0) throw FileError(path, "cannot open for appending");
+  const bool ok = ::write(fd, out.data(), out.size()) == static_cast<ssize_t>(out.size());
+  ::close(fd);
+  if (!ok) throw FileError(path, "write failed");
+}
+
+void canonicaliseSpectrumCsv(const std::string& path) {
+  bool any = false;
+  const auto lines = readSpectrumLines(path, any);
+  // key: every field before power (scene .. frequency); the last copy wins; numbers sort as numbers
+  const auto less = [](const std::string& x, const std::string& y) {
+    std::istringstream a(x), b(y);
+    std::string fa, fb;
+    while (std::getline(a, fa, ',') && std::getline(b, fb, ',')) {
+      if (fa == fb) continue;
+      char* ea = nullptr;
+      char* eb = nullptr;
+      const double na = std::strtod(fa.c_str(), &ea), nb = std::strtod(fb.c_str(), &eb);
+      if (!fa.empty() && !fb.empty() && *ea == 0 && *eb == 0 && na != nb) return na < nb;
+      return fa < fb;
+    }
+    return x.size() < y.size();
+  };
+  std::map<std::string, std::string, decltype(less)> byKey(less);
+  for (const std::string& l : lines) {
+    size_t cut = l.size();
+    for (int commas = 0; commas < 2 && cut != std::string::npos; ++commas) cut = l.rfind(',', cut - 1);
+    byKey[l.substr(0, cut)] = l;
+  }
+  std::string text = spectrumCsvHeader() + '\n';
+  for (const auto& [key, line] : byKey) text += line + '\n';
+  writeTextFile(path, text);
+}
+
+}  // namespace aliaslab

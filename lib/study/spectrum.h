@@ -1,0 +1,107 @@
+// Where the error sits on screen: power spectra of error images and the
+// scalar measures made from them (docs/spectrum.md).
+//
+// Power spectrum of an image e (W x H, per channel c): with the DFT
+// E_c(u, v) = sum_{x,y} e_c(x, y) exp(-2 pi i (u x / W + v y / H)),
+//   P(u, v) = mean over channels of |E_c(u, v)|^2 / (W H)^2,
+// normalised so that (Parseval) sum over all (u, v) of P = mean over pixels
+// and channels of e^2. (u, v) is the frequency (u'/W, v'/H) in cycles per
+// pixel with u' = u wrapped to [-W/2, W/2); its radius rho ranges from 0 to
+// about 0.71 (Nyquist is 0.5 along each axis). The DC term (rho = 0) is the
+// mean of e: a bias is error at the lowest frequency.
+//
+// Radial spectrum: frequencies binned by rho into bins of width 1/64 cycle
+// per pixel (bin b holds b/64 <= rho < (b+1)/64; 46 bins reach the
+// corners); per bin the energy (sum of P) and the count of frequencies, so
+// energy / count is the radially averaged power and the energies sum to the
+// mean square.
+//
+// Protocol of SpectrumAccumulator: construct with the reference G, add() the
+// K images I_k, result(). Per image it takes the spectrum of the error
+// e_k = I_k - G and keeps, per frequency, sum_k E_k and sum_k |E_k|^2, so the
+// noise spectrum (of I_k - m, m the mean of the K images) follows at the end
+// without keeping the images:
+//   errorSpectrum = mean_k P[e_k]                  (energies sum to mse)
+//   noiseSpectrum = sum_k P[e_k - mean_j e_j]/(K-1) (energies sum to noise,
+//                                                   the unbiased variance)
+//   lowfreq_error    = mean over k of f_k, f_k = the share of P[e_k] at
+//                      rho < kLowFrequencyCutoff (a quarter of Nyquist,
+//                      0.125 cycle per pixel; DC included); 0 for an
+//                      error-free image
+//   lowfreq_error_se = standard deviation of f_k over k / sqrt(K)
+//   blurred_mse      = mean over k of the mean square of e_k blurred by a
+//                      Gaussian of sigma = kBlurSigma = 1 pixel, applied as
+//                      the transfer function exp(-2 pi^2 sigma^2 rho^2) on
+//                      the DFT (a circular convolution: the blur wraps at the
+//                      image border), so blurred_mse = mean_k sum P[e_k] *
+//                      exp(-4 pi^2 sigma^2 rho^2)
+// White noise has lowfreq_error = pi 0.125^2 = 0.049 (the disc's share of
+// the frequency square); error pushed to high frequencies has less.
+#pragma once
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "core/image.h"
+
+namespace aliaslab {
+
+inline constexpr double kLowFrequencyCutoff = 0.125;  ///< cycles per pixel: a quarter of Nyquist
+inline constexpr double kBlurSigma = 1.0;             ///< pixels: the blurred_mse Gaussian
+inline constexpr double kSpectrumBinWidth = 1.0 / 64;  ///< cycles per pixel per radial bin
+inline constexpr int kSpectrumBins = 46;               ///< bins up to rho = 46/64 > sqrt(2)/2
+
+struct RadialSpectrum {
+  std::vector<double> energy = std::vector<double>(kSpectrumBins, 0.0);  ///< sum of P in each bin
+  std::vector<long> count = std::vector<long>(kSpectrumBins, 0);         ///< frequencies in each bin
+  /// Radially averaged power of bin b (0 for an empty bin).
+  double power(int b) const { return count[b] ? energy[b] / count[b] : 0.0; }
+  /// Centre of bin b in cycles per pixel.
+  static double frequency(int b) { return (b + 0.5) * kSpectrumBinWidth; }
+  /// Sum of all energies (= the mean square of the image).
+  double total() const;
+};
+
+/// The per-frequency power P(u, v) (row-major, v * W + u) of an image.
+std::vector<double> powerSpectrum(const Image& image);
+/// The radial spectrum of an image.
+RadialSpectrum radialSpectrum(const Image& image);
+/// Radius in cycles per pixel of DFT index (u, v) of a W x H image.
+double frequencyRadius(int u, int v, int width, int height);
+
+struct SpectrumMetrics {
+  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;
+  RadialSpectrum error, noise;
+  int images = 0;
+};
+
+class SpectrumAccumulator {
+ public:
+  explicit SpectrumAccumulator(const Image& reference);
+  void add(const Image& image);
+  /// Needs at least 2 images (for the noise spectrum and the standard error).
+  SpectrumMetrics result() const;
+
+ private:
+  Image reference_;  ///< a copy (a temporary may be passed)
+  int width_, height_;
+  std::vector<double> radius_;                      ///< rho per frequency
+  std::vector<std::complex<double>> sum_;           ///< per channel and frequency: sum_k E_k / (W H)
+  std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
+  std::vector<double> lowFractions_;                ///< f_k
+  double blurred_ = 0;
+  int count_ = 0;
+};
+
+/// Appends the spectra of one configuration to a long-format CSV with the header
+///   scene,sampler,spp,filter,radius,reconstruction,kind,bin,frequency,power,energy
+/// (kind = error or noise; one line per bin), creating it with the header when missing. One write per
+/// call; a torn last line from a killed run is cut first. Throws FileError.
+void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m);
+/// Rewrites a spectrum CSV sorted by its key columns, keeping the last copy of a repeated
+/// (configuration, kind, bin) line (a configuration re-measured after an interruption).
+void canonicaliseSpectrumCsv(const std::string& path);
+/// The header of the spectrum CSV (no newline).
+const std::string& spectrumCsvHeader();
+
+}  // namespace aliaslab
