@@ -186,7 +186,7 @@ def decomposition(df, out_dir):
     show_recon = df["reconstruction"].nunique() > 1
     for scene, sd in df.groupby("scene", sort=True):
         levels = sorted(sd["spp"].unique())
-        cols = min(3, len(levels))
+        cols = min(2, len(levels))
         rows = (len(levels) + cols - 1) // cols
         fig, axes = plt.subplots(rows, cols, figsize=(6.2 * cols, 0.32 * (BEST_SHOWN + 1) * rows + 1.6 * rows),
                                  squeeze=False)

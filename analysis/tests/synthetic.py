@@ -53,9 +53,9 @@ def add_new_columns(r):
              lowfreq_error_se=se / 2, blurred_mse=r["mse"] / 4)
 
 
-def rows(scale=1.0, new_columns=False, prefilter=False):
+def rows(scale=1.0, new_columns=False, prefilter=False, scenes=None):
     """Yields dicts of the study CSV; `scale` multiplies mse and aliasing."""
-    for r in old_rows(scale):
+    for r in old_rows(scale, scenes):
         variants = [("none", r)]
         if prefilter:
             p = dict(r)
@@ -72,9 +72,9 @@ def rows(scale=1.0, new_columns=False, prefilter=False):
             yield v
 
 
-def old_rows(scale=1.0):
+def old_rows(scale=1.0, scenes=None):
     """The rows with the original columns only (common.STUDY_COLUMNS)."""
-    for scene in SCENES:
+    for scene in scenes or SCENES:
         for sampler, n0 in SAMPLERS.items():
             for filt, a0 in FILTERS.items():
                 for radius in RADII:
@@ -96,16 +96,62 @@ def old_rows(scale=1.0):
                         }
 
 
-def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False):
+def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scenes=None):
     """Writes the CSV; `modify(row)` may change a row in place. new_columns=False writes an older CSV
     (without the columns of coord/COLUMNS.md); prefilter=True adds the `prefilter` column and a
-    pre-filtered copy of every configuration."""
+    pre-filtered copy of every configuration; `scenes` replaces SCENES (e.g. ["a"] for a smaller CSV)."""
     fields = list(common.STUDY_COLUMNS) + (NEW_COLUMNS if new_columns else []) + (["prefilter"] if prefilter else [])
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
-        for r in rows(scale, new_columns, prefilter):
+        for r in rows(scale, new_columns, prefilter, scenes):
             if modify:
                 modify(r)
             w.writerow(r)
     return path
+
+
+def tiny_png(path, value=0.5):
+    """A 6 x 4 grey PNG (stands in for a sweep image)."""
+    import numpy as np
+    from common import plt
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    plt.imsave(path, np.full((4, 6), value), cmap="gray", vmin=0, vmax=1)
+    return path
+
+
+def make_results(folder, new_columns=True, prefilter=False, shards=True, engineering=True):
+    """A results folder as the sweep and the experiments leave it: study/study.csv (the merged CSV),
+    two shard CSVs beside it holding the same rows (when `shards`), study/images with a contact sheet
+    per scene and the seed-0 image and error image of every configuration at the highest spp, and
+    (when `engineering`) a benchmark and a fuzzing record. Returns the study CSV's path."""
+    study = os.path.join(folder, "study")
+    os.makedirs(study, exist_ok=True)
+    csv_path = write(os.path.join(study, "study.csv"), new_columns=new_columns, prefilter=prefilter)
+    if shards:
+        with open(csv_path) as f:
+            lines = f.read().splitlines()
+        half = (len(lines) - 1) // 2
+        for i, part in enumerate((lines[1:1 + half], lines[1 + half:])):
+            with open(os.path.join(study, f"study.shard-{i}-of-2.csv"), "w") as f:
+                f.write("\n".join([lines[0]] + part) + "\n")
+    images = os.path.join(study, "images")
+    for scene in SCENES:
+        stem = common.slug(scene)
+        tiny_png(os.path.join(images, f"contact-{stem}.png"), 0.3)
+        with open(os.path.join(images, f"contact-{stem}.txt"), "w") as f:
+            f.write(f"contact sheet of {stem}: rows top to bottom\n")
+        tiny_png(os.path.join(images, stem, "reference-area.png"), 0.6)
+        for sampler in SAMPLERS:
+            for filt in FILTERS:
+                for radius in RADII:
+                    base = f"{sampler}-spp{max(SPPS)}-{filt}-r{radius:g}-weighted"
+                    tiny_png(os.path.join(images, stem, base + ".png"), 0.5)
+                    tiny_png(os.path.join(images, stem, base + "-error.png"), 0.1)
+    if engineering:
+        with open(os.path.join(folder, "study_speed.md"), "w") as f:
+            f.write("# Study speed (measured)\n\nbefore the fused pass, after the fused pass.\n\n"
+                    "| what | ms |\n|---|---:|\n| trace | 12.5 |\n")
+        with open(os.path.join(folder, "fuzzing.md"), "w") as f:
+            f.write("# Fuzzing\n\n| target | executions |\n|---|---:|\n| fuzz_scene | 1000 |\n")
+    return csv_path
