@@ -34,6 +34,7 @@ import argparse
 import os
 import sys
 
+import matplotlib.ticker
 import numpy as np
 import pandas as pd
 
@@ -78,6 +79,15 @@ def empty_panel(ax, text):
     ax.set_yticks([])
     ax.text(0.5, 0.5, text, ha="center", va="center", transform=ax.transAxes, fontsize=9, color="#555",
             wrap=True)
+
+
+def label_log_axis(ax):
+    """Labels minor ticks of a log y axis that spans less than about two decades (else one label)."""
+    lo, hi = ax.get_ylim()
+    if lo > 0 and hi / lo < 100:
+        ax.yaxis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False,
+                                                                               minor_thresholds=(2, 0.4)))
+        ax.tick_params(axis="y", which="minor", labelsize=7)
 
 
 def yerr_log(values, se):
@@ -292,6 +302,7 @@ def radius_tradeoff(df, out_dir):
             if drawn:
                 ax.set_yscale("log")
                 ax.grid(True, which="major", alpha=0.3)
+                label_log_axis(ax)
             else:
                 empty_panel(ax, "no finite value > 0")
         axes.flat[0].set_ylabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
@@ -321,7 +332,7 @@ def convergence(df, out_dir, filter_name):
                 & (sd["filter_params"] == best["filter_params"]) & (sd["reconstruction"] == best["reconstruction"])
                 & (sd["prefilter"] == best["prefilter"])]
         levels = sorted(fd["spp"].unique())
-        fig, axes = plt.subplots(1, 3, figsize=(16, 5))
+        fig, axes = plt.subplots(1, 3, figsize=(13, 4.4))
         for ax, (metric, se_col, title) in zip(axes, panels):
             drawn = 0
             for i, (sampler, g) in enumerate(fd.groupby("sampler", sort=True)):
@@ -348,8 +359,9 @@ def convergence(df, out_dir, filter_name):
             ax.set_xscale("log", base=2)
             ax.set_yscale("log")
             ax.set_xlabel("samples per pixel")
-            ax.set_ylabel(f"{title} (per pixel and channel)")
+            ax.set_ylabel(f"{title}\n(per pixel and channel)", fontsize=9)
             ax.grid(True, which="major", alpha=0.3)
+            label_log_axis(ax)
             ax.legend(fontsize=7)
         if "blur" in fd.columns and np.isfinite(fd["blur"]).any() and (fd["blur"] > 0).any():
             axes[0].axhline(float(fd["blur"].max()), color="black", ls=":", lw=1)

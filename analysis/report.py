@@ -62,7 +62,7 @@ font-size:.9em}figure{margin:.8em 0;background:#fff;border:1px solid #ddd;paddin
 max-width:100%;box-sizing:border-box;vertical-align:top}figure img{max-width:100%;height:auto}
 figcaption{font-size:.85em;color:#444;max-width:60em}table{border-collapse:collapse;font-size:.82em;margin:.5em 0}
 td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}td:first-child{text-align:left}
-.pix img{width:192px;image-rendering:pixelated}.pix figure{margin-right:8px}nav a{margin-right:.8em}
+.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}nav a{margin-right:.8em}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
 
 
@@ -273,8 +273,12 @@ def findings(df, notes, target):
         levels = ", ".join(str(b["spp"]) for b in g)
         ratios = ", ".join(f"{b['ratio']:.2f}x" for b in g)
         wins = ", ".join(f"{b['wins']}" for b in g)
-        parts.append(f"at {levels} spp <b>{html.escape(g[0]['method'])}</b> (error relative to each scene's best: "
-                     f"{ratios}, median over {g[0]['scenes']} scene(s); best outright in {wins} scene(s))")
+        if all(b["ratio"] == 1.0 and b["wins"] == b["scenes"] for b in g):
+            detail = f"the best in every scene ({g[0]['scenes']})"
+        else:
+            detail = (f"error relative to each scene's best: {ratios}, median over {g[0]['scenes']} scene(s); "
+                      f"best outright in {wins} scene(s)")
+        parts.append(f"at {levels} spp <b>{html.escape(g[0]['method'])}</b> ({detail})")
     out.append("<p>Lowest error against the target: " + "; ".join(parts) + ".</p>")
     table = summary_table(df)
     if len(table):
@@ -409,7 +413,7 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed):
         if os.path.isfile(txt):
             with open(txt, encoding="utf-8", errors="replace") as f:
                 caption = "Contact sheet: " + html.escape(f.readline().strip())
-        parts.append(figure(page_dir, sheet, caption, embed))
+        parts.append(figure(page_dir, sheet, caption, embed, cls="sheet"))
     ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
     if len(ok):
         top = ok[ok["spp"] == ok["spp"].max()]
