@@ -90,6 +90,35 @@ def label_log_axis(ax):
         ax.tick_params(axis="y", which="minor", labelsize=7)
 
 
+def plain_log_x(ax):
+    """Tick labels of a log x axis as plain numbers (0.5, 2, 300), major and minor."""
+    fmt = matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}")
+    ax.xaxis.set_major_formatter(fmt)
+    ax.xaxis.set_minor_formatter(matplotlib.ticker.FuncFormatter(
+        lambda v, _: f"{v:g}" if f"{v:.0e}"[0] in "25" else ""))
+    ax.tick_params(axis="x", which="minor", labelsize=7)
+
+
+OUTLIER_FACTOR = 30.0
+
+
+def clip_outliers(ax, x, y, colour="grey"):
+    """Caps a log y axis at OUTLIER_FACTOR x the 75th percentile of y when the values span more than
+    four decades; the points above are drawn at the cap as grey triangles. Returns a note ('' if none)."""
+    y = np.asarray(y, dtype=float)
+    x = np.asarray(x, dtype=float)
+    if len(y) < 4 or y.max() / y.min() < 1e4:
+        return ""
+    cap = float(np.quantile(y, 0.75)) * OUTLIER_FACTOR
+    above = y > cap
+    if not above.any():
+        return ""
+    ax.set_ylim(top=cap * 1.6)
+    ax.scatter(x[above], np.full(above.sum(), cap * 1.3), marker="^", color=colour, s=30, zorder=4,
+               clip_on=False)
+    return f"{int(above.sum())} point(s) above {cap:.2g} (up to {y.max():.2g}) drawn as grey triangles at the top"
+
+
 def yerr_log(values, se):
     """Asymmetric +-2 se error bars that stay positive on a log axis (None when se is unknown)."""
     se = np.asarray(se, dtype=float)
@@ -144,6 +173,12 @@ def speed_accuracy(df, out_dir):
             fronts.append(front.assign(scene=scene))
         ax.set_xscale("log")
         ax.set_yscale("log")
+        plain_log_x(ax)
+        ymin = float(sd["error"].min())
+        ax.set_ylim(bottom=ymin / 1.6)
+        clipped = clip_outliers(ax, sd["time_ms"], sd["error"])
+        if clipped:
+            ax.set_title(title + ("\n" if "\n" not in title else "; ") + clipped, fontsize=10)
         ax.set_xlabel("time per image (ms) = trace + reconstruction")
         ax.set_ylabel(ERROR_LABEL[has_target(df)])
         ax.grid(True, which="major", alpha=0.3)
@@ -278,8 +313,11 @@ def radius_tradeoff(df, out_dir):
         recon = best["reconstruction"] if best is not None else sd["reconstruction"].iloc[0]
         sub = sd[(sd["sampler"] == sampler) & (sd["reconstruction"] == recon) & (sd["prefilter"] == "none")]
         filters = sorted(sub["filter_name"].unique())
-        fig, axes = plt.subplots(1, max(1, len(filters)), figsize=(3.6 * max(1, len(filters)) + 1, 4.2),
-                                 squeeze=False, sharey=True)
+        cols = min(3, max(1, len(filters)))
+        nrows = (max(1, len(filters)) + cols - 1) // cols
+        fig, axes = plt.subplots(nrows, cols, figsize=(3.9 * cols + 1.6, 3.4 * nrows + 0.6), squeeze=False)
+        for ax in axes.flat[len(filters):]:
+            ax.axis("off")
         for ax, filt in zip(axes.flat, filters):
             fd = sub[sub["filter_name"] == filt]
             drawn = False
@@ -305,7 +343,8 @@ def radius_tradeoff(df, out_dir):
                 label_log_axis(ax)
             else:
                 empty_panel(ax, "no finite value > 0")
-        axes.flat[0].set_ylabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
+        for row in axes:
+            row[0].set_ylabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
         handles = [plt.Line2D([], [], color=spp_colours[s], marker="o", label=f"error, {int(s)} spp")
                    for s in levels]
         handles += [plt.Line2D([], [], color="grey", ls="--", label="noise (same colour: spp)"),

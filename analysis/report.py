@@ -147,9 +147,10 @@ METHOD_KEY = ["sampler", "filter_name", "radius", "filter_params", "reconstructi
 def ranked(df):
     """Unflagged rows with a finite error, with `ratio` = error / the best error of its (scene, spp)."""
     ok = df[(df["flagged"] == 0) & np.isfinite(df["error"].to_numpy(dtype=float))].copy()
-    best = ok.groupby(["scene", "spp"])["error"].transform("min")
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ok["ratio"] = np.where(best > 0, ok["error"] / best, np.where(ok["error"] == 0, 1.0, np.inf))
+    for column, by in (("ratio", ["scene", "spp"]), ("ratio_scene", ["scene"])):
+        best = ok.groupby(by)["error"].transform("min")
+        with np.errstate(divide="ignore", invalid="ignore"):
+            ok[column] = np.where(best > 0, ok["error"] / best, np.where(ok["error"] == 0, 1.0, np.inf))
     return ok
 
 
@@ -191,11 +192,12 @@ def own_mse_pick(df):
 
 
 def summary_table(df):
-    """One point per (method, spp) present in every scene: mean time and geometric-mean ratio."""
+    """One point per (method, spp) present in every scene: mean time and the geometric mean over scenes
+    of error / the scene's lowest error at any spp level."""
     ok = ranked(df)
     scenes = ok["scene"].nunique()
     with np.errstate(divide="ignore"):
-        ok = ok.assign(logratio=np.log(ok["ratio"].astype(float)))
+        ok = ok.assign(logratio=np.log(ok["ratio_scene"].astype(float)))
     g = ok.groupby(METHOD_KEY + ["spp"], dropna=False).agg(time_ms=("time_ms", "mean"),
                                                           logratio=("logratio", "mean"),
                                                           scenes=("scene", "nunique")).reset_index()
@@ -226,11 +228,14 @@ def summary_chart(df, out_dir):
     for k, (_, r) in enumerate(front.iterrows(), 1):
         ax.annotate(str(k), (r["time_ms"], r["ratio"]), textcoords="offset points", xytext=(4, 4), fontsize=8,
                     weight="bold")
-        lines.append(f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['ratio']:.2f}, {r['time_ms']:.3g} ms")
+        lines.append(f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['ratio']:.3g}, {r['time_ms']:.3g} ms")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    charts.plain_log_x(ax)
+    ax.set_ylim(bottom=float(g["ratio"].min()) / 1.5)
+    clipped = charts.clip_outliers(ax, g["time_ms"], g["ratio"])
     ax.set_xlabel("time per image (ms, mean over scenes)")
-    ax.set_ylabel("error / the scene's best error at that spp\n(geometric mean over scenes; 1 = best)")
+    ax.set_ylabel("error / the scene's lowest error at any spp\n(geometric mean over scenes; 1 = best)")
     ax.grid(True, which="both", alpha=0.25)
     handles = [plt.Line2D([], [], ls="", marker="o", color=colours[s], label=s) for s in samplers]
     handles += [plt.Line2D([], [], ls="", marker="o", color="grey", ms=np.sqrt(sizes[s]), label=f"{int(s)} spp")
@@ -244,7 +249,8 @@ def summary_chart(df, out_dir):
     shown = lines[:20] + ([f"... {len(lines) - 20} more"] if len(lines) > 20 else [])
     ax.text(1.01, 0.0, "Pareto front:\n" + "\n".join(shown), transform=ax.transAxes, fontsize=7, va="bottom",
             family="monospace")
-    ax.set_title("Error against the target vs time, every method at every spp level, all scenes", fontsize=10)
+    ax.set_title("Error against the target vs time, every method at every spp level, all scenes"
+                 + (f"\n{clipped}" if clipped else ""), fontsize=10)
     common.save_figure(fig, out_dir, name)
     return os.path.join(out_dir, name + ".png"), lines
 
@@ -292,7 +298,7 @@ def findings(df, notes, target):
             out.append(f"<p>For the time spent, the Pareto front (nothing both faster and more accurate) runs from "
                        f"<b>{html.escape(method_name(first))} at {int(first['spp'])} spp</b> ({first['time_ms']:.3g} "
                        f"ms, {first['ratio']:.2f}x the best) to <b>{html.escape(method_name(last))} at "
-                       f"{int(last['spp'])} spp</b> ({last['time_ms']:.3g} ms, {last['ratio']:.2f}x); {len(front)} "
+                       f"{int(last['spp'])} spp</b> ({last['time_ms']:.3g} ms, {last['ratio']:.3g}x); {len(front)} "
                        "methods on it in all (numbered on the chart below).</p>")
     pick = own_mse_pick(df)
     if pick:
@@ -534,8 +540,8 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     if notes:
         body.append("<div class='note'><b>About this CSV.</b> " + " ".join(html.escape(n) for n in notes) + "</div>")
     body.append(figure(results, summary_png, "Every method at every spp level: its error relative to each scene's "
-                       "best at that spp (geometric mean over scenes) against its time; the Pareto front is "
-                       "numbered and listed.", embed))
+                       "lowest error at any spp level (geometric mean over scenes) against its time; the Pareto "
+                       "front is numbered and listed.", embed))
     body.append("<h2 id='scenes'>Per scene</h2><p>" + " ".join(
         f"<a href='#scene-{html.escape(common.slug(s))}'>{html.escape(s)}</a>" for s in scenes) + "</p>")
     for scene in scenes:

@@ -58,7 +58,7 @@ class DegenerateStudies(unittest.TestCase):
         out = os.path.join(self.tmp.name, "charts")
         code, _, err = run(charts.main, [csv, "--out", out])
         self.assertEqual(code, 0, err)
-        for name in ("speed_accuracy_a", "decomposition_a", "radius_a", "convergence_a", "heatmap_a", "stability"):
+        for name in ("speed_accuracy_a", "convergence_a", "heatmap_a", "stability", "decomposition_a", "radius_a"):
             self.assertTrue(is_png(os.path.join(out, name + ".png")), name)
         return out
 
@@ -85,6 +85,20 @@ class DegenerateStudies(unittest.TestCase):
         self.assertTrue((table["aliasing"] < 0).all())
 
     def test_nan_and_inf_values(self):
+        # No error is finite: every row's errors are NaN or Inf (alternating), some pixels NaN.
+        count = [0]
+
+        def broken(r):
+            count[0] += 1
+            bad = math.nan if count[0] % 2 else math.inf
+            for c in ("mse", "mse_area", "mse_target", "noise"):
+                r[c] = bad
+            r["psnr"] = bad
+            r["nan_pixels"] = 7
+        out = self.draw(broken)
+        self.assertTrue(pd.read_csv(os.path.join(out, "pareto.csv")).empty)
+
+    def test_some_nan_and_inf_values_are_left_out(self):
         count = [0]
 
         def broken(r):
@@ -95,9 +109,9 @@ class DegenerateStudies(unittest.TestCase):
             elif count[0] % 3 == 1:
                 r["mse_target"] = math.inf
                 r["noise"] = math.inf
-                r["nan_pixels"] = 7
         out = self.draw(broken)
         front = pd.read_csv(os.path.join(out, "pareto.csv"))
+        self.assertFalse(front.empty)
         self.assertTrue(front["error"].map(math.isfinite).all())
 
     def test_a_single_spp_level_is_drawn_without_slopes(self):
