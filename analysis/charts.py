@@ -34,6 +34,7 @@ import argparse
 import os
 import sys
 
+import matplotlib.patches
 import matplotlib.ticker
 import numpy as np
 import pandas as pd
@@ -277,7 +278,10 @@ def decomposition(df, out_dir):
             ax.set_xlabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
             ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
             ax.grid(True, axis="x", alpha=0.3)
-        handles, labels = axes.flat[0].get_legend_handles_labels()
+        handles = [matplotlib.patches.Patch(facecolor=COMPONENT_COLOURS[c], hatch="//" if c == "cross" else None,
+                                            edgecolor="white", label=l) for c, l in terms]
+        handles.append(plt.Line2D([], [], ls="", marker="D", color="black", ms=4, label="total (+-2 se)"))
+        labels = [h.get_label() for h in handles]
         if any_zero:
             handles.append(plt.Line2D([], [], ls=""))
             labels.append("* aliasing zero within error (|a| <= 2 se)")
@@ -471,7 +475,7 @@ def stability(df, out_dir):
               ("flagged", "flagged rows\n(reference not converged)")]
     methods = sorted(df["method"].unique())
     samplers = sorted(df["sampler"].unique())
-    fig, axes = plt.subplots(1, 4, figsize=(3.2 + 4 * (0.45 * len(samplers) + 1.4), 2.2 + 0.26 * len(methods)),
+    fig, axes = plt.subplots(1, 4, figsize=(2.6 + 4 * (0.32 * len(samplers) + 1.0), 2.2 + 0.26 * len(methods)),
                              layout="constrained")
     for k, (ax, (col, title)) in enumerate(zip(axes, panels)):
         table = df.pivot_table(index="method", columns="sampler", values=col, aggfunc="sum").reindex(
@@ -485,11 +489,13 @@ def stability(df, out_dir):
             ax.text(0.5, 0.5, "none: every count is 0", ha="center", va="center", transform=ax.transAxes,
                     fontsize=9, color="#333", bbox=dict(facecolor="white", edgecolor="#999"))
             continue
+        top = max(np.log10(1 + data.max()), 0.5)
         im = ax.imshow(np.where(data > 0, np.log10(1 + data), np.nan), cmap="magma_r", aspect="auto", vmin=0,
-                       vmax=max(np.log10(1 + data.max()), 0.5))
+                       vmax=top)
         for (i, j), v in np.ndenumerate(data):
             if v > 0:
-                ax.text(j, i, f"{int(v)}", ha="center", va="center", fontsize=6, color="tab:cyan")
+                ax.text(j, i, f"{int(v)}", ha="center", va="center", fontsize=6,
+                        color="white" if np.log10(1 + v) / top > 0.45 else "black")
         fig.colorbar(im, ax=ax, label="log10(1 + count)", shrink=0.6)
     fig.suptitle("Stability: counts summed over scenes and spp (filter r reconstruction x sampler; "
                  "blank cells: 0)", fontsize=10)

@@ -297,7 +297,7 @@ def findings(df, notes, target):
         else:
             out.append(f"<p>For the time spent, the Pareto front (nothing both faster and more accurate) runs from "
                        f"<b>{html.escape(method_name(first))} at {int(first['spp'])} spp</b> ({first['time_ms']:.3g} "
-                       f"ms, {first['ratio']:.2f}x the best) to <b>{html.escape(method_name(last))} at "
+                       f"ms, {first['ratio']:.3g}x the scene's lowest error) to <b>{html.escape(method_name(last))} at "
                        f"{int(last['spp'])} spp</b> ({last['time_ms']:.3g} ms, {last['ratio']:.3g}x); {len(front)} "
                        "methods on it in all (numbered on the chart below).</p>")
     pick = own_mse_pick(df)
