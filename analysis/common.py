@@ -29,7 +29,7 @@ CONFIG_KEY = ["scene", "width", "height", "sampler", "spp", "filter", "radius", 
 # Text columns; `prefilter` is part of the configuration key when present.
 OPTIONAL_TEXT = ["target", "prefilter"]
 OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
-                    "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse"]
+                    "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp"]
 TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter"}
 
 
@@ -160,8 +160,8 @@ def load_study(path):
       - numbers as floats (NaN / Inf kept as such), text as str;
       - `time_ms` = trace_ms + reconstruct_ms (time per image);
       - `prefilter` = 'none' when the CSV has no such column (older sweeps);
-      - `target` = 'area' when absent (older sweeps measured mse_area against
-        the pixel-area reference, the default target);
+      - `target` = 'box:0.5' when absent (older sweeps measured mse_area against
+        the pixel-area reference, the default target, which the sweep writes box:0.5);
       - `error` = the error against the study's common target, the column every
         ranking uses: mse_target, or for older CSVs without it mse_area (the
         same quantity against the pixel-area reference);
@@ -179,7 +179,7 @@ def load_study(path):
     if "prefilter" not in df.columns:
         df["prefilter"] = "none"
     if "target" not in df.columns:
-        df["target"] = "area"
+        df["target"] = "box:0.5"
     if "mse_target" in df.columns:
         df["error"] = df["mse_target"]
     else:
@@ -205,6 +205,11 @@ def load_study(path):
         notes.append(f"{int(bad.sum())} row(s) have a non-finite error (NaN or Inf): they are left out of "
                      "rankings and charts.")
     return df, notes
+
+
+def describe_target(target):
+    """The target as the CSV writes it, with the pixel-area reference named: 'box:0.5 (the pixel area)'."""
+    return f"{target} (the pixel-area reference)" if str(target) in ("box:0.5", "area") else str(target)
 
 
 def zero_within_error(value, se):

@@ -380,6 +380,8 @@ def method_image(images, scene, r):
 def scene_table(sd):
     """HTML table of the scene's three lowest errors at each spp level, with their terms."""
     terms = charts.components(sd)
+    extra = [(c, l) for c, l in (("flip", "FLIP"), ("lowfreq_error", "low-frequency error"),
+                                 ("mean_spp", "mean spp spent")) if c in sd.columns]
     ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
     rows = []
     for spp, g in ok.groupby("spp", sort=True):
@@ -392,9 +394,12 @@ def scene_table(sd):
                 if c == "aliasing" and r["aliasing_zero"]:
                     v += " (0 within error)"
                 cells.append(v)
+            for c, _ in extra:
+                cells.append(f"{r[c]:.3g}")
             cells.append(f"{r['time_ms']:.3g}")
             rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
-    head = ["method", "spp", "error &plusmn; se"] + [html.escape(l) for _, l in terms] + ["time (ms)"]
+    head = (["method", "spp", "error &plusmn; se"] + [html.escape(l) for _, l in terms]
+            + [html.escape(l) for _, l in extra] + ["time (ms)"])
     return ("<table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(rows) + "</table>")
 
 
@@ -425,7 +430,8 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed):
         top = ok[ok["spp"] == ok["spp"].max()]
         pics = []
         target = os.path.join(images, s, "reference-area.png")
-        pics.append(figure(page_dir, target, "target (pixel-area reference)", embed))
+        pics.append(figure(page_dir, target, "pixel-area reference" + (" (the target)" if set(
+            sd["target"].astype(str)) <= {"box:0.5", "area"} else ""), embed))
         for what, r in (("best", top.loc[top["error"].idxmin()]), ("worst", top.loc[top["error"].idxmax()])):
             found = method_image(images, scene, r)
             if found:
@@ -517,7 +523,7 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     summary_png, _ = summary_chart(df, charts_dir)
     name = study_label(study, label)
     targets = sorted(df["target"].astype(str).unique())
-    target = ", ".join(targets)
+    target = ", ".join(common.describe_target(t) for t in targets)
     science = html.escape(os.path.relpath(SCIENCE, results).replace(os.sep, "/"))
     scenes = sorted(df["scene"].unique())
     levels = sorted(int(s) for s in df["spp"].unique())

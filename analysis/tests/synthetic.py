@@ -11,7 +11,7 @@ with sampler 'uniform' 3 undefined pixels; scene 'b' rows of 'random' at
 spp 1 are flagged.
 
 With the newer columns (coord/COLUMNS.md; write(..., new_columns=True), the
-default), against the common target 'area':
+default), against the common target box:0.5 (the pixel area):
   blur       = b0(filter) * radius^2          (the filter's own deviation)
   cross      = +0.1 sqrt(aliasing blur) for box, -0.1 sqrt(aliasing blur) for lanczos
   mse_target = noise + aliasing + blur + cross (exactly)
@@ -47,7 +47,7 @@ def add_new_columns(r):
     blur = BLUR[r["filter"]] * radius ** 2
     cross = (0.1 if r["filter"] == "box" else -0.1) * math.sqrt(max(aliasing, 0.0) * blur)
     se = noise * math.sqrt(2 / SEEDS)
-    r.update(target="area", blur=blur, cross=cross, mse_target=noise + aliasing + blur + cross,
+    r.update(target="box:0.5", blur=blur, cross=cross, mse_target=noise + aliasing + blur + cross,
              mse_se=se, noise_se=noise * math.sqrt(2 / (SEEDS - 1)), aliasing_se=se, mse_target_se=se,
              flip=math.sqrt(noise + aliasing + blur + cross), lowfreq_error=aliasing / 2,
              lowfreq_error_se=se / 2, blurred_mse=r["mse"] / 4)
