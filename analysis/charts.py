@@ -217,12 +217,12 @@ def chosen_methods(sd):
     """The methods a decomposition panel shows: the BEST_SHOWN lowest errors (unflagged, finite), plus
     the lowest own mse if that is another method (the one an own-mse ranking would pick)."""
     ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
-    best = ok.nsmallest(BEST_SHOWN, "error")
+    best = ok.nsmallest(BEST_SHOWN, "error").assign(_top=True)
     own = ok[np.isfinite(ok["mse"].to_numpy(dtype=float))]
     if len(own):
         pick = own.loc[[own["mse"].idxmin()]]
         if pick.index[0] not in best.index:
-            best = pd.concat([best, pick])
+            best = pd.concat([best, pick.assign(_top=False)])
     return best
 
 
@@ -264,7 +264,7 @@ def decomposition(df, out_dir):
                         else None, fmt="D", color="black", ms=4, capsize=2, lw=0.8, label="total (+-2 se)")
             labels = []
             best_own = pick["mse"].idxmin() if np.isfinite(pick["mse"]).any() else None
-            ranked = pick.index.isin(sd[sd["spp"] == spp].nsmallest(BEST_SHOWN, "error").index)
+            ranked = pick["_top"].to_numpy(dtype=bool)
             for (i, r), top in zip(pick.iterrows(), ranked):
                 text = method_label(r, show_recon)
                 if bool(r["aliasing_zero"]):
@@ -275,6 +275,19 @@ def decomposition(df, out_dir):
                 labels.append(text)
             ax.set_yticks(y, labels, fontsize=7)
             ax.axvline(0, color="black", lw=0.6)
+            # Scale to the best methods; an own-mse pick far beyond them is cut and its value written.
+            top_rows = np.asarray(ranked, dtype=bool)
+            if top_rows.any() and not top_rows.all():
+                err2 = np.nan_to_num(pick["error"].to_numpy(dtype=float) + 2 * np.where(np.isfinite(se), se, 0),
+                                     nan=0.0, posinf=0.0)
+                right = max(float(pos_left[top_rows].max()), float(err2[top_rows].max()), 1e-300) * 1.15
+                left = min(float(neg_left[top_rows].min()) * 1.15, -0.02 * right)
+                beyond = ~top_rows & (np.maximum(pos_left, err2) > right)
+                if beyond.any():
+                    ax.set_xlim(left, right)
+                    for yy, v in zip(y[beyond], pick["error"].to_numpy(dtype=float)[beyond]):
+                        ax.text(right, yy, f"{v:.2g} \u2192 ", ha="right", va="center", fontsize=7,
+                                color="white", weight="bold")
             ax.set_xlabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
             ax.ticklabel_format(axis="x", style="sci", scilimits=(-2, 3))
             ax.grid(True, axis="x", alpha=0.3)

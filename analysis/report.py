@@ -306,7 +306,7 @@ def findings(df, notes, target):
         if ratio > 1.0 + 1e-12:
             out.append(f"<p>Ranked by each filter's own mse (against its own reference, blind to blur), "
                        f"{html.escape(name)} would win at {spp} spp; against the common target its error is "
-                       f"{ratio:.2f}x the best (median over {n} scene(s)). That is why every ranking here uses "
+                       f"{ratio:.3g}x the best (median over {n} scene(s)). That is why every ranking here uses "
                        "the error against the target.</p>")
         else:
             out.append(f"<p>Here the own-mse ranking agrees with the error against the target at {spp} spp "
