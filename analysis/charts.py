@@ -388,8 +388,9 @@ def convergence(df, out_dir, filter_name):
                 & (sd["filter_params"] == best["filter_params"]) & (sd["reconstruction"] == best["reconstruction"])
                 & (sd["prefilter"] == best["prefilter"])]
         levels = sorted(fd["spp"].unique())
-        fig, axes = plt.subplots(1, 3, figsize=(13, 4.4))
-        for ax, (metric, se_col, title) in zip(axes, panels):
+        fig, axes = plt.subplots(1, 3, figsize=(13, 4.4 + 0.16 * ((fd["sampler"].nunique() + 1) // 2)))
+        for ax, (metric, se_col, name) in zip(axes, panels):
+            title = name
             drawn = 0
             for i, (sampler, g) in enumerate(fd.groupby("sampler", sort=True)):
                 g = g.sort_values("spp")
@@ -405,20 +406,19 @@ def convergence(df, out_dir, filter_name):
             if metric == "aliasing" and "aliasing_se" in fd.columns:
                 zero = fd[fd["aliasing_zero"].astype(bool)]
                 if len(zero):
-                    ax.text(0.02, 0.02, f"{len(zero)} of {len(fd)} points zero within error (|a| <= 2 se)"
-                            + ("; <= 0 not drawn" if (fd["aliasing"] <= 0).any() else ""),
-                            transform=ax.transAxes, fontsize=7)
-            ax.set_title(title, fontsize=10)
+                    title += (f"\n{len(zero)} of {len(fd)} points zero within error (|a| <= 2 se)"
+                              + ("; <= 0 not drawn" if (fd["aliasing"] <= 0).any() else ""))
+            ax.set_title(title, fontsize=9)
             if not drawn:
                 empty_panel(ax, f"no {metric} > 0 to draw on log axes")
                 continue
             ax.set_xscale("log", base=2)
             ax.set_yscale("log")
             ax.set_xlabel("samples per pixel")
-            ax.set_ylabel(f"{title}\n(per pixel and channel)", fontsize=9)
+            ax.set_ylabel(f"{name}\n(per pixel and channel)", fontsize=9)
             ax.grid(True, which="major", alpha=0.3)
             label_log_axis(ax)
-            ax.legend(fontsize=7)
+            ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)
         if "blur" in fd.columns and np.isfinite(fd["blur"]).any() and (fd["blur"] > 0).any():
             axes[0].axhline(float(fd["blur"].max()), color="black", ls=":", lw=1)
             axes[0].text(0.98, float(fd["blur"].max()), "blur (floor)", ha="right", va="bottom", fontsize=7,
