@@ -10,7 +10,7 @@ the metrics (mse, aliasing, noise, mse_area) that changed by more than their
 seed-to-seed uncertainty and the timings (trace_ms, reconstruct_ms and their
 sum) whose ratio exceeds --time-ratio either way (rows where both times are
 below --min-ms are ignored). Exit status: 1 when some mse got significantly
-worse (a regression), 2 on bad input (including two CSVs without a
+worse or is NaN / Inf in AFTER (a regression), 2 on bad input (including two CSVs without a
 configuration in common), 0 otherwise.
 
 Uncertainty. Write a pixel's error in seed k as e = b + eps, with b the
@@ -76,8 +76,16 @@ def significant(before, after, se_b, se_a, z, rel_tol):
     return abs(after - before) > z * math.hypot(se_b, se_a) + rel_tol * max(abs(before), abs(after))
 
 
+def is_worse(before, after):
+    """after is worse than before: larger, or not finite (NaN or Inf) where before was finite. A NaN
+    or Inf mse is a regression (it cannot be compared, so it must not pass silently)."""
+    if not math.isfinite(after):
+        return math.isfinite(before) or math.isnan(after) or after != before
+    return math.isfinite(before) and after > before
+
+
 def unique_rows(df, path):
-    dup = df.duplicated(common.CONFIG_KEY, keep="last")
+    dup = df.duplicated(common.config_key(df), keep="last")
     if dup.any():
         print(f"note: {path}: {int(dup.sum())} repeated configuration(s); the last row of each is used",
               file=sys.stderr)
@@ -92,7 +100,8 @@ def label(row):
 
 def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, independent_pixels=False):
     """Returns (metric changes, time changes, only-before keys, only-after keys) as DataFrames/lists."""
-    m = before.merge(after, on=common.CONFIG_KEY, how="outer", suffixes=("_b", "_a"), indicator=True)
+    key = common.CONFIG_KEY + (["prefilter"] if "prefilter" in before and "prefilter" in after else [])
+    m = before.merge(after, on=key, how="outer", suffixes=("_b", "_a"), indicator=True)
     only_b = m[m["_merge"] == "left_only"]
     only_a = m[m["_merge"] == "right_only"]
     both = m[m["_merge"] == "both"]
@@ -105,14 +114,15 @@ def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, inde
         se_b, se_a = standard_errors(rb, independent_pixels), standard_errors(ra, independent_pixels)
         for c in METRICS:
             b, a = float(rb[c]), float(ra[c])
-            if significant(b, a, se_b[c], se_a[c], z, rel_tol):
+            if significant(b, a, se_b[c], se_a[c], z, rel_tol) or (c == "mse" and not math.isfinite(a)):
                 sigma = math.hypot(se_b[c], se_a[c])
                 metric_rows.append({
                     "configuration": label(r), "metric": c, "before": b, "after": a,
-                    "change": f"{(a - b) / b:+.1%}" if b else "new",
+                    "change": (f"{(a - b) / b:+.1%}" if b and math.isfinite(a) and math.isfinite(b)
+                               else ("not finite" if not math.isfinite(a) else "new")),
                     "z": (a - b) / sigma if sigma > 0 else math.copysign(math.inf, a - b),
                     "flagged": int(r["flagged_b"] or r["flagged_a"]),
-                    "regression": int(c == "mse" and a > b and not (r["flagged_b"] or r["flagged_a"]))})
+                    "regression": int(c == "mse" and is_worse(b, a) and not (r["flagged_b"] or r["flagged_a"]))})
         for c in TIMES:
             b, a = float(r[f"{c}_b"]), float(r[f"{c}_a"])
             if max(a, b) < min_ms or min(a, b) <= 0:

@@ -24,9 +24,8 @@ COLUMNS = ["sampler", "integrand", "n", "rmse", "realisations"]
 
 
 def read(path):
-    if not os.path.isfile(path):
-        raise common.InputError(f"{path}: no such file")
-    return pd.read_csv(path)  # (columns and rows: common.require_rows)
+    """The convergence CSV, checked (columns, rows, numbers); raises common.InputError naming file and column."""
+    return common.read_table(path, COLUMNS, ["n", "rmse", "realisations"])
 
 
 def chart(df, out_dir, fit_min, fit_max):
@@ -40,7 +39,7 @@ def chart(df, out_dir, fit_min, fit_max):
     for ax, integrand in zip(axes.flat, integrands):
         for i, sampler in enumerate(samplers):
             g = df[(df["integrand"] == integrand) & (df["sampler"] == sampler)].sort_values("n")
-            g = g[g["rmse"] > 0]
+            g = g[(g["rmse"] > 0) & np.isfinite(g["rmse"]) & (g["n"] > 0)]
             if g.empty:
                 continue
             pow2 = np.abs(np.log2(g["n"]) - np.round(np.log2(g["n"]))) < 1e-9
@@ -73,9 +72,8 @@ def main(argv=None):
     args = ap.parse_args(argv)
     try:
         df = read(args.csv)
-    except (common.InputError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
+    except common.InputError as e:
         common.fail(str(e))
-    common.require_rows(df, args.csv, COLUMNS)
     common.prepare_out(args.out)
     chart(df, args.out, args.fit_min, args.fit_max)
     return 0

@@ -27,6 +27,7 @@ import common  # noqa: E402
 from common import plt  # noqa: E402
 
 COLUMNS = ["filter", "radius", "describe", "kind", "x", "value"]
+NUMERIC = ["radius", "x", "value"]
 
 
 def chart(df, out_dir):
@@ -63,14 +64,16 @@ def main(argv=None):
     common.prepare_out(args.out)
     try:
         if args.csv:
-            df = pd.read_csv(args.csv)
+            df = common.read_table(args.csv, COLUMNS, NUMERIC)
         else:
             text = subprocess.run([args.bin], check=True, capture_output=True, text=True).stdout
-            df = pd.read_csv(io.StringIO(text))
+            df = common.check_table(pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False),
+                                    f"output of {args.bin}", COLUMNS, NUMERIC)
             df.to_csv(os.path.join(args.out, "filter_profiles.csv"), index=False)
+    except common.InputError as e:
+        common.fail(str(e))
     except (OSError, subprocess.CalledProcessError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
         common.fail(f"{args.csv or args.bin}: {e}")
-    common.require_rows(df, args.csv or args.bin, COLUMNS)
     chart(df, args.out)
     return 0
 

@@ -9,7 +9,18 @@ comparison against the law, not against what the scripts printed:
 Filter 'lanczos' with radius 1 has 5 negative pixels, radius 0.5 of 'box'
 with sampler 'uniform' 3 undefined pixels; scene 'b' rows of 'random' at
 spp 1 are flagged.
+
+With the newer columns (coord/COLUMNS.md; write(..., new_columns=True), the
+default), against the common target box:0.5 (the pixel area):
+  blur       = b0(filter) * radius^2          (the filter's own deviation)
+  cross      = +0.1 sqrt(aliasing blur) for box, -0.1 sqrt(aliasing blur) for lanczos
+  mse_target = noise + aliasing + blur + cross (exactly)
+  mse_se = mse_target_se = aliasing_se = noise sqrt(2 / K), noise_se = noise sqrt(2 / (K - 1))
+  flip = sqrt(mse_target), lowfreq_error = aliasing / 2, blurred_mse = mse / 4
+With prefilter=True every configuration also comes pre-filtered ('footprint'):
+aliasing / 10 and trace_ms * 1.5.
 """
+import math
 import csv
 import os
 import sys
@@ -25,9 +36,45 @@ SCENES = ["a", "b.scene"]
 SEEDS = 8
 
 
-def rows(scale=1.0):
+BLUR = {"box": 0.003, "lanczos": 0.0005}
+NEW_COLUMNS = ["target", "mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
+               "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse"]
+
+
+def add_new_columns(r):
+    """Adds the newer columns to an old-style row dict, following the laws above."""
+    noise, aliasing, radius = r["noise"], r["aliasing"], r["radius"]
+    blur = BLUR[r["filter"]] * radius ** 2
+    cross = (0.1 if r["filter"] == "box" else -0.1) * math.sqrt(max(aliasing, 0.0) * blur)
+    se = noise * math.sqrt(2 / SEEDS)
+    r.update(target="box:0.5", blur=blur, cross=cross, mse_target=noise + aliasing + blur + cross,
+             mse_se=se, noise_se=noise * math.sqrt(2 / (SEEDS - 1)), aliasing_se=se, mse_target_se=se,
+             flip=math.sqrt(noise + aliasing + blur + cross), lowfreq_error=aliasing / 2,
+             lowfreq_error_se=se / 2, blurred_mse=r["mse"] / 4)
+
+
+def rows(scale=1.0, new_columns=False, prefilter=False, scenes=None):
     """Yields dicts of the study CSV; `scale` multiplies mse and aliasing."""
-    for scene in SCENES:
+    for r in old_rows(scale, scenes):
+        variants = [("none", r)]
+        if prefilter:
+            p = dict(r)
+            p["aliasing"] /= 10
+            p["mse"] = p["aliasing"] + p["noise"]
+            p["mse_area"] = p["mse"] * 1.5
+            p["trace_ms"] *= 1.5
+            variants.append(("footprint", p))
+        for name, v in variants:
+            if new_columns:
+                add_new_columns(v)
+            if prefilter:
+                v["prefilter"] = name
+            yield v
+
+
+def old_rows(scale=1.0, scenes=None):
+    """The rows with the original columns only (common.STUDY_COLUMNS)."""
+    for scene in scenes or SCENES:
         for sampler, n0 in SAMPLERS.items():
             for filt, a0 in FILTERS.items():
                 for radius in RADII:
@@ -49,13 +96,62 @@ def rows(scale=1.0):
                         }
 
 
-def write(path, scale=1.0, modify=None):
-    """Writes the CSV; `modify(row)` may change a row in place."""
+def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scenes=None):
+    """Writes the CSV; `modify(row)` may change a row in place. new_columns=False writes an older CSV
+    (without the columns of coord/COLUMNS.md); prefilter=True adds the `prefilter` column and a
+    pre-filtered copy of every configuration; `scenes` replaces SCENES (e.g. ["a"] for a smaller CSV)."""
+    fields = list(common.STUDY_COLUMNS) + (NEW_COLUMNS if new_columns else []) + (["prefilter"] if prefilter else [])
     with open(path, "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=common.STUDY_COLUMNS)
+        w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
-        for r in rows(scale):
+        for r in rows(scale, new_columns, prefilter, scenes):
             if modify:
                 modify(r)
             w.writerow(r)
     return path
+
+
+def tiny_png(path, value=0.5):
+    """A 6 x 4 grey PNG (stands in for a sweep image)."""
+    import numpy as np
+    from common import plt
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    plt.imsave(path, np.full((4, 6), value), cmap="gray", vmin=0, vmax=1)
+    return path
+
+
+def make_results(folder, new_columns=True, prefilter=False, shards=True, engineering=True):
+    """A results folder as the sweep and the experiments leave it: study/study.csv (the merged CSV),
+    two shard CSVs beside it holding the same rows (when `shards`), study/images with a contact sheet
+    per scene and the seed-0 image and error image of every configuration at the highest spp, and
+    (when `engineering`) a benchmark and a fuzzing record. Returns the study CSV's path."""
+    study = os.path.join(folder, "study")
+    os.makedirs(study, exist_ok=True)
+    csv_path = write(os.path.join(study, "study.csv"), new_columns=new_columns, prefilter=prefilter)
+    if shards:
+        with open(csv_path) as f:
+            lines = f.read().splitlines()
+        half = (len(lines) - 1) // 2
+        for i, part in enumerate((lines[1:1 + half], lines[1 + half:])):
+            with open(os.path.join(study, f"study.shard-{i}-of-2.csv"), "w") as f:
+                f.write("\n".join([lines[0]] + part) + "\n")
+    images = os.path.join(study, "images")
+    for scene in SCENES:
+        stem = common.slug(scene)
+        tiny_png(os.path.join(images, f"contact-{stem}.png"), 0.3)
+        with open(os.path.join(images, f"contact-{stem}.txt"), "w") as f:
+            f.write(f"contact sheet of {stem}: rows top to bottom\n")
+        tiny_png(os.path.join(images, stem, "reference-area.png"), 0.6)
+        for sampler in SAMPLERS:
+            for filt in FILTERS:
+                for radius in RADII:
+                    base = f"{sampler}-spp{max(SPPS)}-{filt}-r{radius:g}-weighted"
+                    tiny_png(os.path.join(images, stem, base + ".png"), 0.5)
+                    tiny_png(os.path.join(images, stem, base + "-error.png"), 0.1)
+    if engineering:
+        with open(os.path.join(folder, "study_speed.md"), "w") as f:
+            f.write("# Study speed (measured)\n\nbefore the fused pass, after the fused pass.\n\n"
+                    "| what | ms |\n|---|---:|\n| trace | 12.5 |\n")
+        with open(os.path.join(folder, "fuzzing.md"), "w") as f:
+            f.write("# Fuzzing\n\n| target | executions |\n|---|---:|\n| fuzz_scene | 1000 |\n")
+    return csv_path

@@ -1,0 +1,242 @@
+"""The report (issue 14 item 3) and the study loader (issue 16) on tiny synthetic studies.
+
+The report is rendered once for a results folder that looks like a user's run (a merged CSV with
+its two shard CSVs beside it, images, a benchmark and a fuzzing record): its findings come first,
+every scene has its decomposition chart, every linked file exists, the engineering records are on
+their own page, and the study is named as the user's study, not "the reference study".
+"""
+import contextlib
+import io
+import math
+import os
+import re
+import sys
+import tempfile
+import unittest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, ".."))
+sys.path.insert(0, HERE)
+import charts  # noqa: E402
+import common  # noqa: E402
+import report  # noqa: E402
+import synthetic  # noqa: E402
+
+import pandas as pd  # noqa: E402
+
+
+def run(main, args):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(args) or 0
+        except SystemExit as e:
+            code = e.code
+    return code, out.getvalue(), err.getvalue()
+
+
+def links(page):
+    """Every src and href value of the page."""
+    return re.findall(r"(?:src|href)='([^']*)'", page)
+
+
+class Report(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.results = os.path.join(cls.tmp.name, "mine")
+        cls.csv = synthetic.make_results(cls.results)
+        code, out, err = run(report.main, [cls.results, "--link"])
+        assert code == 0, err
+        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
+            cls.linked = f.read()
+        code, out, err = run(report.main, [cls.results, "--reuse-charts"])  # embedded, the default
+        assert code == 0, err
+        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
+            cls.embedded = f.read()
+        with open(os.path.join(cls.results, "engineering.html"), encoding="utf-8") as f:
+            cls.engineering = f.read()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_findings_come_first(self):
+        page = self.linked
+        findings = page.index("id='findings'")
+        self.assertIn("Answer for this study", page)
+        self.assertLess(findings, page.index("<img"))
+        self.assertLess(findings, page.index("id='scenes'"))
+        self.assertLess(page.index("id='scenes'"), page.index("id='stability'"))
+        # The one chart of the findings sits before the first scene.
+        self.assertLess(page.index("summary_error_time.png"), page.index("id='scene-a'"))
+
+    def test_the_answer_is_computed_from_the_data(self):
+        # In the synthetic study, uniform lanczos r=0.5 has the lowest mse_target at every spp level
+        # (noise 0, the smallest aliasing, the smallest blur): check that against the CSV itself.
+        df = pd.read_csv(self.csv)
+        ok = df[df["flagged"] == 0]
+        for spp, g in ok.groupby("spp"):
+            best = g.loc[g.groupby("scene")["mse_target"].idxmin()]
+            self.assertEqual(set(zip(best["sampler"], best["filter"], best["radius"])),
+                             {("uniform", "lanczos", 0.5)}, spp)
+        self.assertRegex(self.linked, r"at 1, 4, 16, 64 spp <b>uniform lanczos r=0.5</b>")
+
+    def test_every_scene_has_its_decomposition_chart(self):
+        for scene in ("a", "b"):
+            self.assertIn(f"src='charts/decomposition_{scene}.png'", self.linked)
+            with open(os.path.join(self.results, "charts", f"decomposition_{scene}.png"), "rb") as f:
+                self.assertTrue(f.read(8).startswith(b"\x89PNG"))
+
+    def test_every_linked_file_exists(self):
+        found = links(self.linked)
+        self.assertGreater(len([l for l in found if l.endswith(".png")]), 10)
+        for link in found:
+            if link.startswith("#"):
+                continue
+            self.assertFalse(re.match(r"^[a-z]+://", link), link)  # nothing outside the repository
+            path = os.path.normpath(os.path.join(self.results, link.split("#")[0]))
+            if link.endswith("science.md"):  # the definitions: the repository's own docs/science.md
+                self.assertEqual(path, os.path.normpath(report.SCIENCE))
+                continue
+            self.assertTrue(os.path.isfile(path), link)
+
+    def test_images_are_chosen_not_listed(self):
+        # The contact sheets, the target and the best and worst methods: not every image.
+        pngs = [l for l in links(self.linked) if "/images/" in l]
+        self.assertIn("study/images/contact-a.png", pngs)
+        self.assertIn("study/images/a/uniform-spp64-lanczos-r0.5-weighted.png", pngs)  # the best at 64 spp
+        self.assertLess(len(pngs), 20)
+
+    def test_embedded_page_is_self_contained(self):
+        for link in re.findall(r"src='([^']*)'", self.embedded):
+            self.assertTrue(link.startswith("data:image/png;base64,"), link[:60])
+        self.assertNotIn("http://", self.embedded)
+        self.assertNotIn("https://", self.embedded)
+
+    def test_no_engineering_log_opens_the_page(self):
+        for text in ("before the fused pass", "fuzz_scene", "Study speed"):
+            self.assertNotIn(text, self.linked)
+            self.assertIn(text, self.engineering)
+        self.assertLess(self.linked.index("id='stability'"), self.linked.index("engineering.html"))
+
+    def test_a_users_study_is_labelled_as_that_study(self):
+        self.assertNotIn("reference study", self.linked.lower())
+        title = re.search(r"<h1>(.*?)</h1>", self.linked).group(1)
+        self.assertIn(os.path.realpath(self.csv), title)
+        self.assertIn("reference study", report.study_label(report.REFERENCE_STUDY, None))
+        self.assertEqual(report.study_label(self.csv, "my zone plates"), "my zone plates")
+
+    def test_shard_csvs_beside_the_merged_one_do_not_duplicate_rows(self):
+        self.assertTrue(os.path.isfile(os.path.join(self.results, "study", "study.shard-0-of-2.csv")))
+        self.assertIn("96 configurations", self.linked)
+        self.assertNotIn("192 configurations", self.linked)
+
+    def test_definitions_link_to_the_repository(self):
+        self.assertIn("docs/science.md", self.linked)
+        self.assertNotIn("shared/guide", self.linked)
+        self.assertNotIn("SCIENCE.md", self.linked)
+
+
+class ReportVariants(unittest.TestCase):
+    """Cheaper checks: build_report without redrawing the per-scene charts, or findings alone."""
+
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def test_an_old_csv_falls_back_and_says_so(self):
+        results = os.path.join(self.tmp.name, "old")
+        csv = synthetic.make_results(results, new_columns=False, shards=False, engineering=False)
+        with open(report.build_report(results, csv, draw=False), encoding="utf-8") as f:
+            page = f.read()
+        self.assertIn("no mse_target column", page)
+        self.assertIn("mse_area - mse", page)
+        self.assertNotIn("engineering.html", page)
+
+    def test_prefiltered_rows_are_compared_with_plain_sampling_at_higher_spp(self):
+        csv = synthetic.write(os.path.join(self.tmp.name, "p.csv"), prefilter=True)
+        df, notes = common.load_study(csv)
+        text = " ".join(report.findings(df, notes, "area"))
+        self.assertIn("Pre-filtered at 1 spp", text)
+        self.assertIn("plain 64 spp", text)
+
+    def test_blur_does_not_win(self):
+        # box r=1 gets the lowest own mse everywhere but a large blur: every ranking must use the
+        # error against the target, and the findings must say what an own-mse ranking would pick.
+        def wide_box(r):
+            if r["filter"] == "box" and r["radius"] == 1.0:
+                r["mse"] = 1e-9
+                r["blur"] = 0.5
+                r["cross"] = 0.0
+                r["mse_target"] = r["noise"] + r["aliasing"] + 0.5
+        csv = synthetic.write(os.path.join(self.tmp.name, "w.csv"), modify=wide_box)
+        df, notes = common.load_study(csv)
+        for b in report.best_per_spp(df):
+            self.assertNotIn("box r=1", b["method"])
+        name, ratio, scenes, spp = report.own_mse_pick(df)
+        self.assertIn("box r=1", name)
+        self.assertGreater(ratio, 10)
+        self.assertIn("would win", " ".join(report.findings(df, notes, "area")))
+
+    def test_repeated_configurations_are_refused_by_report_and_charts(self):
+        csv = synthetic.write(os.path.join(self.tmp.name, "d.csv"), scenes=["a"])
+        with open(csv) as f:
+            lines = f.read().splitlines()
+        with open(csv, "a") as f:
+            f.write(lines[5] + "\n")  # a second copy of one configuration
+        for main, args in ((report.main, [self.tmp.name, "--study", csv]),
+                           (charts.main, [csv, "--out", os.path.join(self.tmp.name, "c")])):
+            code, _, err = run(main, args)
+            self.assertEqual(code, 2, err)
+            self.assertIn("repeat a configuration", err)
+            self.assertIn("lines 6, 50", err)  # 48 rows + header: the copy is line 50
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "c")))
+        self.assertFalse(os.path.exists(os.path.join(self.tmp.name, "index.html")))
+
+
+class Loader(unittest.TestCase):
+    def test_load_study_renames_filter_and_adds_the_error_columns(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = synthetic.write(os.path.join(tmp, "s.csv"))
+            df, notes = common.load_study(csv)
+            self.assertNotIn("filter", df.columns)
+            self.assertEqual(set(df["filter_name"]), {"box", "lanczos"})
+            self.assertTrue(callable(df.filter))  # DataFrame.filter is no longer shadowed
+            raw = pd.read_csv(csv)
+            self.assertEqual(list(df["error"]), list(raw["mse_target"]))
+            self.assertEqual(list(df["error_se"]), list(raw["mse_target_se"]))
+            self.assertEqual(notes, [])
+            # blur + cross = mse_target - noise - aliasing (the synthetic law holds exactly)
+            resid = (df["noise"] + df["aliasing"] + df["blur_cross"] - df["error"]).abs().max()
+            self.assertLess(resid, 1e-12)
+
+    def test_old_csv_error_is_mse_area(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = synthetic.write(os.path.join(tmp, "s.csv"), new_columns=False)
+            df, notes = common.load_study(csv)
+            self.assertEqual(list(df["error"]), list(pd.read_csv(csv)["mse_area"]))
+            self.assertTrue(any("mse_area" in n for n in notes))
+            self.assertTrue(df["error_se"].isna().all())
+
+    def test_zero_within_error(self):
+        z = common.zero_within_error([0.0, 1.0, -1.0, 1.0, 3.0, 1.0], [0.0, 0.5, 0.5, 0.49, 1.0, math.nan])
+        self.assertEqual(list(z), [True, True, True, False, False, False])
+
+    def test_slopes_need_three_spp_levels(self):
+        self.assertIsNone(common.slope_or_none([4, 16], [1.0, 0.25]))
+        self.assertIsNone(common.slope_or_none([4, 16, 64], [1.0, 0.25, 0.0]))  # only two usable
+        self.assertAlmostEqual(common.slope_or_none([4, 16, 64], [1.0, 0.25, 1 / 16]), -1.0)
+
+    def test_prefilter_is_part_of_the_key(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = synthetic.write(os.path.join(tmp, "s.csv"), prefilter=True)
+            df, _ = common.load_study(csv)  # no repeated configuration: prefilter tells them apart
+            self.assertEqual(len(df), 192)
+            self.assertIn("prefilter", common.config_key(df))
+
+
+if __name__ == "__main__":
+    unittest.main()
