@@ -4,7 +4,11 @@
 // Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
-//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
+//   mean_spp,max_spp
+// (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
+// and seeds and the largest in any pixel of any seed; both equal spp for a
+// fixed sampler and differ for adaptive ones, render/adaptive.h.)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -39,6 +43,8 @@ struct CsvRow {
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
   int threads = 0;
+  double meanSpp = 0;  ///< mean samples per pixel actually spent (over pixels and seeds)
+  int maxSpp = 0;      ///< most samples in one pixel (over seeds)
 };
 
 /// The header line (no newline).
