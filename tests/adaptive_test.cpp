@@ -6,10 +6,16 @@
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include "accel/aggregate.h"
+#include "aliaslab_paths.h"
 #include "core/error.h"
 #include "render/adaptive.h"
+#include "scratch_dir.h"
+#include "study/config.h"
+#include "study/csv.h"
+#include "study/sweep.h"
 
 namespace aliaslab {
 namespace {
@@ -310,6 +316,59 @@ TEST(Adaptive, UnevenCountsKeepTheirPixels) {
   EXPECT_EQ(s.max, 8);
   EXPECT_EQ(sampleDensity(b).get(4, 3)[0], 8.f);
   EXPECT_EQ(b.rowCount(1), size_t(2 + 3 + 4 + 5 + 6));
+}
+
+// The study --------------------------------------------------------------
+
+// An adaptive sampler in the sweep: traced once per seed (exactly the budget of rays), reconstructed with every
+// filter; mean_spp is the budget, max_spp above it (fixed samplers: both spp); the density panel is written.
+TEST(AdaptiveStudy, SweepRowsCarryTheSamplesSpent) {
+  namespace fs = std::filesystem;
+  const fs::path dir = testing::scratchDir("aliaslab_adaptive_test");
+  StudyConfig c;
+  c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt"};
+  c.width = c.height = 16;
+  c.samplers = {"adaptive-subdiv:jittered", "jittered"};
+  c.spp = {8};
+  c.filters = {"box", "tent"};
+  c.radii = {1.0};
+  c.reconstruction = {"weighted", "classic", "importance"};
+  c.seeds = 2, c.refSpp = 64, c.threads = 2, c.images = true, c.progress = false;
+  c.cache = (dir / "cache").string(), c.out = (dir / "study").string();
+  const SweepSummary sum = runSweep(c);
+  EXPECT_EQ(sum.sampleSetsTraced, 4u);  // 2 samplers x 2 seeds
+  // rays: the sample sets (16 x 16 x 8 each) plus jittered's importance traces (3 filters x 2 seeds)
+  EXPECT_EQ(sum.primaryRays, 16u * 16 * 8 * (4 + 3 * 2));
+  const auto& cols = csvColumns();
+  const size_t mean = std::find(cols.begin(), cols.end(), "mean_spp") - cols.begin();
+  const size_t max = std::find(cols.begin(), cols.end(), "max_spp") - cols.begin();
+  ASSERT_LT(max, cols.size());
+  int adaptiveRows = 0, fixedRows = 0;
+  for (const std::string& line : readCsvLines(c.out + "/study.csv")) {
+    const auto f = splitCsvLine(line);
+    EXPECT_NEAR(std::stod(f[mean]), 8.0, 0.08) << line;
+    if (f[3] == "jittered") {
+      EXPECT_EQ(f[max], "8") << line;
+      ++fixedRows;
+    } else {
+      EXPECT_GT(std::stoi(f[max]), 8) << line;
+      EXPECT_NE(f[8], "importance") << line;  // skipped with a note: adaptive samplers place their own samples
+      EXPECT_TRUE(fs::exists(dir / "study/images/zoneplate" /
+                             (f[3] + "-spp8-" + f[5] + "-r" + f[6] + "-" + f[8] + "-density.png")))
+          << line;
+      ++adaptiveRows;
+    }
+  }
+  EXPECT_EQ(adaptiveRows, 2 * 3);  // box 0.5 (classic box) and 1, tent 1; weighted and classic
+  EXPECT_EQ(fixedRows, 3 * 3);
+  c.samplers = {"adaptive-contrast:nosuch"};
+  try {
+    validateStudy(c);
+    ADD_FAILURE() << "accepted an unknown base";
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.option(), "--samplers");
+    EXPECT_NE(std::string(e.what()).find("nosuch"), std::string::npos);
+  }
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 // <= 16 spp, 256-spp references).
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
+
+#include <algorithm>
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -61,9 +63,16 @@ std::vector<std::string> withoutTiming(const std::string& path) {
   return out;
 }
 
-// The rows with the last column (threads: 1 per shard, 2 unsharded) blanked.
+// Rows from withoutTiming with the threads column (1 per shard, 2 unsharded) blanked.
 std::vector<std::string> withoutThreads(std::vector<std::string> rows) {
-  for (auto& row : rows) row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
+  const auto& cols = csvColumns();
+  const size_t threads = std::find(cols.begin(), cols.end(), "threads") - cols.begin();
+  for (auto& row : rows) {
+    auto f = splitCsvLine(row);
+    if (threads < f.size()) f[threads] = "";
+    row.clear();
+    for (const auto& x : f) row += x + ",";
+  }
   return rows;
 }
 
