@@ -128,6 +128,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
                                      std::to_string(spp));
     if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
   }
+  if (plan.adaptive && !plan.filter) plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
   if (!o.renderFilter.empty() && !plan.filter)
     throw OptionError("-render_filter", "needs a filter (-box_filter, -tent_filter, -gaussian_filter or --filter)");
   return plan;

@@ -9,7 +9,9 @@
 // (the uniform pattern with spp 1); without a filter each pixel takes its
 // first sample. An adaptive sampler (--sampler adaptive-contrast:jittered,
 // render/adaptive.h) spends --spp samples per pixel on average where the
-// image needs them; -render_samples then shows where they went.
+// image needs them (without a filter: the box of radius 0.5, each pixel's
+// area-weighted mean, rather than a first sample); -render_samples then
+// shows where they went.
 #pragma once
 #include <memory>
 #include <string>

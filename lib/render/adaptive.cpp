@@ -124,11 +124,11 @@ std::string AdaptiveSampler::describe() const {
     case AdaptiveMethod::Contrast:
       return "adaptive contrast (Mitchell) on " + base_ + ": first pass " + formatNumber(p.first) +
              " of spp, contrast thresholds " + formatNumber(p.contrast[0]) + "/" + formatNumber(p.contrast[1]) + "/" +
-             formatNumber(p.contrast[2]) + ", cap " + formatNumber(p.cap) + " spp";
+             formatNumber(p.contrast[2]) + ", cap " + formatNumber(p.cap) + "x spp";
     case AdaptiveMethod::Error:
       return "adaptive error on " + base_ + ": first pass " + formatNumber(p.first) + " of spp, rounds of " +
              formatNumber(p.round) + " of the budget to the largest standard errors, cap " + formatNumber(p.cap) +
-             " spp";
+             "x spp";
     case AdaptiveMethod::Subdivision:
       return "adaptive subdivision (Whitted) on " + base_ + ": 4 samples per cell, split above " +
              formatNumber(p.threshold) + ", depth " + std::to_string(p.depth);
