@@ -104,7 +104,7 @@ std::unique_ptr<AdaptiveSampler> makeAdaptiveSampler(const std::string& name, in
   const std::string base = parts[0];
   if (isAdaptiveSamplerName(base)) throw OptionError("--sampler", "'" + name + "': the base cannot be adaptive itself");
   if (spp < 1) throw OptionError("--spp", "samples per pixel must be >= 1, got " + std::to_string(spp));
-  makeSampler(base, std::min(spp, 4), seed);  // an unknown base: the factory's message lists the valid names
+  makeSampler(base, spp, seed);  // an unknown base or a count it refuses: the factory names the valid ones
   AdaptiveParams params;
   for (size_t k = 1; k < parts.size(); ++k) setParam(m, params, name, parts[k]);
   return std::make_unique<AdaptiveSampler>(m, base, spp, seed, params);
