@@ -11,6 +11,7 @@
 #include "accel/aggregate.h"
 #include "aliaslab_paths.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "render/adaptive.h"
 #include "scratch_dir.h"
 #include "study/config.h"
@@ -316,6 +317,57 @@ TEST(Adaptive, UnevenCountsKeepTheirPixels) {
   EXPECT_EQ(s.max, 8);
   EXPECT_EQ(sampleDensity(b).get(4, 3)[0], 8.f);
   EXPECT_EQ(b.rowCount(1), size_t(2 + 3 + 4 + 5 + 6));
+}
+
+// Area weights in the weighted average: sum f w L / sum f w over every sample within the radius, against a
+// brute-force sum written here (pixels far from x = 0 so the 8-sample vector set-up runs too); Classic likewise
+// over the pixels i-R..i+R; and with the flag off the weights are ignored.
+TEST(Adaptive, AreaWeightsInTheWeightedAverage) {
+  const int w = 40, h = 9;
+  std::vector<int> counts;
+  for (int p = 0; p < w * h; ++p) counts.push_back(1 + static_cast<int>(hashWords(9, p) % 12));
+  SampleBuffer b(w, h, counts);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      for (int k = 0; k < b.count(i, j); ++k) {
+        const uint64_t key = hashWords(3, i, j, k);
+        b.pixel(i, j)[k] = {i + toUnitFloat(hashWords(key, 0)), j + toUnitFloat(hashWords(key, 1)),
+                            Color(toUnitFloat(hashWords(key, 2)), 0.5f, float(i % 3)),
+                            0.05f + toUnitFloat(hashWords(key, 3))};
+      }
+  for (const char* name : {"box", "tent", "mitchell"})
+    for (float r : {0.5f, 1.5f, 2.f}) {
+      SCOPED_TRACE(std::string(name) + " r " + std::to_string(r));
+      const auto f = makeFilter(name, r);
+      for (bool weighted : {true, false}) {
+        b.setAreaWeighted(weighted);
+        const Image img = reconstruct(b, *f, ReconMode::WeightedAverage, 2).image;
+        const Image classic = reconstruct(b, *f, ReconMode::Classic, 2).image;
+        const int R = classicSupport(*f);
+        for (int j = 0; j < h; ++j)
+          for (int i = 0; i < w; ++i) {
+            double sum[3] = {0, 0, 0}, norm = 0, csum[3] = {0, 0, 0}, cnorm = 0;
+            for (const FilmSample& s : b.samples()) {
+              const double ww = weighted ? s.weight : 1.0;
+              const double fw = f->eval(s.x - (i + 0.5f), s.y - (j + 0.5f)) * ww;
+              for (int c = 0; c < 3; ++c) sum[c] += fw * s.L[c];
+              norm += fw;
+              const int si = static_cast<int>(s.x), sj = static_cast<int>(s.y);
+              if (std::abs(si - i) <= R && std::abs(sj - j) <= R) {
+                const double cw = f->evalClassic(s.x - (i + 0.5f), s.y - (j + 0.5f)) * ww;
+                for (int c = 0; c < 3; ++c) csum[c] += cw * s.L[c];
+                cnorm += cw;
+              }
+            }
+            if (std::abs(norm) < 1e-6 || std::abs(cnorm) < 1e-6) continue;  // undefined: the documented fallback
+            for (int c = 0; c < 3; ++c) {
+              // (float results: a tolerance relative to the value, which a negative lobe can make large)
+              ASSERT_NEAR(img.get(i, j)[c], sum[c] / norm, 2e-5 * std::max(1.0, std::abs(sum[c] / norm))) << "pixel " << i << "," << j << " weighted " << weighted;
+              ASSERT_NEAR(classic.get(i, j)[c], csum[c] / cnorm, 2e-5 * std::max(1.0, std::abs(csum[c] / cnorm))) << "pixel " << i << "," << j;
+            }
+          }
+      }
+    }
 }
 
 // The study --------------------------------------------------------------
