@@ -11,6 +11,7 @@
 // isAdaptiveSamplerName() and trace with traceAdaptive() instead of
 // traceSamples(); everything downstream (reconstruction with any filter,
 // the study's metrics) takes the result like any sample set.
+// (adaptive.cpp: names and parameters; adaptive_trace.cpp: the methods.)
 //
 // Protocol (all three methods):
 // - Budget: exactly B = spp * width * height samples are traced in total, so
