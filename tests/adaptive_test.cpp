@@ -362,8 +362,11 @@ TEST(Adaptive, AreaWeightsInTheWeightedAverage) {
             if (std::abs(norm) < 1e-6 || std::abs(cnorm) < 1e-6) continue;  // undefined: the documented fallback
             for (int c = 0; c < 3; ++c) {
               // (float results: a tolerance relative to the value, which a negative lobe can make large)
-              ASSERT_NEAR(img.get(i, j)[c], sum[c] / norm, 2e-5 * std::max(1.0, std::abs(sum[c] / norm))) << "pixel " << i << "," << j << " weighted " << weighted;
-              ASSERT_NEAR(classic.get(i, j)[c], csum[c] / cnorm, 2e-5 * std::max(1.0, std::abs(csum[c] / cnorm))) << "pixel " << i << "," << j;
+              const double want = sum[c] / norm, classicWant = csum[c] / cnorm;
+              ASSERT_NEAR(img.get(i, j)[c], want, 2e-5 * std::max(1.0, std::abs(want)))
+                  << "pixel " << i << "," << j << " weighted " << weighted;
+              ASSERT_NEAR(classic.get(i, j)[c], classicWant, 2e-5 * std::max(1.0, std::abs(classicWant)))
+                  << "pixel " << i << "," << j;
             }
           }
       }

@@ -257,7 +257,8 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
   const __m256i last = _mm256_set1_epi32(c.block - 1), spanX = _mm256_sub_epi32(ihi, ilo), spanY = _mm256_sub_epi32(jhi, jlo);
   if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_cmpgt_epi32(spanX, last), _mm256_cmpgt_epi32(spanY, last)))))
     return 2;  // wider than a block: on its own
-  // radiance: (r, g, b, weight) of each sample, finite in r, g, b (finiteSample), stored as (r, g, b, 1)
+  // radiance: (r, g, b, weight) of each sample, finite in r, g, b (finiteSample), stored as (r, g, b, 1), or
+  // area-weighted as (w r, w g, w b, w) with a finite w
   __m128 L[8], bad = _mm_setzero_ps();
   for (int s = 0; s < 8; ++s) L[s] = _mm_loadu_ps(&q[s].L[0]), bad = _mm_or_ps(bad, _mm_sub_ps(L[s], L[s]));
   if (_mm_movemask_ps(_mm_cmpneq_ps(bad, _mm_setzero_ps())) & (c.weighted ? 15 : 7)) return 2;  // NaN or inf
@@ -452,7 +453,8 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
   parallelFor(H, threads, [&](int sj) {
     float ymin = kInf, ymax = -kInf;
     const FilmSample* row = samples.pixel(0, sj);
-    for (size_t k = 0, rowSamples = samples.rowCount(sj); k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
+    for (size_t k = 0, rowSamples = samples.rowCount(sj); k < rowSamples; ++k)
+      ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
     spans.ymin[sj] = ymin, spans.ymax[sj] = ymax;
   });
   std::vector<bool> done(filters.size(), false);

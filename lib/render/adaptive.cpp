@@ -39,8 +39,8 @@ void setParam(AdaptiveMethod m, AdaptiveParams& p, const std::string& name, cons
   const std::string key = item.substr(0, eq);
   const auto keys = keysOf(m);
   if (eq == std::string::npos || std::find(keys.begin(), keys.end(), key) == keys.end())
-    throw OptionError("--sampler", "'" + name + "': unknown parameter '" + item + "'; this method takes key=value with " +
-                                       "key one of: " + joined(keys));
+    throw OptionError("--sampler", "'" + name + "': unknown parameter '" + item +
+                                       "'; this method takes key=value with key one of: " + joined(keys));
   double v = 0;
   size_t used = 0;
   try {
@@ -49,7 +49,8 @@ void setParam(AdaptiveMethod m, AdaptiveParams& p, const std::string& name, cons
     used = 0;
   }
   auto bad = [&](const std::string& want) {
-    throw OptionError("--sampler", "'" + name + "': " + key + " must be " + want + ", found '" + item.substr(eq + 1) + "'");
+    throw OptionError("--sampler",
+                      "'" + name + "': " + key + " must be " + want + ", found '" + item.substr(eq + 1) + "'");
   };
   if (used == 0 || used != item.size() - eq - 1 || !std::isfinite(v)) bad("a finite number");
   if (key == "first") {
@@ -145,7 +146,10 @@ SpentSamples spentSamples(const SampleBuffer& samples) {
   if (n == 0) return s;
   long long total = 0;
   for (int j = 0; j < samples.height(); ++j)
-    for (int i = 0; i < samples.width(); ++i) total += samples.count(i, j), s.max = std::max(s.max, samples.count(i, j));
+    for (int i = 0; i < samples.width(); ++i) {
+      total += samples.count(i, j);
+      s.max = std::max(s.max, samples.count(i, j));
+    }
   s.mean = static_cast<double>(total) / static_cast<double>(n);
   return s;
 }

@@ -258,7 +258,8 @@ std::vector<std::vector<uint64_t>> runSubdivision(Work& w, const AdaptiveSampler
   std::vector<Color> lo, hi;
   w.pixelRanges(lo, hi);
   std::vector<double> spread(w.pixels());
-  for (long long p = 0; p < w.pixels(); ++p) spread[p] = w.count(p) > 1 ? static_cast<double>((hi[p] - lo[p]).maxCoeff()) : 0.0;
+  for (long long p = 0; p < w.pixels(); ++p)
+    spread[p] = w.count(p) > 1 ? static_cast<double>((hi[p] - lo[p]).maxCoeff()) : 0.0;
   w.spendEvenly(spread);
   return splits;
 }
