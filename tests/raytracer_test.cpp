@@ -209,3 +209,32 @@ TEST_P(RaytracerErrors, ExitsWithMessageAndWritesNothing) {
 
 INSTANTIATE_TEST_SUITE_P(Cases, RaytracerErrors, testing::ValuesIn(kBadRuns),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// An adaptive sampler: exactly w x h x spp primary rays (-stats), the same image for 1 and 3 threads, and
+// -render_samples showing more samples along the disc's edge than in the flat middle of the picture.
+TEST_F(RaytracerTest, AdaptiveSamplerSpendsTheBudgetWhereTheEdgesAre) {
+  const std::string scene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/sphere_triangle.txt";
+  const std::string base = "-input " + scene + " -size 32 32 --sampler adaptive-contrast:jittered --spp 8 -stats ";
+  const Result one = run(base + "--threads 1 -output " + path("a1.exr") + " -render_samples " + path("s.exr") + " 8");
+  ASSERT_EQ(one.code, 0) << one.err;
+  EXPECT_NE(one.out.find("rays: primary 8192,"), std::string::npos) << one.out;  // 32 * 32 * 8
+  EXPECT_NE(one.out.find("adaptive contrast (Mitchell) on jittered"), std::string::npos) << one.out;
+  ASSERT_EQ(run(base + "--threads 3 -output " + path("a3.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("a1.exr")), readImage(path("a3.exr"))));
+  // marked sample pixels (not the 0.2 / 0 checkerboard) per 8 x 8 block: the busiest block has several times
+  // the marks of the quietest one
+  const Image s = readImage(path("s.exr"));
+  ASSERT_EQ(s.width(), 256);
+  int least = 1 << 30, most = 0;
+  for (int by = 0; by < 32; ++by)
+    for (int bx = 0; bx < 32; ++bx) {
+      int marks = 0;
+      for (int y = by * 8; y < by * 8 + 8; ++y)
+        for (int x = bx * 8; x < bx * 8 + 8; ++x) {
+          const Color c = s.get(x, y);
+          marks += !((c == 0.f).all() || (c == 0.2f).all());
+        }
+      least = std::min(least, marks), most = std::max(most, marks);
+    }
+  EXPECT_GE(most, 3 * std::max(1, least)) << "least " << least << ", most " << most;
+}

@@ -80,7 +80,8 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   for (const std::string& n : samplerNames()) samplers += (samplers.empty() ? "" : ", ") + n;
   for (const std::string& w : samplerWrapperNames()) samplers += ", " + w + ":BASE (any of these)";
   for (const std::string& n : filterNames()) filters += (filters.empty() ? "" : ", ") + n;
-  app.add_option("--sampler", o.sampler, "sampler: " + samplers);
+  app.add_option("--sampler", o.sampler,
+                 "sampler: " + samplers + "; or adaptive-contrast|adaptive-error|adaptive-subdiv:BASE (docs/adaptive.md)");
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");
   app.add_option("--filter", o.filter, "reconstruction filter: " + filters);
   app.add_option("--radius", o.radius, "filter support radius in pixels");

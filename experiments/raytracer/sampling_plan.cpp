@@ -47,7 +47,8 @@ FilterParams parseFilterParams(const std::vector<std::string>& items) {
 }  // namespace
 
 std::string SamplingPlan::describe() const {
-  std::string s = sampler->describe() + " spp " + std::to_string(sampler->spp());
+  std::string s = adaptive ? adaptive->describe() + " spp " + std::to_string(adaptive->spp())
+                           : sampler->describe() + " spp " + std::to_string(sampler->spp());
   if (mode == ReconMode::Supersample) return s + ", supersample reconstruction (3x3 binomial, k x k box)";
   if (filter) return s + ", " + filter->describe() + ", " + toString(mode) + " reconstruction";
   return s + ", first sample per pixel";
@@ -75,7 +76,12 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   if (total > double(1 << 28))
     throw OptionError(classicSampler.empty() ? "--spp" : "-" + classicSampler,
                       "width x height x spp exceeds 2^28 samples (about 7 GB)");
-  plan.sampler = makeSampler(name, spp, o.seed);
+  if (isAdaptiveSamplerName(name)) {
+    plan.adaptive = makeAdaptiveSampler(name, spp, o.seed);
+    plan.sampler = makeSampler(plan.adaptive->base(), 1, o.seed);
+  } else {
+    plan.sampler = makeSampler(name, spp, o.seed);
+  }
 
   // Filter: classic flag or --filter/--radius/--filter-param.
   const std::string classicFilter = chooseOne(app, {"box_filter", "tent_filter", "gaussian_filter"});
@@ -107,6 +113,11 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   else if (!classicSampler.empty() || !classicFilter.empty()) plan.mode = ReconMode::Classic;
   if (!plan.filter && has("reconstruction") && plan.mode != ReconMode::Supersample)
     throw OptionError("--reconstruction", "'" + o.reconstruction + "' needs a filter (--filter or a classic filter flag)");
+  if (plan.adaptive && (plan.mode == ReconMode::Supersample || plan.mode == ReconMode::ImportanceSampled))
+    throw OptionError("--reconstruction", "'" + o.reconstruction + "' cannot take an adaptive sampler (" +
+                                              (plan.mode == ReconMode::Supersample
+                                                   ? "it needs the same k*k samples in every pixel)"
+                                                   : "importance sampling places the samples by the filter)"));
   if (plan.mode == ReconMode::Supersample) {
     if (plan.filter)  // (it would be silently ignored)
       throw OptionError("--reconstruction", "supersample uses its own filters (3x3 binomial, then a box down); drop " +
@@ -117,6 +128,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
                                      std::to_string(spp));
     if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
   }
+  if (plan.adaptive && !plan.filter) plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
   if (!o.renderFilter.empty() && !plan.filter)
     throw OptionError("-render_filter", "needs a filter (-box_filter, -tent_filter, -gaussian_filter or --filter)");
   return plan;
@@ -125,8 +137,9 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
 RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int width, int height, int threads) {
   RenderedImage out;
   const bool importance = plan.filter && plan.mode == ReconMode::ImportanceSampled;
-  out.samples = importance ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads)
-                           : traceSamples(tracer, *plan.sampler, width, height, threads);
+  out.samples = plan.adaptive ? traceAdaptive(tracer, *plan.adaptive, width, height, threads)
+                : importance  ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads)
+                              : traceSamples(tracer, *plan.sampler, width, height, threads);
   if (plan.filter) {
     out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
   } else {

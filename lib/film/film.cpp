@@ -2,6 +2,7 @@
 // sampling, and the shared resolution of weighted sums.
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/parallel.h"
@@ -38,6 +39,18 @@ ReconMode parseReconMode(const std::string& name) {
 int classicSupport(const Filter& filter) {
   const double extent = filter.name() == "gaussian" ? 2 * filter.params().at("sigma") : filter.radius();
   return std::max(0, static_cast<int>(std::ceil(extent - 0.5)));
+}
+
+SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts)
+    : width_(width), height_(height), offsets_(static_cast<size_t>(width) * height + 1, 0) {
+  if (counts.size() != static_cast<size_t>(width) * height)
+    throw std::invalid_argument("SampleBuffer: " + std::to_string(counts.size()) + " counts for " +
+                                std::to_string(width) + "x" + std::to_string(height) + " pixels");
+  for (size_t p = 0; p < counts.size(); ++p) {
+    if (counts[p] < 0) throw std::invalid_argument("SampleBuffer: negative sample count");
+    offsets_[p + 1] = offsets_[p] + static_cast<size_t>(counts[p]);
+  }
+  samples_.resize(offsets_.back());
 }
 
 namespace filmimpl {
@@ -79,7 +92,7 @@ using namespace filmimpl;
 
 /// Classic gather (evalClassic over pixels i-R..i+R) or ImportanceSampled (own samples, FilmSample::weight).
 Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool classic, int threads) {
-  const int W = samples.width(), H = samples.height(), spp = samples.spp();
+  const int W = samples.width(), H = samples.height();
   const int R = classic ? classicSupport(filter) : 0;
   std::vector<double> sums(4 * size_t(W) * H, 0.0), plain(4 * size_t(W) * H, 0.0);
   const size_t nonFinite = addPlainSums(samples, plain.data());
@@ -90,9 +103,11 @@ Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool cl
       for (int sj = std::max(0, j - R); sj <= std::min(H - 1, j + R); ++sj)
         for (int si = std::max(0, i - R); si <= std::min(W - 1, i + R); ++si) {
           const FilmSample* s = samples.pixel(si, sj);
-          for (int k = 0; k < spp; ++k) {
+          for (int k = 0, n = samples.count(si, sj); k < n; ++k) {
             if (!finiteSample(s[k])) continue;
-            const double w = classic ? filter.evalClassic(s[k].x - cx, s[k].y - cy) : s[k].weight;
+            const double w = classic ? filter.evalClassic(s[k].x - cx, s[k].y - cy) *
+                                           (samples.areaWeighted() ? double(s[k].weight) : 1.0)
+                                     : s[k].weight;
             out[0] += w * s[k].L[0], out[1] += w * s[k].L[1], out[2] += w * s[k].L[2], out[3] += w;
           }
         }

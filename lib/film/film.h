@@ -1,7 +1,10 @@
 // The film: samples in, pixels out.
 //
 // A SampleBuffer holds one traced sample set: for each pixel (i, j), spp
-// samples stored contiguously at [(j * width + i) * spp, ... + spp). Each
+// samples stored contiguously at [(j * width + i) * spp, ... + spp), or, for
+// adaptive sampling (render/adaptive.h), count(i, j) samples per pixel
+// stored pixel after pixel in the same order (every reconstruction except
+// Supersample takes either kind). Each
 // sample is a film position (continuous pixel coordinates, pixel (i, j)
 // covers [i, i+1) x [j, j+1), y up), its radiance (linear, unclamped) and a
 // weight (1, except for filter importance sampling, where it is
@@ -23,7 +26,11 @@
 //   fallback and is counted in nanPixels;
 // - a pixel with a negative channel keeps it (it is what the filter made;
 //   the 8-bit writer clamps) and is counted in negativePixels.
-// FilmSample::weight is used by ImportanceSampled only.
+// FilmSample::weight is used by ImportanceSampled, and by WeightedAverage,
+// Classic and the Accumulator when the buffer is areaWeighted(): adaptive
+// sampling marks each sample with the area it stands for (its pixel's or
+// sub-cell's area over the samples there), so a filter sums f w L / sum f w
+// and dense regions do not count more than their area.
 #pragma once
 #include <cstddef>
 #include <string>
@@ -43,19 +50,44 @@ struct FilmSample {
 class SampleBuffer {
  public:
   SampleBuffer() = default;
+  /// Fixed count: spp samples in every pixel.
   SampleBuffer(int width, int height, int spp)
       : width_(width), height_(height), spp_(spp), samples_(static_cast<size_t>(width) * height * spp) {}
+  /// Variable count (adaptive sampling): counts[j * width + i] samples in pixel (i, j), stored pixel after
+  /// pixel in the same row-major order, so each row's samples are still contiguous.
+  SampleBuffer(int width, int height, const std::vector<int>& counts);
   int width() const { return width_; }
   int height() const { return height_; }
+  /// The fixed count; 0 for a variable-count buffer (use count()).
   int spp() const { return spp_; }
-  FilmSample* pixel(int i, int j) { return &samples_[(static_cast<size_t>(j) * width_ + i) * spp_]; }
-  const FilmSample* pixel(int i, int j) const { return &samples_[(static_cast<size_t>(j) * width_ + i) * spp_]; }
+  bool variable() const { return !offsets_.empty(); }
+  /// Whether WeightedAverage and Classic multiply each sample by FilmSample::weight (see the top of the file).
+  bool areaWeighted() const { return areaWeighted_; }
+  void setAreaWeighted(bool on) { areaWeighted_ = on; }
+  /// Samples in pixel (i, j).
+  int count(int i, int j) const {
+    const size_t p = static_cast<size_t>(j) * width_ + i;
+    return variable() ? static_cast<int>(offsets_[p + 1] - offsets_[p]) : spp_;
+  }
+  /// Samples of row j (pixels (0, j) .. (width-1, j)), contiguous from pixel(0, j).
+  size_t rowCount(int j) const {
+    return variable() ? offsets_[static_cast<size_t>(j + 1) * width_] - offsets_[static_cast<size_t>(j) * width_]
+                      : static_cast<size_t>(width_) * spp_;
+  }
+  FilmSample* pixel(int i, int j) { return samples_.data() + start(i, j); }
+  const FilmSample* pixel(int i, int j) const { return samples_.data() + start(i, j); }
   std::vector<FilmSample>& samples() { return samples_; }
   const std::vector<FilmSample>& samples() const { return samples_; }
 
  private:
+  size_t start(int i, int j) const {
+    const size_t p = static_cast<size_t>(j) * width_ + i;
+    return variable() ? offsets_[p] : p * spp_;
+  }
   int width_ = 0, height_ = 0, spp_ = 0;
   std::vector<FilmSample> samples_;
+  bool areaWeighted_ = false;
+  std::vector<size_t> offsets_;  ///< variable count only: pixel p's samples at [offsets_[p], offsets_[p + 1])
 };
 
 /// What happened to the pixels of one reconstruction.

@@ -200,6 +200,7 @@ struct Reach {
   float radius, lo, xHi, yHi;  ///< the radius; positions outside (lo, xHi) x (lo, yHi) reach no pixel
   int lastColumn, j0, lastRow;  ///< clamp of the footprints: columns [0, lastColumn], rows [j0, lastRow]
   int block, stride;            ///< n (footprints up to n x n go in a batch) and the band buffer's width
+  bool weighted;                ///< SampleBuffer::areaWeighted: (w r, w g, w b, w) with w = FilmSample::weight
 };
 
 static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y) == sizeof(float) &&
@@ -256,12 +257,16 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
   const __m256i last = _mm256_set1_epi32(c.block - 1), spanX = _mm256_sub_epi32(ihi, ilo), spanY = _mm256_sub_epi32(jhi, jlo);
   if (_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_or_si256(_mm256_cmpgt_epi32(spanX, last), _mm256_cmpgt_epi32(spanY, last)))))
     return 2;  // wider than a block: on its own
-  // radiance: (r, g, b, weight) of each sample, finite in r, g, b (finiteSample), stored as (r, g, b, 1)
+  // radiance: (r, g, b, weight) of each sample, finite in r, g, b (finiteSample), stored as (r, g, b, 1), or
+  // area-weighted as (w r, w g, w b, w) with a finite w
   __m128 L[8], bad = _mm_setzero_ps();
   for (int s = 0; s < 8; ++s) L[s] = _mm_loadu_ps(&q[s].L[0]), bad = _mm_or_ps(bad, _mm_sub_ps(L[s], L[s]));
-  if (_mm_movemask_ps(_mm_cmpneq_ps(bad, _mm_setzero_ps())) & 7) return 2;  // NaN or inf somewhere
+  if (_mm_movemask_ps(_mm_cmpneq_ps(bad, _mm_setzero_ps())) & (c.weighted ? 15 : 7)) return 2;  // NaN or inf
   const __m128 one = _mm_set1_ps(1.f);
-  for (int s = 0; s < 8; ++s) _mm_storeu_ps(reinterpret_cast<float*>(&b.L[count + s]), _mm_blend_ps(L[s], one, 8));
+  for (int s = 0; s < 8; ++s) {
+    const __m128 w = c.weighted ? _mm_shuffle_ps(L[s], L[s], 0xff) : one;
+    _mm_storeu_ps(reinterpret_cast<float*>(&b.L[count + s]), _mm_blend_ps(_mm_mul_ps(L[s], w), w, 8));
+  }
   _mm256_storeu_ps(b.x + count, x), _mm256_storeu_ps(b.y + count, y);
   const __m256 halfPixel = _mm256_set1_ps(0.5f);
   _mm256_storeu_ps(b.cx + count, _mm256_add_ps(_mm256_cvtepi32_ps(ilo), halfPixel));
@@ -278,13 +283,12 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
 }  // namespace
 
 size_t addPlainSums(const SampleBuffer& samples, double* plain) {
-  const int spp = samples.spp();
   size_t skipped = 0;
   for (int j = 0; j < samples.height(); ++j)
     for (int i = 0; i < samples.width(); ++i) {
       const FilmSample* s = samples.pixel(i, j);
       double* p = plain + 4 * (static_cast<size_t>(j) * samples.width() + i);
-      for (int k = 0; k < spp; ++k)
+      for (int k = 0, n = samples.count(i, j); k < n; ++k)
         if (finiteSample(s[k])) p[0] += s[k].L[0], p[1] += s[k].L[1], p[2] += s[k].L[2], p[3] += 1;
         else ++skipped;
     }
@@ -337,7 +341,6 @@ struct RowSpans {
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
                      const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds) {
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
-  const size_t rowSamples = static_cast<size_t>(W) * samples.spp();
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
   const Kernel kernel = pickKernel(n, allowAvx2, std::make_integer_sequence<int, 6>());
@@ -381,10 +384,11 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
     };
     // (a local copy, passed to setup8 by value: captured values would be reloaded after every store into
     // the batch)
-    const Reach c{r, -r - 1, W + r + 1, H + r + 1, W - 1, j0, j1 - 1, pad, width};
+    const Reach c{r, -r - 1, W + r + 1, H + r + 1, W - 1, j0, j1 - 1, pad, width, samples.areaWeighted()};
     for (int sj = 0; sj < H; ++sj) {
       if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
       const FilmSample* row = samples.pixel(0, sj);
+      const size_t rowSamples = samples.rowCount(sj);
       size_t k = 0, next = 0;  // next: where the 8-sample set-up may go on (after a group taken one by one)
       for (; k < rowSamples; ++k) {
         if (vectorSetup && k == next && k + 8 <= rowSamples) {
@@ -399,11 +403,13 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
         }
         const FilmSample& q = row[k];
         if (!finiteSample(q) || !(q.x > c.lo && q.x < c.xHi && q.y > c.lo && q.y < c.yHi)) continue;
+        if (c.weighted && !std::isfinite(q.weight)) continue;
         int ilo, ihi, jlo, jhi;
         centresWithin(q.x, c.radius, ilo, ihi), centresWithin(q.y, c.radius, jlo, jhi);
         ilo = std::max(ilo, 0), ihi = std::min(ihi, c.lastColumn), jlo = std::max(jlo, c.j0), jhi = std::min(jhi, c.lastRow);
         if (ilo > ihi || jlo > jhi) continue;
-        const F4 L = {q.L[0], q.L[1], q.L[2], 1.f};
+        const float qw = c.weighted ? q.weight : 1.f;
+        const F4 L = {qw * q.L[0], qw * q.L[1], qw * q.L[2], qw};
         if (ihi - ilo >= c.block || jhi - jlo >= c.block) {  // wider than a block: on its own, in sample order
           flush();
           for (int f = 0; f < K; ++f)
@@ -443,12 +449,12 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
               int threads, double* ownSeconds, bool allowAvx2) {
   const int H = samples.height();
-  const size_t rowSamples = static_cast<size_t>(samples.width()) * samples.spp();
   RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
   parallelFor(H, threads, [&](int sj) {
     float ymin = kInf, ymax = -kInf;
     const FilmSample* row = samples.pixel(0, sj);
-    for (size_t k = 0; k < rowSamples; ++k) ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
+    for (size_t k = 0, rowSamples = samples.rowCount(sj); k < rowSamples; ++k)
+      ymin = std::min(ymin, row[k].y), ymax = std::max(ymax, row[k].y);
     spans.ymin[sj] = ymin, spans.ymax[sj] = ymax;
   });
   std::vector<bool> done(filters.size(), false);

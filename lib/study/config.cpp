@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/format.h"
 #include "filter/filter.h"
+#include "render/adaptive.h"
 #include "sampling/sampler.h"
 #include "study/study_scene.h"
 
@@ -69,6 +70,10 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
             if (sampler == "uniform" && k * k == spp) g.configs.push_back({"box", 0.5, mode});
             else note("supersample: only the uniform sampler at square spp; skipped " + sampler + " spp " +
                       std::to_string(spp));
+            continue;
+          }
+          if (mode == ReconMode::ImportanceSampled && isAdaptiveSamplerName(sampler)) {
+            note("importance: adaptive samplers place their own samples (no filter importance); skipped " + sampler);
             continue;
           }
           for (const auto& [f, r] : filters) g.configs.push_back({f, r, mode});
@@ -221,7 +226,11 @@ void validateStudy(const StudyConfig& c) {
   // Names: the factories' own messages list the valid ones.
   for (const std::string& m : c.reconstruction) parseReconMode(m);
   for (const std::string& s : c.samplers)
-    for (int spp : c.spp) relabelOption("--sampler", "--samplers", [&] { makeSampler(s, spp, 0); });
+    for (int spp : c.spp)
+      relabelOption("--sampler", "--samplers", [&] {
+        if (isAdaptiveSamplerName(s)) makeAdaptiveSampler(s, spp, 0);
+        else makeSampler(s, spp, 0);
+      });
   relabelOption("--sampler", "--ref-sampler", [&] { makeSampler(c.refSampler, 2, 0); });
   for (const auto& [f, r] : studyFilters(c))
     relabelOption("--filter", "--filters", [&] {

@@ -25,7 +25,7 @@ std::string configurationImageBase(const CsvRow& r) {
 }
 
 void writeConfigurationImages(const std::string& dir, const std::string& base, const Image& seed0,
-                              const Image& reference, const Image& noise) {
+                              const Image& reference, const Image& noise, const Image& density) {
   const fs::path d(dir);
   writeImage((d / (base + ".png")).string(), seed0);
   Image error(seed0.width(), seed0.height()), deviation(noise.width(), noise.height());
@@ -36,13 +36,61 @@ void writeConfigurationImages(const std::string& dir, const std::string& base, c
     }
   writeImage((d / (base + "-error.png")).string(), falseColor(error, kErrorScale));
   writeImage((d / (base + "-noise.png")).string(), heatColor(deviation, kNoiseScale));
+  if (density.width() > 0) writeImage((d / (base + "-density.png")).string(), densityPanel(seed0, reference, density));
 }
 
 namespace {
 using OIIO::ImageBuf;
+namespace IBA = OIIO::ImageBufAlgo;
+
+/// Draws `text` (white, 11 px) with its baseline at (x, y from the top) on an Image (y up); false without a font.
+bool labelImage(Image& img, int x, int y, const std::string& text) {
+  const int w = img.width(), h = img.height();
+  ImageBuf buf(OIIO::ImageSpec(w, h, 3, OIIO::TypeDesc::FLOAT));
+  std::vector<float> rows(static_cast<size_t>(w) * h * 3);
+  for (int r = 0; r < h; ++r)  // Image rows bottom-up, ImageBuf top-down
+    std::copy_n(img.data() + 3 * img.index(0, h - 1 - r), 3 * w, rows.data() + 3 * static_cast<size_t>(r) * w);
+  buf.set_pixels(OIIO::ROI(0, w, 0, h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rows.data());
+  const float white[3] = {1.f, 1.f, 1.f};
+  if (!IBA::render_text(buf, x, y, text, 11, "DejaVuSans", white)) return false;
+  buf.get_pixels(OIIO::ROI(0, w, 0, h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, rows.data());
+  for (int r = 0; r < h; ++r)
+    std::copy_n(rows.data() + 3 * static_cast<size_t>(r) * w, 3 * w, img.data() + 3 * img.index(0, h - 1 - r));
+  return true;
+}
+}  // namespace
+
+Image densityPanel(const Image& seed0, const Image& reference, const Image& density) {
+  const int w = density.width(), h = density.height();
+  float most = 1.f;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) most = std::max(most, density.get(x, y)[0]);
+  Image error(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) error.set(x, y, seed0.get(x, y) - reference.get(x, y));
+  const Image tiles[3] = {seed0, falseColor(error, kErrorScale), heatColor(density, most)};
+  // layout: three tiles zoomed z times, then the colour bar (0 at the bottom, `most` at the top) and its labels
+  const int z = std::clamp((128 + h - 1) / std::max(1, h), 1, 16), gap = 4, bar = 12, labels = 64;
+  const int tw = w * z, th = h * z, margin = 14;
+  Image panel(3 * (tw + gap) + bar + labels, th + 2 * margin, Color::Constant(0.12f));
+  for (int t = 0; t < 3; ++t)
+    for (int y = 0; y < th; ++y)
+      for (int x = 0; x < tw; ++x) panel.set(t * (tw + gap) + x, margin + y, tiles[t].get(x / z, y / z));
+  Image ramp(1, th);
+  for (int y = 0; y < th; ++y) ramp.set(0, y, Color::Constant(most * (y + 0.5f) / th));
+  const Image rampColour = heatColor(ramp, most);
+  for (int y = 0; y < th; ++y)
+    for (int x = 0; x < bar; ++x) panel.set(3 * (tw + gap) + x, margin + y, rampColour.get(0, y));
+  // labels: samples per pixel at the top and bottom of the bar (skipped without a font)
+  const int lx = 3 * (tw + gap) + bar + 3, top = panel.height() - 1;
+  if (labelImage(panel, lx, top - (margin + th) + 10, formatNumber(most) + " spp"))
+    labelImage(panel, lx, top - margin + 1, "0");
+  return panel;
+}
+
+namespace {
 using OIIO::ImageSpec;
 using OIIO::ROI;
-namespace IBA = OIIO::ImageBufAlgo;
 
 struct Tile {
   std::string method, variant, file;  ///< label lines, e.g. "jittered 16 spp" and "mitchell r=2"

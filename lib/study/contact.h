@@ -6,6 +6,11 @@
 //                     red positive, white 0, saturated at +-kErrorScale
 //   <base>-noise.png  per-pixel noise as the standard deviation s over the
 //                     K seeds (sqrt of the noise map), black 0 .. white at kNoiseScale
+//   <base>-density.png  adaptive samplers only (when `density` is given): the
+//                     reconstruction, its signed error and the samples per
+//                     pixel (heat map, black 0 .. white at the largest count)
+//                     side by side, enlarged to at least 128 pixels high, with
+//                     the density's colour bar labelled in samples per pixel
 // (colour maps: film/visualize.h falseColor and heatColor), with
 // <base> = <sampler>-spp<spp>-<filter>-r<radius>-<reconstruction>.
 //
@@ -30,10 +35,15 @@ inline constexpr float kNoiseScale = 0.25f;  ///< standard deviation shown white
 /// "<sampler>-spp<spp>-<filter>-r<radius>-<reconstruction>".
 std::string configurationImageBase(const CsvRow& row);
 
-/// Writes the three per-configuration images. `noise` is the per-pixel
-/// variance s^2 (MetricAccumulator::noiseMap). Throws FileError.
+/// Writes the per-configuration images. `noise` is the per-pixel
+/// variance s^2 (MetricAccumulator::noiseMap); `density` (samples per pixel
+/// of seed 0, render/adaptive.h sampleDensity) adds <base>-density.png when
+/// not empty. Throws FileError.
 void writeConfigurationImages(const std::string& dir, const std::string& base, const Image& seed0,
-                              const Image& reference, const Image& noise);
+                              const Image& reference, const Image& noise, const Image& density = Image());
+
+/// The reconstruction | signed error | density panel with its colour bar (see above).
+Image densityPanel(const Image& seed0, const Image& reference, const Image& density);
 
 /// One contact sheet per scene of the CSV, from the PNGs under imagesDir.
 /// Scenes whose images are missing are skipped.

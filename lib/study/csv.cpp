@@ -24,7 +24,7 @@ const std::vector<std::string>& csvColumns() {
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
-      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse"};
+      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp"};
   return cols;
 }
 
@@ -74,7 +74,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.target) << ',' << real(r.mseTarget) << ','
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
     << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
-    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse);
+    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp;
   return s.str();
 }
 

@@ -12,6 +12,7 @@
 #include "core/format.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
+#include "render/adaptive.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
 #include "study/contact.h"
@@ -197,10 +198,15 @@ SweepSummary runSweep(const StudyConfig& config) {
       }
       bool shared = false;
       for (const Pending& p : rows) shared = shared || p.mode != ReconMode::ImportanceSampled;
+      // adaptive samplers (render/adaptive.h) trace their own sample set; samples actually spent per pixel
+      const bool adaptive = isAdaptiveSamplerName(group.sampler);
+      double meanSpp = group.spp;
+      int maxSpp = group.spp;
+      Image density0;
 
       // K seeds: trace each sample set once, reconstruct it with every filter.
       for (int k = 0; k < config.seeds; ++k) {
-        const auto sampler = makeSampler(group.sampler, group.spp, static_cast<uint64_t>(k));
+        const auto sampler = adaptive ? nullptr : makeSampler(group.sampler, group.spp, static_cast<uint64_t>(k));
         auto keep = [&](Pending& p, Reconstruction&& r, double traceMs, double reconMs) {
           p.metrics->add(r.image);
           p.spectrum->add(r.image);
@@ -211,8 +217,15 @@ SweepSummary runSweep(const StudyConfig& config) {
         if (shared) {
           const uint64_t rays0 = scene->tracer->counters().primary.load();
           auto t0 = Clock::now();
-          const SampleBuffer samples = traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
+          const SampleBuffer samples =
+              adaptive ? traceAdaptive(*scene->tracer, *makeAdaptiveSampler(group.sampler, group.spp, uint64_t(k)),
+                                       scene->width, scene->height, threads)
+                       : traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
+          const SpentSamples spent = spentSamples(samples);
+          meanSpp = (k == 0 ? 0.0 : meanSpp) + spent.mean / config.seeds;
+          maxSpp = k == 0 ? spent.max : std::max(maxSpp, spent.max);
+          if (k == 0 && adaptive && sum.images) density0 = sampleDensity(samples);
           sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
           ++sum.sampleSetsTraced;
           // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
@@ -276,10 +289,11 @@ SweepSummary runSweep(const StudyConfig& config) {
                                          formatNumber(r.radius, "%.9g") + ',' + r.reconstruction, sm);
           spectraWritten.insert(spectra);
         }
+        r.meanSpp = meanSpp, r.maxSpp = maxSpp;
         if (sum.images) {
           fs::create_directories(imageDir);
           writeConfigurationImages(imageDir.string(), configurationImageBase(r), p.seed0, p.reference->image,
-                                   p.metrics->noiseMap());
+                                   p.metrics->noiseMap(), density0);
         }
         out->append(r);
         ++sum.rowsWritten;

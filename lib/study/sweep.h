@@ -7,7 +7,10 @@
 // sampler seed k) and reconstructed from memory with every (filter, radius)
 // in the weighted and classic modes, and with the 3x3-binomial supersample
 // mode for the uniform sampler at square spp. Importance mode traces its own
-// samples per filter (traceImportanceSamples). Each image goes straight into
+// samples per filter (traceImportanceSamples). An adaptive sampler
+// (adaptive-<method>:<base>, render/adaptive.h) is traced by traceAdaptive
+// instead, and its sample set reconstructed the same way; mean_spp and
+// max_spp record the samples it actually spent. Each image goes straight into
 // its configuration's MetricAccumulator. When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
 // the seed-0 image, signed error and noise map are written. Each row's
