@@ -6,8 +6,10 @@
 //   diffuse()     the colour the ambient light multiplies,
 //   reflective(), transparent(), indexOfRefraction()  for secondary rays.
 // Procedural materials blend two earlier materials point by point: each
-// query returns (1 - w) * first + w * second with the blend weight w(p) of
-// the pattern, so nested procedurals compose.
+// query returns a * first + b * second with the pattern's weights (a, b),
+// a + b = 1, so nested procedurals compose. Which material a formula's w
+// goes to is stated per pattern below (the course gives it to the FIRST
+// material in Noise and Marble).
 #pragma once
 #include <memory>
 #include <string>
@@ -50,24 +52,27 @@ std::unique_ptr<Material> makePhong(const PhongParams& params);
 std::unique_ptr<Material> makeCheckerboard(const Mat4& textureFromWorld, const Material* first,
                                            const Material* second);
 
-/// Noise: w = clamp(N(q), 0, 1), N(q) = sum_{k<octaves} noise(2^k q) / 2^k,
-/// q = textureFromWorld * p, noise = Perlin's improved noise (2002).
+/// Noise (the course's formula): T(q) = sum_{k<octaves} noise(2^k q) / 2^k,
+/// q = textureFromWorld * p, noise = Perlin's improved noise (2002);
+/// w = clamp(T + 0.5, 0, 1) and the colour is w * first + (1 - w) * second.
 std::unique_ptr<Material> makeNoise(const Mat4& textureFromWorld, const Material* first,
                                     const Material* second, int octaves);
 
-/// Marble: w = 0.5 + 0.5 * sin(frequency * q.x + amplitude * N(q)).
+/// Marble (the course's formula): w = (sin(frequency * q.x + amplitude * T(q)) + 1) / 2,
+/// T as for Noise (no offset); the colour is w * first + (1 - w) * second.
 std::unique_ptr<Material> makeMarble(const Mat4& textureFromWorld, const Material* first,
                                      const Material* second, int octaves, float frequency,
                                      float amplitude);
 
-/// Wood: rings around the texture-space y axis,
-/// w = 0.5 + 0.5 * sin(frequency * sqrt(q.x^2 + q.z^2) + amplitude * N(q)).
+/// Wood (the course left it open; aliaslab's choice): rings around the
+/// texture-space y axis, w = 0.5 + 0.5 * sin(frequency * sqrt(q.x^2 + q.z^2) + amplitude * T(q)),
+/// colour (1 - w) * first + w * second.
 std::unique_ptr<Material> makeWood(const Mat4& textureFromWorld, const Material* first,
                                    const Material* second, int octaves, float frequency,
                                    float amplitude);
 
 /// aliaslab extension for analytic aliasing test patterns, evaluated on
-/// texture-space (x, y):
+/// texture-space (x, y), colour (1 - w) * first + w * second:
 ///   zoneplate  w = 0.5 + 0.5 * sin(frequency * (x^2 + y^2))
 ///   sinc       w = 0.5 + 0.5 * sinc(frequency x) * sinc(frequency y), sinc(t) = sin(pi t)/(pi t)
 ///   siemens    w = 1 when sin(frequency * atan2(y, x)) >= 0 else 0 (frequency = number of spoke pairs)

@@ -11,7 +11,7 @@
 namespace aliaslab {
 namespace {
 
-/// (1 - w) * first + w * second for every query; w in [0, 1] from weight().
+/// a * first + b * second for every query, (a, b) = weights() of the pattern.
 class Blend : public Material {
  public:
   Blend(const Mat4& textureFromWorld, const Material* first, const Material* second)
@@ -24,10 +24,10 @@ class Blend : public Material {
   template <class Query>
   auto mix(const Vec3& p, Query query) const {
     const Vec3 q = (textureFromWorld_ * p.homogeneous()).hnormalized();
-    const float w = weight(q);
-    if (w <= 0.f) return query(first_);
-    if (w >= 1.f) return query(second_);
-    return decltype(query(first_))((1.f - w) * query(first_) + w * query(second_));
+    const Weights w = weights(q);
+    if (w.second <= 0.f) return query(first_);
+    if (w.first <= 0.f) return query(second_);
+    return decltype(query(first_))(w.first * query(first_) + w.second * query(second_));
   }
 
  public:
@@ -53,8 +53,16 @@ class Blend : public Material {
   }
 
  protected:
-  /// Blend weight of the second material at texture-space point q.
-  virtual float weight(const Vec3& q) const = 0;
+  /// Weights of the first and second material (summing to 1).
+  struct Weights {
+    float first, second;
+  };
+  /// The weights at texture-space point q.
+  virtual Weights weights(const Vec3& q) const = 0;
+  /// Patterns whose formula gives the SECOND material the weight w.
+  static Weights toSecond(float w) { return {1.f - w, w}; }
+  /// Patterns whose formula gives the FIRST material the weight w (the course's Noise and Marble).
+  static Weights toFirst(float w) { return {w, 1.f - w}; }
   /// The pattern's name and parameters.
   virtual std::string pattern() const = 0;
 
@@ -85,9 +93,9 @@ std::string turbulenceParams(int octaves, float frequency, float amplitude) {
 class Checkerboard final : public Blend {
  public:
   using Blend::Blend;
-  float weight(const Vec3& q) const override {
+  Weights weights(const Vec3& q) const override {
     const long s = std::lround(std::floor(q.x()) + std::floor(q.y()) + std::floor(q.z()));
-    return (s & 1) ? 1.f : 0.f;
+    return toSecond((s & 1) ? 1.f : 0.f);
   }
   std::string pattern() const override { return "checkerboard"; }
 };
@@ -95,7 +103,8 @@ class Checkerboard final : public Blend {
 class Noise final : public Blend {
  public:
   Noise(const Mat4& m, const Material* a, const Material* b, int octaves) : Blend(m, a, b), octaves_(octaves) {}
-  float weight(const Vec3& q) const override { return std::clamp(turbulence(q, octaves_), 0.f, 1.f); }
+  // The course's formula: w = clamp(T + 0.5, 0, 1) to the FIRST material.
+  Weights weights(const Vec3& q) const override { return toFirst(std::clamp(turbulence(q, octaves_) + 0.5f, 0.f, 1.f)); }
   std::string pattern() const override { return "noise octaves " + std::to_string(octaves_); }
 
  private:
@@ -106,8 +115,9 @@ class Marble final : public Blend {
  public:
   Marble(const Mat4& m, const Material* a, const Material* b, int octaves, float frequency, float amplitude)
       : Blend(m, a, b), octaves_(octaves), frequency_(frequency), amplitude_(amplitude) {}
-  float weight(const Vec3& q) const override {
-    return 0.5f + 0.5f * std::sin(frequency_ * q.x() + amplitude_ * turbulence(q, octaves_));
+  // The course's formula: w = (sin(f x + a T) + 1) / 2 to the FIRST material.
+  Weights weights(const Vec3& q) const override {
+    return toFirst((std::sin(frequency_ * q.x() + amplitude_ * turbulence(q, octaves_)) + 1.f) / 2.f);
   }
   std::string pattern() const override { return "marble" + turbulenceParams(octaves_, frequency_, amplitude_); }
 
@@ -120,9 +130,9 @@ class Wood final : public Blend {
  public:
   Wood(const Mat4& m, const Material* a, const Material* b, int octaves, float frequency, float amplitude)
       : Blend(m, a, b), octaves_(octaves), frequency_(frequency), amplitude_(amplitude) {}
-  float weight(const Vec3& q) const override {
+  Weights weights(const Vec3& q) const override {
     const float r = std::sqrt(q.x() * q.x() + q.z() * q.z());
-    return 0.5f + 0.5f * std::sin(frequency_ * r + amplitude_ * turbulence(q, octaves_));
+    return toSecond(0.5f + 0.5f * std::sin(frequency_ * r + amplitude_ * turbulence(q, octaves_)));
   }
   std::string pattern() const override { return "wood" + turbulenceParams(octaves_, frequency_, amplitude_); }
 
@@ -140,7 +150,8 @@ class Pattern final : public Blend {
  public:
   Pattern(const Mat4& m, const Material* a, const Material* b, PatternKind kind, float frequency)
       : Blend(m, a, b), kind_(kind), frequency_(frequency) {}
-  float weight(const Vec3& q) const override {
+  Weights weights(const Vec3& q) const override { return toSecond(weight(q)); }
+  float weight(const Vec3& q) const {
     const float x = q.x(), y = q.y();
     switch (kind_) {
       case PatternKind::ZonePlate: return 0.5f + 0.5f * std::sin(frequency_ * (x * x + y * y));
