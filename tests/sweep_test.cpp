@@ -61,9 +61,14 @@ std::vector<std::string> withoutTiming(const std::string& path) {
   return out;
 }
 
-// The rows with the last column (threads: 1 per shard, 2 unsharded) blanked.
+// The rows with the threads column (1 per shard, 2 unsharded) blanked.
 std::vector<std::string> withoutThreads(std::vector<std::string> rows) {
-  for (auto& row : rows) row = row.substr(0, row.rfind(',', row.size() - 2) + 1);
+  for (auto& row : rows) {
+    auto f = splitCsvLine(row);
+    f[csvColumn("threads")] = "";
+    row.clear();
+    for (const auto& x : f) row += x + ",";
+  }
   return rows;
 }
 

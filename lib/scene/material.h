@@ -1,6 +1,7 @@
 // Materials: how a surface point responds to light.
 //
-// The tracer asks a material, at a world-space hit point p with unit shading
+// The tracer asks a material, at a world-space hit point p (a SurfacePoint:
+// the point and, when pre-filtering is on, its pixel footprint) with unit shading
 // normal n (already flipped towards the viewer when -shade_back applies):
 //   shade()       direct diffuse + specular light from one light,
 //   diffuse()     the colour the ambient light multiplies,
@@ -18,18 +19,34 @@
 
 namespace aliaslab {
 
+/// A world-space point a material is queried at, with its footprint: the
+/// surface covered by one pixel is taken to be the parallelogram
+/// p + a dpdx + b dpdy, a, b in [-1/2, 1/2] (ray differentials; see
+/// docs/prefiltering.md). Both axes zero (the default, and every query when
+/// pre-filtering is off) mean a point sample: materials then evaluate exactly
+/// the unfiltered formulas. A Vec3 converts implicitly to a point sample.
+struct SurfacePoint {
+  Vec3 p = Vec3::Zero();
+  Vec3 dpdx = Vec3::Zero(), dpdy = Vec3::Zero();
+  SurfacePoint() = default;
+  template <class Derived>  // NOLINTNEXTLINE: implicit on purpose (any 3-vector is a point sample)
+  SurfacePoint(const Eigen::MatrixBase<Derived>& point) : p(point) {}
+  SurfacePoint(const Vec3& point, const Vec3& dx, const Vec3& dy) : p(point), dpdx(dx), dpdy(dy) {}
+  bool hasFootprint() const { return !(dpdx.isZero(0.f) && dpdy.isZero(0.f)); }
+};
+
 class Material {
  public:
   virtual ~Material() = default;
   /// Diffuse + specular response to light of colour `lightColor` arriving
   /// from unit direction `toLight`; `toViewer` is the unit direction back
   /// along the incoming ray.
-  virtual Color shade(const Vec3& p, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
+  virtual Color shade(const SurfacePoint& p, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
                       const Color& lightColor) const = 0;
-  virtual Color diffuse(const Vec3& p) const = 0;
-  virtual Color reflective(const Vec3& p) const = 0;
-  virtual Color transparent(const Vec3& p) const = 0;
-  virtual float indexOfRefraction(const Vec3& p) const = 0;
+  virtual Color diffuse(const SurfacePoint& p) const = 0;
+  virtual Color reflective(const SurfacePoint& p) const = 0;
+  virtual Color transparent(const SurfacePoint& p) const = 0;
+  virtual float indexOfRefraction(const SurfacePoint& p) const = 0;
   /// One line: kind and parameters; procedurals include their two materials.
   virtual std::string describe() const = 0;
 };

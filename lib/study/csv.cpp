@@ -23,7 +23,7 @@ const std::vector<std::string>& csvColumns() {
       "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
-      "reconstruct_ms", "threads"};
+      "reconstruct_ms", "threads", "prefilter"};
   return cols;
 }
 
@@ -34,6 +34,13 @@ const std::string& csvHeader() {
     return h;
   }();
   return header;
+}
+
+size_t csvColumn(const std::string& name) {
+  const auto& cols = csvColumns();
+  const auto it = std::find(cols.begin(), cols.end(), name);
+  if (it == cols.end()) throw std::out_of_range("no CSV column '" + name + "'");
+  return static_cast<size_t>(it - cols.begin());
 }
 
 std::vector<size_t> csvTimingColumns() { return {21, 22}; }
@@ -53,9 +60,10 @@ std::string quoted(const std::string& s) {
 
 std::string joinKey(const std::vector<std::string>& f) {
   static const int cols[] = {kScene, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds, kRefSpp};
+  static const size_t prefilter = csvColumn("prefilter");
   std::string key;
   for (int c : cols) key += f[c] + '\x1f';
-  return key;
+  return key + f[prefilter] + '\x1f';
 }
 
 double num(const std::string& s) {
@@ -70,7 +78,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << ',' << r.seeds << ',' << real(r.mse) << ',' << real(r.aliasing) << ',' << real(r.noise) << ','
     << real(r.mseArea) << ',' << real(r.psnr) << ',' << r.refSpp << ',' << real(r.refError) << ',' << r.flagged
     << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
-    << real(r.reconstructMs) << ',' << r.threads;
+    << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.prefilter);
   return s.str();
 }
 
@@ -130,10 +138,11 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
   };
   std::vector<Item> items;
   for (std::string& l : lines) items.push_back({splitCsvLine(l), std::move(l)});
+  static const size_t kPrefilter = csvColumn("prefilter");
   auto order = [](const Item& a) {
     const auto& f = a.f;
-    return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kFilter], num(f[kRadius]), f[kRecon],
-                           num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams]);
+    return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kPrefilter], f[kFilter], num(f[kRadius]),
+                           f[kRecon], num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams]);
   };
   std::erase_if(items, [](const Item& i) { return i.f.size() != csvColumns().size(); });
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return order(a) < order(b); });

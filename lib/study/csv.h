@@ -4,11 +4,12 @@
 // Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
-//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
+//   prefilter
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
-// ref_spp): a rerun skips configurations whose key is already in the file.
+// ref_spp, prefilter): a rerun skips configurations whose key is already in the file.
 // CsvAppender opens an existing file for resumption: it checks the header,
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
@@ -39,12 +40,15 @@ struct CsvRow {
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
   int threads = 0;
+  std::string prefilter = "none";  ///< none | footprint (texture pre-filtering, docs/prefiltering.md)
 };
 
 /// The header line (no newline).
 const std::string& csvHeader();
 /// Column names in order.
 const std::vector<std::string>& csvColumns();
+/// Index of the column `name` in csvColumns(); throws std::out_of_range when there is none.
+size_t csvColumn(const std::string& name);
 /// Indices of the timing columns (trace_ms, reconstruct_ms), which may differ between runs.
 std::vector<size_t> csvTimingColumns();
 

@@ -56,6 +56,7 @@ CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGro
   r.filterParams = cfg.mode == ReconMode::Supersample ? supersampleParams(g.spp) : filter.describe();
   r.reconstruction = toString(cfg.mode);
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
+  r.prefilter = g.prefilter;
   return r;
 }
 
@@ -165,6 +166,13 @@ SweepSummary runSweep(const StudyConfig& config) {
 
     for (size_t g = gi; g < gend; ++g) {
       const SampleSetGroup& group = groups[g];
+      // Pre-filtered groups trace with the same scene and flags, footprints on
+      // (1/sqrt(spp) pixels a side); references never do.
+      TraceOptions prefilterOptions = scene->tracer->options();
+      prefilterOptions.prefilter = true;
+      prefilterOptions.footprintPixels = 1.f / std::sqrt(static_cast<float>(group.spp));
+      const Tracer prefilterTracer(scene->scene, *scene->aggregate, prefilterOptions);
+      const Tracer& tracer = parsePrefilter(group.prefilter) ? prefilterTracer : *scene->tracer;
       auto& rows = pending[g - gi];
       double advanced = 0;
       auto step = [&] { progress.advance(1), advanced += 1; };
@@ -189,11 +197,11 @@ SweepSummary runSweep(const StudyConfig& config) {
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
         };
         if (shared) {
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = tracer.counters().primary.load();
           auto t0 = Clock::now();
-          const SampleBuffer samples = traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
+          const SampleBuffer samples = traceSamples(tracer, *sampler, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().primary.load() - rays0;
           ++sum.sampleSetsTraced;
           // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
           std::vector<Pending*> weighted;
@@ -220,12 +228,12 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         for (Pending& p : rows) {
           if (p.mode != ReconMode::ImportanceSampled) continue;
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = tracer.counters().primary.load();
           auto t0 = Clock::now();
           const SampleBuffer samples =
-              traceImportanceSamples(*scene->tracer, *sampler, *p.filter, scene->width, scene->height, threads);
+              traceImportanceSamples(tracer, *sampler, *p.filter, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().primary.load() - rays0;
           ++sum.importanceTraces;
           t0 = Clock::now();
           Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
