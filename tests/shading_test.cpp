@@ -49,13 +49,13 @@ Color traceRay(const Tracer& tracer, const Vec3& origin, const Vec3& direction) 
 /// Diffuse colour = world position (x, y, z): shows where a ray ended up.
 class PositionMaterial final : public Material {
  public:
-  Color shade(const Vec3&, const Vec3&, const Vec3&, const Vec3&, const Color&) const override {
+  Color shade(const SurfacePoint&, const Vec3&, const Vec3&, const Vec3&, const Color&) const override {
     return Color::Zero();
   }
-  Color diffuse(const Vec3& p) const override { return p.array(); }
-  Color reflective(const Vec3&) const override { return Color::Zero(); }
-  Color transparent(const Vec3&) const override { return Color::Zero(); }
-  float indexOfRefraction(const Vec3&) const override { return 1.f; }
+  Color diffuse(const SurfacePoint& s) const override { return s.p.array(); }
+  Color reflective(const SurfacePoint&) const override { return Color::Zero(); }
+  Color transparent(const SurfacePoint&) const override { return Color::Zero(); }
+  float indexOfRefraction(const SurfacePoint&) const override { return 1.f; }
   std::string describe() const override { return "position"; }
 };
 

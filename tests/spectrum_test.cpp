@@ -153,10 +153,10 @@ TEST(Spectrum, CsvAppendsAndCanonicalises) {
   acc.add(whiteNoise(16, 16, 1));
   acc.add(whiteNoise(16, 16, 2));
   const SpectrumMetrics m = acc.result();
-  appendSpectrumCsv(path, "s,zsobol,16,box,0.5,weighted", m);
-  appendSpectrumCsv(path, "s,random,4,box,0.5,weighted", m);
-  { std::ofstream torn(path, std::ios::app); torn << "s,random,4,box,0.5,weighted,error,3,0.0"; }
-  appendSpectrumCsv(path, "s,zsobol,16,box,0.5,weighted", m);  // re-measured after an interruption
+  appendSpectrumCsv(path, "s,zsobol,16,box,0.5,weighted,none", m);
+  appendSpectrumCsv(path, "s,random,4,box,0.5,weighted,none", m);
+  { std::ofstream torn(path, std::ios::app); torn << "s,random,4,box,0.5,weighted,none,error,3,0.0"; }
+  appendSpectrumCsv(path, "s,zsobol,16,box,0.5,weighted,none", m);  // re-measured after an interruption
   canonicaliseSpectrumCsv(path);
   std::ifstream in(path);
   std::string line;
@@ -168,8 +168,8 @@ TEST(Spectrum, CsvAppendsAndCanonicalises) {
   int bins = 0;
   for (int b = 0; b < kSpectrumBins; ++b) bins += m.error.count[b] > 0;
   ASSERT_EQ(lines.size(), 2u * 2u * bins);  // two configurations, error and noise, no duplicates
-  EXPECT_EQ(lines.front().rfind("s,random,4,box,0.5,weighted,error,", 0), 0u) << lines.front();
-  EXPECT_EQ(lines.back().rfind("s,zsobol,16,box,0.5,weighted,noise,", 0), 0u) << lines.back();
+  EXPECT_EQ(lines.front().rfind("s,random,4,box,0.5,weighted,none,error,", 0), 0u) << lines.front();
+  EXPECT_EQ(lines.back().rfind("s,zsobol,16,box,0.5,weighted,none,noise,", 0), 0u) << lines.back();
   std::filesystem::remove(path);
 }
 

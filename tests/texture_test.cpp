@@ -39,26 +39,82 @@ TEST(Procedural, CheckerboardParityOfFloorSum) {
   expectColor(scaled->diffuse(Vec3(0.75f, 0.1f, 0.1f)), Color(0, 1, 0));
 }
 
-// Every query blends (1 - w) first + w second with the pattern's weight.
+// The course's formulas (SCENE_FORMAT.md, Noise and Marble): T = sum_{k<n} noise(2^k q) / 2^k,
+// Noise w = clamp(T + 0.5, 0, 1), Marble w = (sin(f x + a T) + 1) / 2, colour w * m1 + (1 - w) * m2.
+// T is recomputed here from perlinNoise, independently of the material code.
+float courseT(const Vec3& q, int octaves) {
+  double t = 0;
+  for (int k = 0; k < octaves; ++k) {
+    const float s = std::ldexp(1.f, k);
+    t += perlinNoise(s * q.x(), s * q.y(), s * q.z()) / s;
+  }
+  return static_cast<float>(t);
+}
+
+// Every query blends w * first + (1 - w) * second with the course's weight.
 TEST(Procedural, MarbleAndNoiseBlendEveryQuery) {
   auto a = makePhong({.diffuse = Color(1, 0, 0), .specular = Color::Zero(), .transparent = Color::Zero(),
                       .indexOfRefraction = 1.f});
   auto b = makePhong({.diffuse = Color(0, 0, 1), .transparent = Color::Ones(), .indexOfRefraction = 2.f});
   const Vec3 p(0.3f, 0.7f, 0.1f);
   const float n = perlinNoise(p.x(), p.y(), p.z()) + perlinNoise(2 * p.x(), 2 * p.y(), 2 * p.z()) / 2;
-  const float w = 0.5f + 0.5f * std::sin(3.f * p.x() + 2.f * n);
+  const float w = (std::sin(3.f * p.x() + 2.f * n) + 1) / 2;  // to the FIRST material
   auto marble = makeMarble(Mat4::Identity(), a.get(), b.get(), 2, 3.f, 2.f);
-  expectColor(marble->diffuse(p), Color(1 - w, 0, w));
-  expectColor(marble->transparent(p), Color::Constant(w));
-  EXPECT_NEAR(marble->indexOfRefraction(p), 1 + w, kTol);
+  expectColor(marble->diffuse(p), Color(w, 0, 1 - w));
+  expectColor(marble->transparent(p), Color::Constant(1 - w));
+  EXPECT_NEAR(marble->indexOfRefraction(p), w * 1 + (1 - w) * 2, kTol);
   const Color shaded = marble->shade(p, Vec3::UnitY(), Vec3::UnitY(), Vec3::UnitY(), Color::Ones());
-  expectColor(shaded, Color(1 - w, 0, w));
+  expectColor(shaded, Color(w, 0, 1 - w));
 
-  // Noise with one octave: w = clamp(noise(q), 0, 1); at (0.25, 0, 0) noise = 0.146484375 (see Perlin test).
+  // Noise with one octave: at (0.25, 0, 0) noise = 0.146484375 (see the Perlin test), so
+  // w = 0.646484375 to the first material.
   auto noise = makeNoise(Mat4::Identity(), a.get(), b.get(), 1);
-  expectColor(noise->diffuse(Vec3(0.25f, 0, 0)), Color(1 - 0.146484375f, 0, 0.146484375f));
-  // At a lattice point noise is 0: pure first material.
-  expectColor(noise->diffuse(Vec3(3, -2, 5)), Color(1, 0, 0));
+  expectColor(noise->diffuse(Vec3(0.25f, 0, 0)), Color(0.646484375f, 0, 0.353515625f));
+  // At a lattice point noise is 0: T + 0.5 = 0.5, an even blend.
+  expectColor(noise->diffuse(Vec3(3, -2, 5)), Color(0.5f, 0, 0.5f));
+}
+
+// Noise at many points, both clamp ends included: w = clamp(T + 0.5, 0, 1) to the first material.
+TEST(Procedural, NoiseWeightMatchesTheCourseFormulaIncludingClamping) {
+  auto a = makePhong({.diffuse = Color(1, 0, 0)}), b = makePhong({.diffuse = Color(0, 1, 0)});
+  Mat4 m = Mat4::Identity();
+  m.diagonal().head<3>().setConstant(3.f);  // texture space = 3 * world (as scenes/vase.txt's floor)
+  m(1, 3) = 0.37f;
+  auto noise = makeNoise(m, a.get(), b.get(), 4);
+  int clampedHigh = 0, clampedLow = 0, inside = 0;
+  HashRng rng(11);
+  for (int k = 0; k < 4000; ++k) {
+    const Vec3 p(8 * rng.nextFloat() - 4, 8 * rng.nextFloat() - 4, 8 * rng.nextFloat() - 4);
+    const Vec3 q = 3.f * p + Vec3(0, 0.37f, 0);
+    const float t = courseT(q, 4);
+    const float w = std::clamp(t + 0.5f, 0.f, 1.f);
+    const Color got = noise->diffuse(p);
+    ASSERT_NEAR(got[0], w, 2e-5f) << "T = " << t;
+    ASSERT_NEAR(got[1], 1 - w, 2e-5f) << "T = " << t;
+    clampedHigh += t > 0.5f, clampedLow += t < -0.5f, inside += std::abs(t) < 0.4f;
+  }
+  EXPECT_GT(clampedHigh, 0) << "no point exercised the upper clamp";
+  EXPECT_GT(clampedLow, 0) << "no point exercised the lower clamp";
+  EXPECT_GT(inside, 100);
+}
+
+// Marble at chosen points where the weight is known in closed form: at lattice points of every octave
+// (integer q) T = 0, so w = (sin(f x) + 1) / 2 exactly.
+TEST(Procedural, MarbleWeightAtLatticePointsAndAgainstTheFormula) {
+  auto a = makePhong({.diffuse = Color(1, 0, 0)}), b = makePhong({.diffuse = Color(0, 1, 0)});
+  const float f = 0.5f * kPi;  // f x = pi/2 at x = 1: sin = 1, w = 1 (pure first)
+  auto marble = makeMarble(Mat4::Identity(), a.get(), b.get(), 3, f, 7.f);
+  expectColor(marble->diffuse(Vec3(1, 4, -2)), Color(1, 0, 0));   // sin(pi/2) = 1
+  expectColor(marble->diffuse(Vec3(3, 0, 5)), Color(0, 1, 0));    // sin(3pi/2) = -1
+  expectColor(marble->diffuse(Vec3(2, -1, 1)), Color(0.5f, 0.5f, 0), 1e-5f);  // sin(pi) = 0
+  HashRng rng(5);
+  for (int k = 0; k < 500; ++k) {
+    const Vec3 p(4 * rng.nextFloat() - 2, 4 * rng.nextFloat() - 2, 4 * rng.nextFloat() - 2);
+    const float w = (std::sin(f * p.x() + 7.f * courseT(p, 3)) + 1) / 2;
+    const Color got = marble->diffuse(p);
+    ASSERT_NEAR(got[0], w, 1e-4f);
+    ASSERT_NEAR(got[1], 1 - w, 1e-4f);
+  }
 }
 
 // Aliasing test patterns at points where the weight is known exactly.

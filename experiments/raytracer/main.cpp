@@ -2,6 +2,7 @@
 // Usage errors exit with 2, bad input files with 1; nothing is written then.
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include "render/render.h"
 #include "sampling_plan.h"
 #include "scene/scene.h"
+#include "study/config.h"
 
 using namespace aliaslab;
 
@@ -57,6 +59,8 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   to.bounces = o.bounces;
   to.weight = o.weight;
   to.shadeBack = o.shadeBack;
+  to.prefilter = parsePrefilter(o.prefilter, "--prefilter");
+  to.footprintPixels = 1.f / std::sqrt(static_cast<float>(plan.sampler->spp()));
   const Tracer tracer(scene, *aggregate, to);
 
   // Colour image (and sample visualisation), depth, normals.

@@ -10,6 +10,7 @@
 #include "core/image.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
+#include "study/config.h"
 
 namespace aliaslab {
 namespace {
@@ -88,6 +89,9 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--seed", o.seed, "random seed (default 0)")->check(kSeed);
   app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
+  app.add_option("--prefilter", o.prefilter,
+                 "none or footprint: average textures over each sample's footprint (1/sqrt(spp) pixels a side; "
+                 "docs/prefiltering.md)");
   app.footer("The classic flags take one dash as in the course (-input, -size, ...) or two.");
 }
 
@@ -133,6 +137,7 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   if (o.bounces < 0 || o.bounces > 1000) throw OptionError("-bounces", "must be in 0..1000");
   if (!(o.weight >= 0.f) || !std::isfinite(o.weight)) throw OptionError("-weight", "must be finite and >= 0");
   if (o.threads < 0) throw OptionError("--threads", "must be >= 0 (0 = all cores)");
+  parsePrefilter(o.prefilter, "--prefilter");
   if (!o.grid.empty()) {
     if (o.bruteForce) throw OptionError("-grid", "cannot be combined with --brute-force");
     double cells = 1;

@@ -43,6 +43,7 @@ struct RaytracerOptions {
   float radius = 0.f;                    ///< --radius R in pixels (required with --filter)
   uint64_t seed = 0;                     ///< --seed S (default 0)
   std::vector<std::string> filterParams; ///< --filter-param name=value, repeatable
+  std::string prefilter = "none";        ///< --prefilter none|footprint
   std::string reconstruction;            ///< --reconstruction weighted|classic|importance|supersample
 };
 

@@ -1,4 +1,4 @@
-// sweep: scenes x samplers x spp x filters x radii x reconstruction modes,
+// sweep: scenes x samplers x spp x prefilter x filters x radii x reconstruction modes,
 // K seeds each, one CSV row per configuration (lib/study/sweep.h).
 //
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
@@ -87,6 +87,10 @@ int main(int argc, char** argv) {
   app.add_option("--radii", c.radii, "filter radii in pixels (box also gets its classic 0.5)")
       ->delimiter(',')->capture_default_str();
   app.add_option("--reconstruction", c.reconstruction, "weighted|classic|importance|supersample")
+      ->delimiter(',')->capture_default_str();
+  app.add_option("--prefilter", c.prefilter,
+                 "none|footprint: texture pre-filtering over each hit's pixel footprint, crossed with the rest "
+                 "(references stay un-prefiltered; docs/prefiltering.md)")
       ->delimiter(',')->capture_default_str();
   app.add_option("--seeds", c.seeds, "K independent seeds per configuration (>= 2)")->capture_default_str();
   app.add_option("--ref-spp", c.refSpp, "reference samples per pixel")->capture_default_str();

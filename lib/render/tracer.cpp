@@ -1,6 +1,7 @@
 // Whitted ray tracing; the protocol is documented in tracer.h.
 #include "render/tracer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -22,6 +23,7 @@ std::string TraceOptions::describe() const {
   std::ostringstream out;
   out << (shadows ? "shadows" : "no_shadows") << " bounces " << bounces << " weight " << weight
       << (shadeBack ? " shade_back" : "") << " epsilon " << epsilon;
+  if (prefilter) out << " prefilter footprint " << footprintPixels << " px";
   return out.str();
 }
 
@@ -35,16 +37,56 @@ bool refractDirection(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted
   return true;
 }
 
+void footprintAt(const RayFootprint& f, const Ray& ray, float t, const Vec3& n, Vec3& dpdx, Vec3& dpdy) {
+  const Vec3& d = ray.direction;
+  // d.n, kept away from 0 at grazing hits (the footprint is then huge but finite)
+  float dn = d.dot(n);
+  const float minDn = 1e-6f * d.norm();
+  if (std::abs(dn) < minDn) dn = dn < 0.f ? -minDn : minDn;
+  // a world offset dp along the ray's neighbour, moved along d onto the tangent plane
+  auto onPlane = [&](const Vec3& dp) { return Vec3(dp - (dp.dot(n) / dn) * d); };
+  if (f.differential) {
+    dpdx = onPlane(f.dOriginDx + t * f.dDirectionDx);
+    dpdy = onPlane(f.dOriginDy + t * f.dDirectionDy);
+    return;
+  }
+  const Vec3 u = d.normalized();
+  const float r = f.radius + std::abs(t) * d.norm() * f.spread;
+  const Vec3 a = (std::abs(u.x()) < 0.9f ? Vec3::UnitX() : Vec3::UnitY()).cross(u).normalized();
+  const Vec3 b = u.cross(a);
+  dpdx = onPlane(2.f * r * a), dpdy = onPlane(2.f * r * b);
+}
+
+RayFootprint primaryFootprint(const Camera& camera, float fx, float fy, int width, int height, float pixels) {
+  const float perPixel = pixels / static_cast<float>(std::max(width, height));  // screen units per step
+  const RayDerivatives d = camera.rayDerivatives(filmToScreen(fx, fy, width, height));
+  RayFootprint f;
+  f.differential = true;
+  f.dOriginDx = perPixel * d.dOriginDx, f.dOriginDy = perPixel * d.dOriginDy;
+  f.dDirectionDx = perPixel * d.dDirectionDx, f.dDirectionDy = perPixel * d.dDirectionDy;
+  return f;
+}
+
 Tracer::Tracer(const Scene& scene, const Aggregate& aggregate, const TraceOptions& options)
     : scene_(scene), aggregate_(aggregate), options_(options) {}
 
-Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float ior, Hit& hit) const {
+Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float ior, Hit& hit,
+                    const RayFootprint* footprint) const {
   hit = Hit{};
   if (!aggregate_.intersect(ray, tmin, hit)) return scene_.background;
 
   const Material& m = hit.material ? *hit.material : defaultMaterial();
   const Vec3 d = ray.direction.normalized();
-  const Vec3 p = ray.at(hit.t);
+  SurfacePoint p(ray.at(hit.t));
+  RayFootprint cone;  // of the secondary rays: starts at this footprint, widens as the primary ray did
+  if (footprint) {
+    footprintAt(*footprint, ray, hit.t, hit.normal, p.dpdx, p.dpdy);
+    cone.radius = 0.5f * std::max(p.dpdx.norm(), p.dpdy.norm());
+    cone.spread = footprint->differential
+                      ? 0.5f * std::max(footprint->dDirectionDx.norm(), footprint->dDirectionDy.norm())
+                      : footprint->spread;
+  }
+  const RayFootprint* secondary = footprint ? &cone : nullptr;
   const bool backFace = d.dot(hit.normal) > 0.f;
   const Vec3 n = (options_.shadeBack && backFace) ? Vec3(-hit.normal) : hit.normal;
   const float eps = options_.epsilon;
@@ -59,11 +101,11 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
       Vec3 toLight;
       Color lightColor;
       float distance;
-      light->illuminate(p, toLight, lightColor, distance);
+      light->illuminate(p.p, toLight, lightColor, distance);
       if (!(n.dot(toLight) > 0.f)) continue;
       if (options_.shadows) {
         counters_.shadow.fetch_add(1, std::memory_order_relaxed);
-        const Ray shadowRay{p + eps * n, toLight};
+        const Ray shadowRay{p.p + eps * n, toLight};
         if (aggregate_.occluded(shadowRay, 0.f, distance)) continue;
       }
       color += m.shade(p, n, -d, toLight, lightColor);
@@ -77,8 +119,8 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
   if (maxComponent(reflective) > 0.f && reflectWeight >= options_.weight) {
     counters_.reflected.fetch_add(1, std::memory_order_relaxed);
     Hit h;
-    const Ray r{p, mirrorDirection(d, n)};
-    color += reflective * trace(r, eps, depth + 1, reflectWeight, ior, h);
+    const Ray r{p.p, mirrorDirection(d, n)};
+    color += reflective * trace(r, eps, depth + 1, reflectWeight, ior, h, secondary);
   }
 
   // Refraction: the geometric face decides entering (1 -> ior) or leaving (ior -> 1)
@@ -92,8 +134,8 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
     if (refractDirection(d, facing, eta, t)) {
       counters_.refracted.fetch_add(1, std::memory_order_relaxed);
       Hit h;
-      const Ray r{p, t};
-      color += transparent * trace(r, eps, depth + 1, refractWeight, backFace ? 1.f : materialIor, h);
+      const Ray r{p.p, t};
+      color += transparent * trace(r, eps, depth + 1, refractWeight, backFace ? 1.f : materialIor, h, secondary);
     }
   }
   return color;
@@ -104,6 +146,10 @@ Color Tracer::radianceAt(float fx, float fy, int width, int height) const {
   const Ray ray = scene_.camera->generateRay(filmToScreen(fx, fy, width, height));
   counters_.primary.fetch_add(1, std::memory_order_relaxed);
   Hit hit;
+  if (options_.prefilter) {
+    const RayFootprint footprint = primaryFootprint(*scene_.camera, fx, fy, width, height, options_.footprintPixels);
+    return trace(ray, scene_.camera->tMin(), 0, 1.f, 1.f, hit, &footprint);
+  }
   return trace(ray, scene_.camera->tMin(), 0, 1.f, 1.f, hit);
 }
 

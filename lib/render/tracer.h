@@ -20,6 +20,14 @@
 // Secondary rays start at p with tmin = epsilon. A miss returns the
 // background colour. A hit without a material shades as the default
 // PhongMaterial (white diffuse).
+//
+// Pre-filtering (options.prefilter, --prefilter footprint): every material
+// query gets the hit's pixel footprint (SurfacePoint). Primary rays carry
+// exact ray differentials from the camera (one pixel step in film x and y),
+// transferred to the hit's tangent plane; reflected and refracted rays carry
+// a cone that starts at the parent footprint's half-width and widens by the
+// primary ray's angular spread (details and limits in docs/prefiltering.md).
+// Shadow rays and the number of rays traced are unchanged.
 #pragma once
 #include <atomic>
 #include <cstdint>
@@ -36,6 +44,10 @@ struct TraceOptions {
   float weight = 0.f;       ///< -weight w: stop a ray whose accumulated weight falls below w
   bool shadeBack = false;   ///< -shade_back: flip the normal when a ray hits a back face
   float epsilon = 1e-3f;    ///< scene units: tmin of reflected/refracted rays, shadow origin p + epsilon n
+  bool prefilter = false;   ///< --prefilter footprint: materials average over each hit's pixel footprint
+  /// Side of a sample's footprint in pixels: each of spp samples stands for
+  /// 1/spp of the pixel's area, so the sweep and the raytracer use 1/sqrt(spp).
+  float footprintPixels = 1.f;
   /// One line, e.g. "shadows bounces 5 weight 0.01 shade_back epsilon 0.001".
   std::string describe() const;
 };
@@ -54,6 +66,27 @@ Vec3 mirrorDirection(const Vec3& d, const Vec3& n);
 /// false on total internal reflection.
 bool refractDirection(const Vec3& d, const Vec3& n, float eta, Vec3& transmitted);
 
+/// A ray's footprint for pre-filtering: exact differentials (primary rays:
+/// origin and direction change per pixel step in film x and y) or a cone
+/// (secondary rays: half-width `radius` at the origin, growing by `spread`
+/// per unit distance).
+struct RayFootprint {
+  bool differential = false;
+  Vec3 dOriginDx = Vec3::Zero(), dOriginDy = Vec3::Zero();
+  Vec3 dDirectionDx = Vec3::Zero(), dDirectionDy = Vec3::Zero();
+  float radius = 0.f, spread = 0.f;
+};
+
+/// The footprint at a hit at distance t (in units of `ray`'s direction) on
+/// a surface of unit normal n: the world-space axes dpdx, dpdy of
+/// SurfacePoint (differentials transferred to the tangent plane, Igehy 1999;
+/// a cone as two orthogonal diameters projected along the ray).
+void footprintAt(const RayFootprint& footprint, const Ray& ray, float t, const Vec3& n, Vec3& dpdx, Vec3& dpdy);
+
+/// The footprint of the primary ray through film position (fx, fy) of a
+/// width x height image: differentials for a step of `pixels` pixels.
+RayFootprint primaryFootprint(const Camera& camera, float fx, float fy, int width, int height, float pixels = 1.f);
+
 class Tracer {
  public:
   Tracer(const Scene& scene, const Aggregate& aggregate, const TraceOptions& options);
@@ -61,8 +94,10 @@ class Tracer {
   /// Radiance arriving along `ray` (hits with t > tmin); `depth` counts
   /// bounces so far, `weight` the accumulated reflective/transparent weight,
   /// `ior` the index of refraction of the medium the ray travels in. `hit`
-  /// receives the first hit (for depth and normal images).
-  Color trace(const Ray& ray, float tmin, int depth, float weight, float ior, Hit& hit) const;
+  /// receives the first hit (for depth and normal images). `footprint`:
+  /// the ray's footprint when pre-filtering (null: point samples).
+  Color trace(const Ray& ray, float tmin, int depth, float weight, float ior, Hit& hit,
+              const RayFootprint* footprint = nullptr) const;
 
   /// Radiance through film position (fx, fy) of a width x height image.
   Color radianceAt(float fx, float fy, int width, int height) const;

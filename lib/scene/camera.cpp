@@ -41,6 +41,11 @@ class OrthographicCamera final : public Camera {
     r.direction = f_.direction;
     return r;
   }
+  RayDerivatives rayDerivatives(const Vec2&) const override {
+    RayDerivatives d;
+    d.dOriginDx = size_ * f_.horizontal, d.dOriginDy = size_ * f_.up;
+    return d;
+  }
   float tMin() const override { return -kInf; }
 
  private:
@@ -66,6 +71,18 @@ class PerspectiveCamera final : public Camera {
                    (2.f * s.y() - 1.f) * tanHalf_ * f_.up)
                       .normalized();
     return r;
+  }
+  // direction = v / |v|, v = D + (2sx-1) tan H + (2sy-1) tan U:
+  // d(v/|v|) = (dv - (dv . v/|v|) v/|v|) / |v| with dv/dsx = 2 tan H, dv/dsy = 2 tan U.
+  RayDerivatives rayDerivatives(const Vec2& s) const override {
+    const Vec3 v = f_.direction + (2.f * s.x() - 1.f) * tanHalf_ * f_.horizontal + (2.f * s.y() - 1.f) * tanHalf_ * f_.up;
+    const float len = v.norm();
+    const Vec3 u = v / len;
+    auto unit = [&](const Vec3& dv) { return Vec3((dv - dv.dot(u) * u) / len); };
+    RayDerivatives d;
+    d.dDirectionDx = unit(2.f * tanHalf_ * f_.horizontal);
+    d.dDirectionDy = unit(2.f * tanHalf_ * f_.up);
+    return d;
   }
   float tMin() const override { return 0.f; }
 

@@ -10,10 +10,19 @@
 
 namespace aliaslab {
 
+/// Derivatives of a camera ray's origin and unit direction with respect to
+/// the screen coordinates sx and sy (ray differentials, Igehy 1999).
+struct RayDerivatives {
+  Vec3 dOriginDx = Vec3::Zero(), dOriginDy = Vec3::Zero();
+  Vec3 dDirectionDx = Vec3::Zero(), dDirectionDy = Vec3::Zero();
+};
+
 class Camera {
  public:
   virtual ~Camera() = default;
   virtual Ray generateRay(const Vec2& screen) const = 0;
+  /// d(origin)/d(screen) and d(direction)/d(screen) of generateRay(screen), analytically.
+  virtual RayDerivatives rayDerivatives(const Vec2& screen) const = 0;
   /// Smallest t a primary ray accepts: -infinity for orthographic cameras
   /// (everything along the viewing line is seen), 0 for perspective.
   virtual float tMin() const = 0;

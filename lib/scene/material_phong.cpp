@@ -13,7 +13,7 @@ class Phong final : public Material {
  public:
   explicit Phong(const PhongParams& params) : p_(params) {}
 
-  Color shade(const Vec3& p, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
+  Color shade(const SurfacePoint&, const Vec3& n, const Vec3& toViewer, const Vec3& toLight,
               const Color& lightColor) const override {
     const float nl = n.dot(toLight);
     if (!(nl > 0.f)) return Color::Zero();
@@ -25,10 +25,10 @@ class Phong final : public Material {
     }
     return lightColor * c;
   }
-  Color diffuse(const Vec3&) const override { return p_.diffuse; }
-  Color reflective(const Vec3&) const override { return p_.reflective; }
-  Color transparent(const Vec3&) const override { return p_.transparent; }
-  float indexOfRefraction(const Vec3&) const override { return p_.indexOfRefraction; }
+  Color diffuse(const SurfacePoint&) const override { return p_.diffuse; }
+  Color reflective(const SurfacePoint&) const override { return p_.reflective; }
+  Color transparent(const SurfacePoint&) const override { return p_.transparent; }
+  float indexOfRefraction(const SurfacePoint&) const override { return p_.indexOfRefraction; }
   std::string describe() const override {
     std::ostringstream out;
     out << "phong diffuse " << formatVector(p_.diffuse) << " specular " << formatVector(p_.specular) << " exponent " << p_.exponent

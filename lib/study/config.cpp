@@ -59,10 +59,11 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
   };
   for (const std::string& scene : expandScenePaths(config.scenes))
     for (const std::string& sampler : config.samplers)
-      for (int spp : config.spp) {
+      for (int spp : config.spp)
+      for (const std::string& prefilter : config.prefilter) {
         SampleSetGroup g;
         g.index = static_cast<int>(groups.size());
-        g.scene = scene, g.sampler = sampler, g.spp = spp;
+        g.scene = scene, g.sampler = sampler, g.spp = spp, g.prefilter = prefilter;
         for (const std::string& modeName : config.reconstruction) {
           const ReconMode mode = parseReconMode(modeName);
           if (mode == ReconMode::Supersample) {
@@ -81,6 +82,12 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
         groups.push_back(std::move(g));
       }
   return groups;
+}
+
+bool parsePrefilter(const std::string& name, const std::string& option) {
+  if (name == "none") return false;
+  if (name == "footprint") return true;
+  throw OptionError(option, "unknown pre-filtering '" + name + "' (valid: none, footprint)");
 }
 
 std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count) {
@@ -208,6 +215,11 @@ void validateStudy(const StudyConfig& c) {
   if (c.spp.empty()) throw OptionError("--spp", "needs at least one sample count");
   if (c.radii.empty()) throw OptionError("--radii", "needs at least one radius");
   if (c.reconstruction.empty()) throw OptionError("--reconstruction", "needs at least one mode");
+  if (c.prefilter.empty()) throw OptionError("--prefilter", "needs at least one of none, footprint");
+  for (const std::string& p : c.prefilter) parsePrefilter(p);
+  for (size_t i = 0; i < c.prefilter.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (c.prefilter[i] == c.prefilter[j]) throw OptionError("--prefilter", "'" + c.prefilter[i] + "' given twice");
   if (c.scenes.empty()) throw OptionError("--scenes", "needs at least one scene file or folder");
   if (c.seeds < 2) throw OptionError("--seeds", "needs K >= 2 (noise is a variance over seeds), found " +
                                                     std::to_string(c.seeds));

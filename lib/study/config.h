@@ -1,9 +1,9 @@
 // What a sweep measures, and the list of configurations it expands to.
 //
-// A StudyConfig is the cross product scenes x samplers x spp x filters x
-// radii x reconstruction modes, each configuration rendered with K seeds.
-// expandStudy() turns it into SampleSetGroups: one group per (scene,
-// sampler, spp), whose K sample sets (one per seed) are traced once and
+// A StudyConfig is the cross product scenes x samplers x spp x prefilter x
+// filters x radii x reconstruction modes, each configuration rendered with K
+// seeds. expandStudy() turns it into SampleSetGroups: one group per (scene,
+// sampler, spp, prefilter), whose K sample sets (one per seed) are traced once and
 // reconstructed with every (filter, radius) of the group. Groups and the
 // configurations inside them come in a fixed canonical order, so a shard
 // (--shard i/N: groups g with g mod N == i) is deterministic and keeps the
@@ -26,6 +26,9 @@ struct StudyConfig {
   std::vector<std::string> filters = {"box", "tent", "gaussian"};
   std::vector<double> radii = {0.5, 1.0, 1.5};      ///< support radii in pixels, each > 0
   std::vector<std::string> reconstruction = {"weighted"};  ///< weighted|classic|importance|supersample
+  /// none|footprint: texture pre-filtering over each hit's pixel footprint
+  /// (render/tracer.h); the references are always un-prefiltered.
+  std::vector<std::string> prefilter = {"none"};
   bool classicBox = true;   ///< also box at r = 0.5 when box is listed and 0.5 is not a radius
   int seeds = 8;            ///< K independent seeds per configuration (>= 2)
   int refSpp = 1024;        ///< samples per pixel of the references
@@ -52,12 +55,13 @@ struct Configuration {
   ReconMode mode = ReconMode::WeightedAverage;
 };
 
-/// The K sample sets of one (scene, sampler, spp) and the rows made from them.
+/// The K sample sets of one (scene, sampler, spp, prefilter) and the rows made from them.
 struct SampleSetGroup {
   int index = 0;          ///< canonical position among all groups (for sharding)
   std::string scene;      ///< scene file path
   std::string sampler;
   int spp = 0;
+  std::string prefilter = "none";  ///< none | footprint
   std::vector<Configuration> configs;
 };
 
@@ -71,6 +75,11 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
 
 /// The groups of this shard.
 std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count);
+
+/// Checks a --prefilter value: "none" or "footprint" (the values of the CSV
+/// column prefilter); returns whether it asks for pre-filtering. Throws
+/// OptionError(option) naming the valid values.
+bool parsePrefilter(const std::string& name, const std::string& option = "--prefilter");
 
 /// Every distinct (filter, radius) of the study, in canonical order.
 std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config);

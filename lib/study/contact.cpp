@@ -21,7 +21,7 @@ namespace fs = std::filesystem;
 
 std::string configurationImageBase(const CsvRow& r) {
   return r.sampler + "-spp" + std::to_string(r.spp) + "-" + r.filter + "-r" + formatNumber(r.radius) + "-" +
-         r.reconstruction;
+         r.reconstruction + (r.prefilter == "none" ? "" : "-prefilter-" + r.prefilter);
 }
 
 void writeConfigurationImages(const std::string& dir, const std::string& base, const Image& seed0,
@@ -201,6 +201,8 @@ void writeContactSheets(const std::string& csvPath, const std::string& imagesDir
   for (const std::string& line : readCsvLines(csvPath)) rows.push_back(splitCsvLine(line));
   for (const auto& f : rows)
     if (f[8] == "weighted") maxSpp[f[0]] = std::max(maxSpp[f[0]], std::stoi(f[4]));
+  const size_t prefilter = csvColumn("prefilter");
+  std::erase_if(rows, [&](const auto& f) { return f[prefilter] != "none"; });  // sheets compare plain sampling
   for (const auto& f : rows) {
     if (f[8] != "weighted" || std::stoi(f[4]) != maxSpp[f[0]]) continue;
     CsvRow r;

@@ -24,7 +24,8 @@ const std::vector<std::string>& csvColumns() {
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
-      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp"};
+      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
+      "prefilter"};
   return cols;
 }
 
@@ -35,6 +36,13 @@ const std::string& csvHeader() {
     return h;
   }();
   return header;
+}
+
+size_t csvColumn(const std::string& name) {
+  const auto& cols = csvColumns();
+  const auto it = std::find(cols.begin(), cols.end(), name);
+  if (it == cols.end()) throw std::out_of_range("no CSV column '" + name + "'");
+  return static_cast<size_t>(it - cols.begin());
 }
 
 std::vector<size_t> csvTimingColumns() { return {21, 22}; }
@@ -54,9 +62,10 @@ std::string quoted(const std::string& s) {
 
 std::string joinKey(const std::vector<std::string>& f) {
   static const int cols[] = {kScene, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds, kRefSpp, kTarget};
+  static const size_t prefilter = csvColumn("prefilter");
   std::string key;
   for (int c : cols) key += f[c] + '\x1f';
-  return key;
+  return key + f[prefilter] + '\x1f';
 }
 
 double num(const std::string& s) {
@@ -74,7 +83,8 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.target) << ',' << real(r.mseTarget) << ','
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
     << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
-    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp;
+    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp << ','
+    << quoted(r.prefilter);
   return s.str();
 }
 
@@ -134,10 +144,12 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
   };
   std::vector<Item> items;
   for (std::string& l : lines) items.push_back({splitCsvLine(l), std::move(l)});
+  static const size_t kPrefilter = csvColumn("prefilter");
   auto order = [](const Item& a) {
     const auto& f = a.f;
-    return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kFilter], num(f[kRadius]), f[kRecon],
-                           num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams], f[kTarget]);
+    return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kPrefilter], f[kFilter], num(f[kRadius]),
+                           f[kRecon], num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams],
+                           f[kTarget]);
   };
   std::erase_if(items, [](const Item& i) { return i.f.size() != csvColumns().size(); });
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return order(a) < order(b); });

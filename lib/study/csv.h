@@ -7,14 +7,14 @@
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
 //   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
 //   lowfreq_error,lowfreq_error_se,blurred_mse (study/spectrum.h),
-//   mean_spp,max_spp
+//   mean_spp,max_spp,prefilter
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
 // fixed sampler and differ for adaptive ones, render/adaptive.h.)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
-// ref_spp, target): a rerun skips configurations whose key is already in the file.
+// ref_spp, target, prefilter): a rerun skips configurations whose key is already in the file.
 // CsvAppender opens an existing file for resumption: it checks the header,
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
@@ -51,12 +51,15 @@ struct CsvRow {
   double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< study/spectrum.h
   double meanSpp = 0;  ///< mean samples per pixel actually spent (over pixels and seeds)
   int maxSpp = 0;      ///< most samples in one pixel (over seeds)
+  std::string prefilter = "none";  ///< none | footprint (texture pre-filtering, docs/prefiltering.md)
 };
 
 /// The header line (no newline).
 const std::string& csvHeader();
 /// Column names in order.
 const std::vector<std::string>& csvColumns();
+/// Index of the column `name` in csvColumns(); throws std::out_of_range when there is none.
+size_t csvColumn(const std::string& name);
 /// Indices of the timing columns (trace_ms, reconstruct_ms), which may differ between runs.
 std::vector<size_t> csvTimingColumns();
 

@@ -146,7 +146,7 @@ SpectrumMetrics SpectrumAccumulator::result() const {
 
 // ---------------------------------------------------------------------------
 const std::string& spectrumCsvHeader() {
-  static const std::string h = "scene,sampler,spp,filter,radius,reconstruction,kind,bin,frequency,power,energy";
+  static const std::string h = "scene,sampler,spp,filter,radius,reconstruction,prefilter,kind,bin,frequency,power,energy";
   return h;
 }
 

@@ -94,7 +94,7 @@ class SpectrumAccumulator {
 };
 
 /// Appends the spectra of one configuration to a long-format CSV with the header
-///   scene,sampler,spp,filter,radius,reconstruction,kind,bin,frequency,power,energy
+///   scene,sampler,spp,filter,radius,reconstruction,prefilter,kind,bin,frequency,power,energy
 /// (kind = error or noise; one line per bin), creating it with the header when missing. One write per
 /// call; a torn last line from a killed run is cut first. Throws FileError.
 void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m);

@@ -62,6 +62,7 @@ CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGro
   r.reconstruction = toString(cfg.mode);
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
   r.target = targetLabel(c.target);
+  r.prefilter = g.prefilter;
   return r;
 }
 
@@ -184,6 +185,13 @@ SweepSummary runSweep(const StudyConfig& config) {
 
     for (size_t g = gi; g < gend; ++g) {
       const SampleSetGroup& group = groups[g];
+      // Pre-filtered groups trace with the same scene and flags, footprints on
+      // (1/sqrt(spp) pixels a side); references never do.
+      TraceOptions prefilterOptions = scene->tracer->options();
+      prefilterOptions.prefilter = true;
+      prefilterOptions.footprintPixels = 1.f / std::sqrt(static_cast<float>(group.spp));
+      const Tracer prefilterTracer(scene->scene, *scene->aggregate, prefilterOptions);
+      const Tracer& tracer = parsePrefilter(group.prefilter) ? prefilterTracer : *scene->tracer;
       auto& rows = pending[g - gi];
       double advanced = 0;
       auto step = [&] { progress.advance(1), advanced += 1; };
@@ -215,18 +223,18 @@ SweepSummary runSweep(const StudyConfig& config) {
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
         };
         if (shared) {
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = tracer.counters().primary.load();
           auto t0 = Clock::now();
           const SampleBuffer samples =
-              adaptive ? traceAdaptive(*scene->tracer, *makeAdaptiveSampler(group.sampler, group.spp, uint64_t(k)),
+              adaptive ? traceAdaptive(tracer, *makeAdaptiveSampler(group.sampler, group.spp, uint64_t(k)),
                                        scene->width, scene->height, threads)
-                       : traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
+                       : traceSamples(tracer, *sampler, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
           const SpentSamples spent = spentSamples(samples);
           meanSpp = (k == 0 ? 0.0 : meanSpp) + spent.mean / config.seeds;
           maxSpp = k == 0 ? spent.max : std::max(maxSpp, spent.max);
           if (k == 0 && adaptive && sum.images) density0 = sampleDensity(samples);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().primary.load() - rays0;
           ++sum.sampleSetsTraced;
           // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
           std::vector<Pending*> weighted;
@@ -253,12 +261,12 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         for (Pending& p : rows) {
           if (p.mode != ReconMode::ImportanceSampled) continue;
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = tracer.counters().primary.load();
           auto t0 = Clock::now();
           const SampleBuffer samples =
-              traceImportanceSamples(*scene->tracer, *sampler, *p.filter, scene->width, scene->height, threads);
+              traceImportanceSamples(tracer, *sampler, *p.filter, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().primary.load() - rays0;
           ++sum.importanceTraces;
           t0 = Clock::now();
           Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
@@ -286,7 +294,7 @@ SweepSummary runSweep(const StudyConfig& config) {
           const std::string spectra = spectrumPath(config, r.scene);
           fs::create_directories(fs::path(spectra).parent_path());
           appendSpectrumCsv(spectra, r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
-                                         formatNumber(r.radius, "%.9g") + ',' + r.reconstruction, sm);
+                                         formatNumber(r.radius, "%.9g") + ',' + r.reconstruction + ',' + r.prefilter, sm);
           spectraWritten.insert(spectra);
         }
         r.meanSpp = meanSpp, r.maxSpp = maxSpp;

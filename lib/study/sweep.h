@@ -1,6 +1,6 @@
 // The sweep: every configuration of a StudyConfig measured into one CSV row.
 //
-// For each (scene, sampler, spp) group of this shard, in canonical order:
+// For each (scene, sampler, spp, prefilter) group of this shard, in canonical order:
 // the references of every (filter, radius) plus the pixel-area reference
 // come from the cache (or are rendered in one pass); then for each seed
 // k = 0 .. K-1 the sample set is traced ONCE (render/render.h traceSamples,
@@ -10,7 +10,9 @@
 // samples per filter (traceImportanceSamples). An adaptive sampler
 // (adaptive-<method>:<base>, render/adaptive.h) is traced by traceAdaptive
 // instead, and its sample set reconstructed the same way; mean_spp and
-// max_spp record the samples it actually spent. Each image goes straight into
+// max_spp record the samples it actually spent. Groups with prefilter
+// "footprint" trace with a second Tracer of the same scene whose options
+// turn pre-filtering on; every reference stays un-prefiltered. Each image goes straight into
 // its configuration's MetricAccumulator. When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
 // the seed-0 image, signed error and noise map are written. Each row's
