@@ -16,6 +16,8 @@
 
 namespace aliaslab {
 
+class MaterialAt;
+
 class Material {
  public:
   virtual ~Material() = default;
@@ -30,6 +32,49 @@ class Material {
   virtual float indexOfRefraction(const Vec3& p) const = 0;
   /// One line: kind and parameters; procedurals include their two materials.
   virtual std::string describe() const = 0;
+  /// Appends this material's evaluation at p to `out` (see MaterialAt): a
+  /// leaf appends itself; a procedural blend appends its weight w(p), then
+  /// the materials that weight selects (first only when w <= 0, second only
+  /// when w >= 1, else both).
+  virtual void resolve(const Vec3& p, MaterialAt& out) const;
+};
+
+/// A material evaluated once at a hit point p: what the tracer queries.
+/// Construction walks the procedural blend tree once, computing each blend
+/// weight a single time; every query then combines the leaf materials'
+/// answers with exactly the arithmetic the blends' own queries use,
+/// (1 - w) * first + w * second with pure ends passing one side through, so
+/// each answer is bit-identical to asking the material directly. Trees with
+/// more than kMaxNodes evaluated nodes fall back to the direct queries.
+class MaterialAt {
+ public:
+  MaterialAt(const Material& m, const Vec3& p);
+  Color shade(const Vec3& n, const Vec3& toViewer, const Vec3& toLight, const Color& lightColor) const;
+  Color diffuse() const;
+  Color reflective() const;
+  Color transparent() const;
+  float indexOfRefraction() const;
+
+  /// For Material::resolve: a leaf material, or a blend node followed by its selected materials.
+  void appendLeaf(const Material* leaf);
+  void appendBlend(float w);
+
+ private:
+  static constexpr int kMaxNodes = 32;
+  struct Node {
+    const Material* leaf;  ///< nullptr: a blend node with weight w
+    float w;
+  };
+  template <class Query>
+  auto evaluate(Query query) const;
+  template <class Query>
+  auto evaluate(int& i, Query query) const;
+
+  const Material* material_;
+  Vec3 p_;
+  Node nodes_[kMaxNodes];
+  int count_ = 0;
+  bool overflow_ = false;
 };
 
 /// PhongMaterial (alias Material). Blinn-Phong: for n.l > 0,

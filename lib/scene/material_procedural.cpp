@@ -47,6 +47,19 @@ class Blend : public Material {
   float indexOfRefraction(const Vec3& p) const override {
     return mix(p, [&](const Material* m) { return m->indexOfRefraction(p); });
   }
+  void resolve(const Vec3& p, MaterialAt& out) const override {
+    const Vec3 q = (textureFromWorld_ * p.homogeneous()).hnormalized();
+    const float w = weight(q);
+    out.appendBlend(w);
+    if (w <= 0.f) {
+      first_->resolve(p, out);
+    } else if (w >= 1.f) {
+      second_->resolve(p, out);
+    } else {
+      first_->resolve(p, out);
+      second_->resolve(p, out);
+    }
+  }
   std::string describe() const override {
     return pattern() + (textureFromWorld_.isIdentity() ? "" : " transformed") + " [" + first_->describe() +
            " | " + second_->describe() + "]";

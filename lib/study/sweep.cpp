@@ -189,11 +189,11 @@ SweepSummary runSweep(const StudyConfig& config) {
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
         };
         if (shared) {
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = scene->tracer->counters().total().primary;
           auto t0 = Clock::now();
           const SampleBuffer samples = traceSamples(*scene->tracer, *sampler, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += scene->tracer->counters().total().primary - rays0;
           ++sum.sampleSetsTraced;
           // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
           std::vector<Pending*> weighted;
@@ -220,12 +220,12 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         for (Pending& p : rows) {
           if (p.mode != ReconMode::ImportanceSampled) continue;
-          const uint64_t rays0 = scene->tracer->counters().primary.load();
+          const uint64_t rays0 = scene->tracer->counters().total().primary;
           auto t0 = Clock::now();
           const SampleBuffer samples =
               traceImportanceSamples(*scene->tracer, *sampler, *p.filter, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
+          sum.primaryRays += scene->tracer->counters().total().primary - rays0;
           ++sum.importanceTraces;
           t0 = Clock::now();
           Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);
