@@ -50,7 +50,8 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t1 = Clock::now();
   std::unique_ptr<Aggregate> aggregate =
       o.bruteForce ? makeBruteForce(*scene.root)
-                   : (o.grid.empty() ? makeGrid(*scene.root) : makeGrid(*scene.root, o.grid[0], o.grid[1], o.grid[2]));
+                   : (o.grid.empty() ? makeDefaultAggregate(*scene.root)  // mesh scenes: the BVH
+                                     : makeGrid(*scene.root, o.grid[0], o.grid[1], o.grid[2]));
   const auto t2 = Clock::now();
   TraceOptions to;
   to.shadows = o.shadows;

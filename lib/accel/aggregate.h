@@ -53,8 +53,9 @@ std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, 
 std::unique_ptr<Aggregate> makeBvh(const Object& root);
 
 /// The default accelerator: the BVH when the scene has triangles (measured
-/// faster than the grid on every mesh scene, results/tracing_speed.md), else
-/// the grid over its spheres and other bounded primitives, as before.
-std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root);
+/// faster than the grid on every mesh scene, closest and any hit,
+/// results/tracing_speed.md), else the grid at resolution nx x ny x nz (0 =
+/// automatic) over its spheres and other bounded primitives, as before.
+std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root, int nx = 0, int ny = 0, int nz = 0);
 
 }  // namespace aliaslab

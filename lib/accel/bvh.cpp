@@ -391,12 +391,12 @@ std::unique_ptr<Aggregate> makeBvh(const Object& root) { return std::make_unique
 
 namespace aliaslab {
 
-std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root) {
+std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root, int nx, int ny, int nz) {
   ObjectList flat;
   root.flatten(Mat4::Identity(), flat);
   for (const auto& p : flat)
     if (dynamic_cast<const Triangle*>(p.get())) return makeBvh(root);
-  return makeGrid(root);
+  return makeGrid(root, nx, ny, nz);
 }
 
 }  // namespace aliaslab
