@@ -52,6 +52,7 @@ struct alignas(16) Node4 {
 struct PreparedRay {
   const Ray* ray;
   __m128 o[3], inv[3];
+  bool negative[3];  ///< direction component < 0: the slab is entered through hi
   int kx, ky, kz;
   float sx, sy, sz;
   explicit PreparedRay(const Ray& r) : ray(&r) {
@@ -61,6 +62,7 @@ struct PreparedRay {
       if (std::abs(da) < 1e-30f) da = std::signbit(da) ? -1e-30f : 1e-30f;
       o[a] = _mm_set1_ps(r.origin[a]);
       inv[a] = _mm_set1_ps(1.f / da);
+      negative[a] = da < 0.f;
     }
     const Vec3 ad = d.cwiseAbs();
     kz = ad.x() > ad.y() ? (ad.x() > ad.z() ? 0 : 2) : (ad.y() > ad.z() ? 1 : 2);
@@ -255,11 +257,11 @@ class Bvh final : public Aggregate {
   /// result is set when child c is hit, tn[c] its entry distance.
   static int boxes(const Node4& n, const PreparedRay& r, float tmin, float tmax, float* tn) {
     __m128 lo = _mm_set1_ps(tmin), hi = _mm_set1_ps(tmax);
-    for (int a = 0; a < 3; ++a) {
-      const __m128 t0 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.lo[a]), r.o[a]), r.inv[a]);
-      const __m128 t1 = _mm_mul_ps(_mm_sub_ps(_mm_load_ps(n.hi[a]), r.o[a]), r.inv[a]);
-      lo = _mm_max_ps(lo, _mm_min_ps(t0, t1));
-      hi = _mm_min_ps(hi, _mm_max_ps(t0, t1));
+    for (int a = 0; a < 3; ++a) {  // entry through lo, exit through hi (swapped for a negative direction)
+      const float* enter = r.negative[a] ? n.hi[a] : n.lo[a];
+      const float* exit = r.negative[a] ? n.lo[a] : n.hi[a];
+      lo = _mm_max_ps(lo, _mm_mul_ps(_mm_sub_ps(_mm_load_ps(enter), r.o[a]), r.inv[a]));
+      hi = _mm_min_ps(hi, _mm_mul_ps(_mm_sub_ps(_mm_load_ps(exit), r.o[a]), r.inv[a]));
     }
     _mm_storeu_ps(tn, lo);
     return _mm_movemask_ps(_mm_cmple_ps(lo, hi));
