@@ -79,7 +79,7 @@ TEST_F(RaytracerTest, FlatColoursAtPixelCentresInPngAndExr) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("primary 256,"), std::string::npos) << r.out;  // one ray per pixel
   EXPECT_NE(r.out.find("shadow 0"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("grid"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("accelerator: bvh"), std::string::npos) << r.out;
   ASSERT_EQ(run("-input " + kScene + " -size 16 16 --threads 1 -output " + path("a.exr")).code, 0);
   const Image png = readImage(path("a.png")), exr = readImage(path("a.exr"));
   ASSERT_EQ(png.width(), 16);

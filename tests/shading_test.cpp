@@ -2,6 +2,8 @@
 // derived by hand (each expected number is worked out in the comment above it).
 #include <gtest/gtest.h>
 
+#include "core/parallel.h"
+
 #include <cmath>
 #include <cstring>
 
@@ -137,7 +139,7 @@ TEST(Shading, ShadowedPointKeepsOnlyAmbient) {
     // A slanted eye ray reaches the plane point under the sphere without touching the sphere.
     const Color got = traceRay(tracer, Vec3(-3, 1, 0), Vec3(3, -1, 0));
     expectColor(got, shadows ? Color(ambient * kd) : Color(ambient * kd + kd));
-    EXPECT_EQ(tracer.counters().shadow.load(), shadows ? 1u : 0u);
+    EXPECT_EQ(tracer.counters().total().shadow, shadows ? 1u : 0u);
   }
 }
 
@@ -172,7 +174,7 @@ TEST(Refraction, SlabExitsParallelToEntry) {
   const Color got = traceRay(tracer, Vec3(-s30 / c30, 1, 0), Vec3(s30, -c30, 0));
   const float expectedX = 1.f / (2.f * std::sqrt(2.f)) + 2.f * s30 / c30;
   expectColor(got, Color(expectedX, -3.f, 0.f), 1e-4f);
-  EXPECT_EQ(tracer.counters().refracted.load(), 2u);
+  EXPECT_EQ(tracer.counters().total().refracted, 2u);
 
   // The helper directly: out of the slab the direction equals the entry direction.
   Vec3 inside, outside;
@@ -201,7 +203,7 @@ TEST(Refraction, TotalInternalReflectionTransmitsNothing) {
     const float a = degrees * kPi / 180;
     const Color got = traceRay(tracer, Vec3(0, -0.5f, 0), Vec3(std::sin(a), std::cos(a), 0));
     expectColor(got, degrees > 41.9f ? Color::Zero() : Color::Ones());
-    EXPECT_EQ(tracer.counters().refracted.load(), degrees > 41.9f ? 0u : 1u);
+    EXPECT_EQ(tracer.counters().total().refracted, degrees > 41.9f ? 0u : 1u);
   }
 }
 
@@ -221,7 +223,7 @@ TEST(Reflection, BounceLimitAndWeightCutoff) {
     const Tracer tracer = t.finish(o);
     const float expected = 2.f - std::ldexp(1.f, -bounces);
     expectColor(traceRay(tracer, Vec3(0, 0.5f, 0), Vec3::UnitY()), Color::Constant(expected));
-    EXPECT_EQ(tracer.counters().reflected.load(), static_cast<uint64_t>(bounces));
+    EXPECT_EQ(tracer.counters().total().reflected, static_cast<uint64_t>(bounces));
   }
   // Weight 0.2: the k-th reflection has weight 2^-k and is traced only while 2^-k >= 0.2 (k = 1, 2).
   TestScene t;
@@ -231,7 +233,7 @@ TEST(Reflection, BounceLimitAndWeightCutoff) {
   o.weight = 0.2f;
   const Tracer tracer = t.finish(o);
   expectColor(traceRay(tracer, Vec3(0, 0.5f, 0), Vec3::UnitY()), Color::Constant(1.75f));
-  EXPECT_EQ(tracer.counters().reflected.load(), 2u);
+  EXPECT_EQ(tracer.counters().total().reflected, 2u);
 }
 
 // Rendering ------------------------------------------------------------------
@@ -291,6 +293,25 @@ TEST(Render, DepthAndNormalImages) {
   expectColor(depth.get(2, 1), Color::Constant(0.5f));
   const Image normals = renderNormals(tracer, 4, 3, 2);
   expectColor(normals.get(3, 2), Color(0, 1, 0));
+}
+
+// Per-thread counters lose no count: 8 threads at once (more threads than
+// cores, so they interleave) each add 20000 rays of every kind.
+TEST(TraceCounters, ExactAcrossThreads) {
+  TraceCounters counters;
+  constexpr int kThreads = 8, kEach = 20000;
+  parallelFor(kThreads, kThreads, [&](int t) {
+    for (int i = 0; i < kEach; ++i) {
+      counters.add(TraceCounters::Primary);
+      if (i % 2 == 0) counters.add(TraceCounters::Shadow);
+      if (t == 0) counters.add(TraceCounters::Refracted);
+    }
+  });
+  const RayCounts c = counters.total();
+  EXPECT_EQ(c.primary, uint64_t{kThreads} * kEach);
+  EXPECT_EQ(c.shadow, uint64_t{kThreads} * kEach / 2);
+  EXPECT_EQ(c.reflected, 0u);
+  EXPECT_EQ(c.refracted, uint64_t{kEach});
 }
 
 }  // namespace

@@ -173,5 +173,47 @@ TEST(Perlin, RangePeriodAndContinuity) {
   EXPECT_GT(hi, 0.4f);
 }
 
+// MaterialAt evaluates the blend weights once per point and must answer
+// every query bit for bit as the material itself does: nested blends of
+// Phong materials whose shade() is non-linear in their parameters (different
+// exponents), pure ends (checkerboard) and partial weights (marble, wood),
+// and a chain deeper than MaterialAt keeps (the fallback to direct queries).
+TEST(MaterialAt, EqualsDirectQueriesBitForBit) {
+  auto a = makePhong({.diffuse = Color(0.9f, 0.1f, 0.2f), .specular = Color(0.5f, 0.5f, 0.5f), .exponent = 7.f,
+                      .reflective = Color(0.1f, 0.f, 0.f), .indexOfRefraction = 1.3f});
+  auto b = makePhong({.diffuse = Color(0.1f, 0.8f, 0.3f), .specular = Color(0.2f, 0.9f, 0.1f), .exponent = 60.f,
+                      .transparent = Color(0.f, 0.4f, 0.4f), .indexOfRefraction = 1.7f});
+  Mat4 scale = Mat4::Identity();
+  scale.diagonal().head<3>().setConstant(3.f);
+  auto checker = makeCheckerboard(scale, a.get(), b.get());
+  auto marble = makeMarble(Mat4::Identity(), checker.get(), b.get(), 4, 2.f, 3.f);
+  auto wood = makeWood(scale, marble.get(), a.get(), 3, 5.f, 1.f);
+  std::vector<std::unique_ptr<Material>> chain;
+  const Material* deep = a.get();
+  for (int k = 0; k < 40; ++k) {
+    chain.push_back(makeNoise(Mat4::Identity(), deep, k % 2 ? a.get() : b.get(), 2));
+    deep = chain.back().get();
+  }
+  const Vec3 n = Vec3(0.2f, 1.f, 0.1f).normalized(), toViewer = Vec3(0.f, 1.f, 0.3f).normalized();
+  const Color light(0.8f, 0.9f, 1.f);
+  auto same = [](const Color& x, const Color& y) { return (x == y).all(); };
+  int partial = 0;
+  for (const Material* m : std::vector<const Material*>{a.get(), checker.get(), marble.get(), wood.get(), deep})
+    for (int i = 0; i < 500; ++i) {
+      const Vec3 p(4.f * toUnitFloat(hashWords(i, 1, 0)) - 2.f, 4.f * toUnitFloat(hashWords(i, 2, 0)) - 2.f,
+                   4.f * toUnitFloat(hashWords(i, 3, 0)) - 2.f);
+      const Vec3 toLight = Vec3(toUnitFloat(hashWords(i, 4, 0)) - 0.5f, 1.f, 0.3f).normalized();
+      const MaterialAt at(*m, p);
+      ASSERT_TRUE(same(at.shade(n, toViewer, toLight, light), m->shade(p, n, toViewer, toLight, light))) << i;
+      ASSERT_TRUE(same(at.diffuse(), m->diffuse(p))) << m->describe() << " at " << i;
+      ASSERT_TRUE(same(at.reflective(), m->reflective(p)));
+      ASSERT_TRUE(same(at.transparent(), m->transparent(p)));
+      ASSERT_EQ(at.indexOfRefraction(), m->indexOfRefraction(p));
+      const Color d = m->diffuse(p);
+      partial += !same(d, a->diffuse(p)) && !same(d, b->diffuse(p));
+    }
+  EXPECT_GT(partial, 100);  // the blends really mix at many of the points
+}
+
 }  // namespace
 }  // namespace aliaslab

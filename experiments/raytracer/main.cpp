@@ -52,7 +52,8 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t1 = Clock::now();
   std::unique_ptr<Aggregate> aggregate =
       o.bruteForce ? makeBruteForce(*scene.root)
-                   : (o.grid.empty() ? makeGrid(*scene.root) : makeGrid(*scene.root, o.grid[0], o.grid[1], o.grid[2]));
+                   : (o.grid.empty() ? makeDefaultAggregate(*scene.root)  // mesh scenes: the BVH
+                                     : makeGrid(*scene.root, o.grid[0], o.grid[1], o.grid[2]));
   const auto t2 = Clock::now();
   TraceOptions to;
   to.shadows = o.shadows;
@@ -77,7 +78,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t4 = Clock::now();
 
   if (o.stats) {
-    const TraceCounters& c = tracer.counters();
+    const RayCounts c = tracer.counters().total();
     const AggregateStats s = aggregate->stats();
     std::printf("scene: %s (%zu lights, %zu materials)\n", o.input.c_str(), scene.lights.size(),
                 scene.materials.size());
@@ -86,9 +87,9 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
     std::printf("  primitives %zu (unbounded %zu), cells %d x %d x %d, references %zu\n", s.primitives,
                 s.unbounded, s.cells[0], s.cells[1], s.cells[2], s.references);
     std::printf("rays: primary %llu, shadow %llu, reflected %llu, refracted %llu\n",
-                static_cast<unsigned long long>(c.primary.load()), static_cast<unsigned long long>(c.shadow.load()),
-                static_cast<unsigned long long>(c.reflected.load()),
-                static_cast<unsigned long long>(c.refracted.load()));
+                static_cast<unsigned long long>(c.primary), static_cast<unsigned long long>(c.shadow),
+                static_cast<unsigned long long>(c.reflected),
+                static_cast<unsigned long long>(c.refracted));
     std::printf("time: parse %.4f s, accelerator %.4f s, render %.4f s, write %.4f s, total %.4f s (%d threads)\n",
                 seconds(t0, t1), seconds(t1, t2), seconds(t2, t3), seconds(t3, t4), seconds(t0, t4),
                 resolveThreads(o.threads));

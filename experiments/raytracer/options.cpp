@@ -61,7 +61,7 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--bounces", o.bounces, "maximum reflection/refraction depth (default 0)");
   app.add_option("--weight", o.weight, "stop rays whose accumulated weight falls below w (default 0)");
   app.add_flag("--shade_back", o.shadeBack, "shade back faces like front faces");
-  app.add_option("--grid", o.grid, "uniform grid resolution nx ny nz (default: automatic)")->expected(3);
+  app.add_option("--grid", o.grid, "use a uniform grid of nx ny nz cells (default: a BVH for scenes with triangles, else an automatic grid)")->expected(3);
   app.add_flag("--brute-force", o.bruteForce, "test every primitive instead of using the grid");
   app.add_option("--depth", o.depth, "depth image: dmin dmax file")->expected(3);
   app.add_option("--normals", o.normals, "normal image file");

@@ -36,7 +36,7 @@ void forEachTile(int width, int height, int threads, const Progress& progress, P
 bool primaryHit(const Tracer& tracer, int i, int j, int width, int height, Hit& hit) {
   const Camera& camera = *tracer.scene().camera;
   const Ray ray = camera.generateRay(filmToScreen(i + 0.5f, j + 0.5f, width, height));
-  tracer.counters().primary.fetch_add(1, std::memory_order_relaxed);
+  tracer.counters().add(TraceCounters::Primary);
   hit = Hit{};
   return tracer.aggregate().intersect(ray, camera.tMin(), hit);
 }

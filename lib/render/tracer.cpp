@@ -67,6 +67,19 @@ RayFootprint primaryFootprint(const Camera& camera, float fx, float fy, int widt
   return f;
 }
 
+void TraceCounters::add(Kind kind) const {
+  static std::atomic<unsigned> nextSlot{0};
+  thread_local const unsigned slot = nextSlot.fetch_add(1, std::memory_order_relaxed) % kSlots;
+  slots_[slot].n[kind].fetch_add(1, std::memory_order_relaxed);
+}
+
+RayCounts TraceCounters::total() const {
+  uint64_t n[4] = {0, 0, 0, 0};
+  for (const Slot& s : slots_)
+    for (int k = 0; k < 4; ++k) n[k] += s.n[k].load(std::memory_order_relaxed);
+  return {n[Primary], n[Shadow], n[Reflected], n[Refracted]};
+}
+
 Tracer::Tracer(const Scene& scene, const Aggregate& aggregate, const TraceOptions& options)
     : scene_(scene), aggregate_(aggregate), options_(options) {}
 
@@ -75,7 +88,6 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
   hit = Hit{};
   if (!aggregate_.intersect(ray, tmin, hit)) return scene_.background;
 
-  const Material& m = hit.material ? *hit.material : defaultMaterial();
   const Vec3 d = ray.direction.normalized();
   SurfacePoint p(ray.at(hit.t));
   RayFootprint cone;  // of the secondary rays: starts at this footprint, widens as the primary ray did
@@ -87,6 +99,7 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
                       : footprint->spread;
   }
   const RayFootprint* secondary = footprint ? &cone : nullptr;
+  const MaterialAt m(hit.material ? *hit.material : defaultMaterial(), p);  // blend weights once per hit
   const bool backFace = d.dot(hit.normal) > 0.f;
   const Vec3 n = (options_.shadeBack && backFace) ? Vec3(-hit.normal) : hit.normal;
   const float eps = options_.epsilon;
@@ -94,9 +107,9 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
   // Local light: ambient + each visible light, or flat colour without lights
   Color color;
   if (scene_.lights.empty()) {
-    color = m.diffuse(p);
+    color = m.diffuse();
   } else {
-    color = scene_.ambient * m.diffuse(p);
+    color = scene_.ambient * m.diffuse();
     for (const auto& light : scene_.lights) {
       Vec3 toLight;
       Color lightColor;
@@ -104,35 +117,35 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
       light->illuminate(p.p, toLight, lightColor, distance);
       if (!(n.dot(toLight) > 0.f)) continue;
       if (options_.shadows) {
-        counters_.shadow.fetch_add(1, std::memory_order_relaxed);
+        counters_.add(TraceCounters::Shadow);
         const Ray shadowRay{p.p + eps * n, toLight};
         if (aggregate_.occluded(shadowRay, 0.f, distance)) continue;
       }
-      color += m.shade(p, n, -d, toLight, lightColor);
+      color += m.shade(n, -d, toLight, lightColor);
     }
   }
   if (depth >= options_.bounces) return color;
 
   // Mirror reflection
-  const Color reflective = m.reflective(p);
+  const Color reflective = m.reflective();
   const float reflectWeight = weight * maxComponent(reflective);
   if (maxComponent(reflective) > 0.f && reflectWeight >= options_.weight) {
-    counters_.reflected.fetch_add(1, std::memory_order_relaxed);
+    counters_.add(TraceCounters::Reflected);
     Hit h;
     const Ray r{p.p, mirrorDirection(d, n)};
     color += reflective * trace(r, eps, depth + 1, reflectWeight, ior, h, secondary);
   }
 
   // Refraction: the geometric face decides entering (1 -> ior) or leaving (ior -> 1)
-  const Color transparent = m.transparent(p);
+  const Color transparent = m.transparent();
   const float refractWeight = weight * maxComponent(transparent);
   if (maxComponent(transparent) > 0.f && refractWeight >= options_.weight) {
-    const float materialIor = m.indexOfRefraction(p);
+    const float materialIor = m.indexOfRefraction();
     const Vec3 facing = backFace ? Vec3(-hit.normal) : hit.normal;
     const float eta = backFace ? materialIor : 1.f / materialIor;
     Vec3 t;
     if (refractDirection(d, facing, eta, t)) {
-      counters_.refracted.fetch_add(1, std::memory_order_relaxed);
+      counters_.add(TraceCounters::Refracted);
       Hit h;
       const Ray r{p.p, t};
       color += transparent * trace(r, eps, depth + 1, refractWeight, backFace ? 1.f : materialIor, h, secondary);
@@ -144,7 +157,7 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
 Color Tracer::radianceAt(float fx, float fy, int width, int height) const {
   if (!scene_.camera) throw InputError(scene_.path + ": the scene has no camera");
   const Ray ray = scene_.camera->generateRay(filmToScreen(fx, fy, width, height));
-  counters_.primary.fetch_add(1, std::memory_order_relaxed);
+  counters_.add(TraceCounters::Primary);
   Hit hit;
   if (options_.prefilter) {
     const RayFootprint footprint = primaryFootprint(*scene_.camera, fx, fy, width, height, options_.footprintPixels);

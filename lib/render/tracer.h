@@ -52,9 +52,30 @@ struct TraceOptions {
   std::string describe() const;
 };
 
-/// Ray counts for -stats (relaxed atomics; totals do not affect images).
-struct TraceCounters {
-  std::atomic<uint64_t> primary{0}, shadow{0}, reflected{0}, refracted{0};
+/// Ray totals, as -stats and the sweep's summary report them.
+struct RayCounts {
+  uint64_t primary = 0, shadow = 0, reflected = 0, refracted = 0;
+};
+
+/// Ray counters written by many threads, summed only when asked for.
+/// Each thread counts into its own cache-line-sized slot (threads take
+/// slots round-robin, so threads running at the same time do not share one
+/// unless there are more than kSlots), and total() adds the slots up. The
+/// slots are relaxed atomics, so counts are exact even when two threads do
+/// share a slot; what is avoided is every thread writing the same cache line
+/// for every ray. Totals never affect images.
+class TraceCounters {
+ public:
+  enum Kind { Primary, Shadow, Reflected, Refracted };
+  void add(Kind kind) const;
+  RayCounts total() const;
+
+ private:
+  static constexpr int kSlots = 64;
+  struct alignas(64) Slot {
+    std::atomic<uint64_t> n[4] = {0, 0, 0, 0};
+  };
+  mutable Slot slots_[kSlots];
 };
 
 /// Mirror direction of d about the normal n (either orientation of n).
@@ -105,13 +126,13 @@ class Tracer {
   const Scene& scene() const { return scene_; }
   const Aggregate& aggregate() const { return aggregate_; }
   const TraceOptions& options() const { return options_; }
-  TraceCounters& counters() const { return counters_; }
+  const TraceCounters& counters() const { return counters_; }
 
  private:
   const Scene& scene_;
   const Aggregate& aggregate_;
   TraceOptions options_;
-  mutable TraceCounters counters_;
+  TraceCounters counters_;
 };
 
 }  // namespace aliaslab

@@ -34,6 +34,7 @@ struct SurfacePoint {
   SurfacePoint(const Vec3& point, const Vec3& dx, const Vec3& dy) : p(point), dpdx(dx), dpdy(dy) {}
   bool hasFootprint() const { return !(dpdx.isZero(0.f) && dpdy.isZero(0.f)); }
 };
+class MaterialAt;
 
 class Material {
  public:
@@ -49,6 +50,50 @@ class Material {
   virtual float indexOfRefraction(const SurfacePoint& p) const = 0;
   /// One line: kind and parameters; procedurals include their two materials.
   virtual std::string describe() const = 0;
+  /// Appends this material's evaluation at p to `out` (see MaterialAt): a
+  /// leaf appends itself; a procedural blend appends its weights (a, b) of
+  /// its first and second material at p (footprint included), then the
+  /// materials they select (first only when b <= 0, second only when a <= 0,
+  /// else both).
+  virtual void resolve(const SurfacePoint& p, MaterialAt& out) const;
+};
+
+/// A material evaluated once at a hit point p: what the tracer queries.
+/// Construction walks the procedural blend tree once, computing each blend
+/// weight a single time; every query then combines the leaf materials'
+/// answers with exactly the arithmetic the blends' own queries use,
+/// a * first + b * second with pure ends passing one side through, so
+/// each answer is bit-identical to asking the material directly. Trees with
+/// more than kMaxNodes evaluated nodes fall back to the direct queries.
+class MaterialAt {
+ public:
+  MaterialAt(const Material& m, const SurfacePoint& p);
+  Color shade(const Vec3& n, const Vec3& toViewer, const Vec3& toLight, const Color& lightColor) const;
+  Color diffuse() const;
+  Color reflective() const;
+  Color transparent() const;
+  float indexOfRefraction() const;
+
+  /// For Material::resolve: a leaf material, or a blend node followed by its selected materials.
+  void appendLeaf(const Material* leaf);
+  void appendBlend(float first, float second);
+
+ private:
+  static constexpr int kMaxNodes = 32;
+  struct Node {
+    const Material* leaf;  ///< nullptr: a blend node with these weights of its two materials
+    float first, second;
+  };
+  template <class Query>
+  auto evaluate(Query query) const;
+  template <class Query>
+  auto evaluate(int& i, Query query) const;
+
+  const Material* material_;
+  SurfacePoint p_;
+  Node nodes_[kMaxNodes];
+  int count_ = 0;
+  bool overflow_ = false;
 };
 
 /// PhongMaterial (alias Material). Blinn-Phong: for n.l > 0,

@@ -23,23 +23,24 @@ class Blend : public Material {
   }
 
  private:
+  // The weights at s: the point formula, or averaged over s's footprint.
+  Weights weightsAt(const SurfacePoint& s) const {
+    const Vec4 h = textureFromWorld_ * s.p.homogeneous();
+    const Vec3 q = h.hnormalized();
+    if (!s.hasFootprint()) return weights(q, nullptr);
+    // texture-space footprint: the derivative of q = h.xyz / h.w along each axis
+    auto axis = [&](const Vec3& d) {
+      const Vec4 dh = textureFromWorld_.leftCols<3>() * d;
+      return Vec3((dh.head<3>() - q * dh.w()) / h.w());
+    };
+    const TextureFootprint fp{axis(s.dpdx), axis(s.dpdy)};
+    return weights(q, &fp);
+  }
+
   // Pure ends skip the other material entirely (checkerboards, clamped noise).
   template <class Query>
   auto mix(const SurfacePoint& s, Query query) const {
-    const Vec4 h = textureFromWorld_ * s.p.homogeneous();
-    const Vec3 q = h.hnormalized();
-    Weights w;
-    if (s.hasFootprint()) {
-      // texture-space footprint: the derivative of q = h.xyz / h.w along each axis
-      auto axis = [&](const Vec3& d) {
-        const Vec4 dh = textureFromWorld_.leftCols<3>() * d;
-        return Vec3((dh.head<3>() - q * dh.w()) / h.w());
-      };
-      const TextureFootprint fp{axis(s.dpdx), axis(s.dpdy)};
-      w = weights(q, &fp);
-    } else {
-      w = weights(q, nullptr);
-    }
+    const Weights w = weightsAt(s);
     if (w.second <= 0.f) return query(first_);
     if (w.first <= 0.f) return query(second_);
     return decltype(query(first_))(w.first * query(first_) + w.second * query(second_));
@@ -61,6 +62,18 @@ class Blend : public Material {
   }
   float indexOfRefraction(const SurfacePoint& p) const override {
     return mix(p, [&](const Material* m) { return m->indexOfRefraction(p); });
+  }
+  void resolve(const SurfacePoint& p, MaterialAt& out) const override {  // as mix() selects
+    const Weights w = weightsAt(p);
+    out.appendBlend(w.first, w.second);
+    if (w.second <= 0.f) {
+      first_->resolve(p, out);
+    } else if (w.first <= 0.f) {
+      second_->resolve(p, out);
+    } else {
+      first_->resolve(p, out);
+      second_->resolve(p, out);
+    }
   }
   std::string describe() const override {
     return pattern() + (textureFromWorld_.isIdentity() ? "" : " transformed") + " [" + first_->describe() +

@@ -112,7 +112,7 @@ std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width, i
 
   s->scene = parseScene(path);
   const int* g = s->line.grid;
-  s->aggregate = makeGrid(*s->scene.root, g[0], g[1], g[2]);
+  s->aggregate = makeDefaultAggregate(*s->scene.root, g[0], g[1], g[2]);  // mesh scenes: the BVH
   s->tracer = std::make_unique<Tracer>(s->scene, *s->aggregate, s->line.options);
 
   // Content hash: scene bytes, OBJ bytes, size, tracing flags.

@@ -223,7 +223,7 @@ SweepSummary runSweep(const StudyConfig& config) {
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
         };
         if (shared) {
-          const uint64_t rays0 = tracer.counters().primary.load();
+          const uint64_t rays0 = tracer.counters().total().primary;
           auto t0 = Clock::now();
           const SampleBuffer samples =
               adaptive ? traceAdaptive(tracer, *makeAdaptiveSampler(group.sampler, group.spp, uint64_t(k)),
@@ -234,7 +234,7 @@ SweepSummary runSweep(const StudyConfig& config) {
           meanSpp = (k == 0 ? 0.0 : meanSpp) + spent.mean / config.seeds;
           maxSpp = k == 0 ? spent.max : std::max(maxSpp, spent.max);
           if (k == 0 && adaptive && sum.images) density0 = sampleDensity(samples);
-          sum.primaryRays += tracer.counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().total().primary - rays0;
           ++sum.sampleSetsTraced;
           // weighted-average rows in one Accumulator pass (shared footprints per radius), the rest one by one
           std::vector<Pending*> weighted;
@@ -261,12 +261,12 @@ SweepSummary runSweep(const StudyConfig& config) {
         }
         for (Pending& p : rows) {
           if (p.mode != ReconMode::ImportanceSampled) continue;
-          const uint64_t rays0 = tracer.counters().primary.load();
+          const uint64_t rays0 = tracer.counters().total().primary;
           auto t0 = Clock::now();
           const SampleBuffer samples =
               traceImportanceSamples(tracer, *sampler, *p.filter, scene->width, scene->height, threads);
           const double traceMs = msSince(t0);
-          sum.primaryRays += tracer.counters().primary.load() - rays0;
+          sum.primaryRays += tracer.counters().total().primary - rays0;
           ++sum.importanceTraces;
           t0 = Clock::now();
           Reconstruction r = reconstruct(samples, *p.filter, p.mode, threads);

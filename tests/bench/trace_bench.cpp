@@ -1,5 +1,13 @@
 // Primary closest-hit queries per second on every scenes/*.txt: the grid,
-// brute force and (with -DALIASLAB_EMBREE=ON) Embree's rtcIntersect1.
+// the BVH, brute force and (with -DALIASLAB_EMBREE=ON) Embree's
+// rtcIntersect1; any-hit (shadow) queries: grid, BVH and rtcOccluded1;
+// build times of the grid and the BVH.
+//
+// Shadow rays: from the hit point of every 4th primary ray that hits
+// (offset 1e-3 along the normal, towards the light) to each scene light,
+// tmax = the light's distance; scenes without lights use a point light
+// above the scene's box. For same-run ratios run with
+// --benchmark_repetitions=N --benchmark_enable_random_interleaving=true.
 //
 // Rays: 200 x 200 pixels, 16 jittered samples per pixel (a 4 x 4 grid of
 // strata, offsets hashed from (pixel, sample, dimension)), through
@@ -18,6 +26,8 @@
 
 #include "accel/aggregate.h"
 #include "core/hash.h"
+#include "geometry/primitives.h"
+#include "scene/light.h"
 #include "scene/scene.h"
 #ifdef ALIASLAB_HAVE_EMBREE
 #include <embree3/rtcore.h>
@@ -28,10 +38,16 @@ namespace {
 
 constexpr int kSize = 200, kStrata = 4, kSpp = kStrata * kStrata;
 
+struct ShadowRay {
+  Ray ray;
+  float tmax;
+};
+
 struct Workload {
   Scene scene;
-  std::unique_ptr<Aggregate> grid, brute;
+  std::unique_ptr<Aggregate> grid, brute, bvh;
   std::vector<Ray> rays;  ///< pixel-major, kSpp per pixel
+  std::vector<ShadowRay> shadowRays;
   float tmin = 0.f;
 };
 
@@ -52,13 +68,65 @@ Workload& workload(const std::string& path) {
         const float v = (k / kStrata + toUnitFloat(hashWords(key, k, 1))) / kStrata;
         w.rays.push_back(w.scene.camera->generateRay(filmToScreen(px + u, py + v, kSize, kSize)));
       }
+  w.bvh = makeBvh(*w.scene.root);
+  // Shadow rays from the hits of every 4th primary ray
+  std::vector<std::unique_ptr<Light>> fallback;
+  const auto* lights = &w.scene.lights;
+  if (lights->empty()) {
+    ObjectList flat;
+    w.scene.root->flatten(Mat4::Identity(), flat);
+    BBox box;
+    for (const auto& p : flat)
+      if (p->bounded()) box.extend(p->bounds());
+    const Vec3 above = box.empty() ? Vec3(0, 10, 0) : Vec3(0.5f * (box.min + box.max) + Vec3(0.3f, 1.f, 0.2f) * box.extent().norm());
+    fallback.push_back(makePointLight(above, Color::Ones()));
+    lights = &fallback;
+  }
+  for (size_t i = 0; i < w.rays.size(); i += 4) {
+    Hit h;
+    if (!w.bvh->intersect(w.rays[i], w.tmin, h)) continue;
+    const Vec3 p = w.rays[i].at(h.t);
+    const Vec3 n = w.rays[i].direction.dot(h.normal) > 0.f ? Vec3(-h.normal) : h.normal;
+    for (const auto& light : *lights) {
+      Vec3 toLight;
+      Color c;
+      float distance;
+      light->illuminate(p, toLight, c, distance);
+      w.shadowRays.push_back({Ray{p + 1e-3f * n, toLight}, distance});
+    }
+  }
   return w;
 }
 
-void traceAggregate(benchmark::State& state, const std::string& path, bool useGrid) {
+/// Any-hit queries of the shadow rays.
+void occludedAggregate(benchmark::State& state, const std::string& path, bool useGrid) {
   Workload& w = workload(path);
-  const Aggregate& agg = useGrid ? *w.grid : *w.brute;
-  const size_t stride = useGrid ? 1 : kSpp;
+  const Aggregate& agg = useGrid ? *w.grid : *w.bvh;
+  size_t blocked = 0, n = 0;
+  for (auto _ : state)
+    for (const ShadowRay& s : w.shadowRays) blocked += agg.occluded(s.ray, 0.f, s.tmax), ++n;
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+  state.counters["occluded_fraction"] = static_cast<double>(blocked) / static_cast<double>(std::max<size_t>(n, 1));
+  state.SetLabel(agg.describe());
+}
+
+/// Build time of the grid (automatic resolution) or the BVH.
+void buildAggregate(benchmark::State& state, const std::string& path, bool useGrid) {
+  Workload& w = workload(path);
+  size_t nodes = 0;
+  for (auto _ : state) {
+    const auto agg = useGrid ? makeGrid(*w.scene.root) : makeBvh(*w.scene.root);
+    nodes += agg->stats().nodes + agg->stats().references;
+    benchmark::DoNotOptimize(nodes);
+  }
+}
+
+enum class Method { Grid, Brute, Bvh };
+
+void traceAggregate(benchmark::State& state, const std::string& path, Method method) {
+  Workload& w = workload(path);
+  const Aggregate& agg = method == Method::Grid ? *w.grid : method == Method::Bvh ? *w.bvh : *w.brute;
+  const size_t stride = method == Method::Brute ? kSpp : 1;
   size_t hits = 0, n = 0;
   for (auto _ : state) {
     for (size_t i = 0; i < w.rays.size(); i += stride) {
@@ -91,27 +159,42 @@ void traceFixedGrid(benchmark::State& state, const std::string& path, std::array
 }
 
 #ifdef ALIASLAB_HAVE_EMBREE
-/// Registers an Embree run when the scene's bounded primitives are all triangles.
-void traceEmbree(benchmark::State& state, const std::string& path) {
+/// The scene's flattened triangles in Embree 3 (one thread), planes kept
+/// aside and tested analytically as the grid does.
+struct EmbreeScene {
+  RTCDevice device = nullptr;
+  RTCScene scene = nullptr;
+  std::vector<const Object*> planes;
+  size_t triangles = 0;
+  bool usable = false;
+  Vec3 lo, hi;
+};
+
+EmbreeScene& embreeScene(const std::string& path) {
+  static std::map<std::string, EmbreeScene> cache;
+  auto it = cache.find(path);
+  if (it != cache.end()) return it->second;
+  EmbreeScene& e = cache[path];
   Workload& w = workload(path);
-  ObjectList flat;
+  static std::map<std::string, ObjectList> flats;  // keeps the planes alive
+  ObjectList& flat = flats[path];
   w.scene.root->flatten(Mat4::Identity(), flat);
   std::vector<float> vertices;
-  std::vector<const Object*> planes;
   for (const auto& p : flat) {
     if (const auto* t = dynamic_cast<const Triangle*>(p.get())) {
       for (const Vec3* v : {&t->a, &t->b, &t->c}) vertices.insert(vertices.end(), {v->x(), v->y(), v->z()});
     } else if (!p->bounded()) {
-      planes.push_back(p.get());
+      e.planes.push_back(p.get());
     } else {
-      state.SkipWithError("scene has non-triangle bounded primitives");
-      return;
+      return e;  // non-triangle bounded primitives: not comparable
     }
   }
-  RTCDevice device = rtcNewDevice("threads=1");
-  RTCScene scene = rtcNewScene(device);
-  RTCGeometry geom = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+  e.usable = true;
+  e.device = rtcNewDevice("threads=1");
+  e.scene = rtcNewScene(e.device);
+  RTCGeometry geom = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_TRIANGLE);
   const size_t nt = vertices.size() / 9;
+  e.triangles = nt;
   auto* vb = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
                                                          3 * sizeof(float), 3 * nt));
   std::copy(vertices.begin(), vertices.end(), vb);
@@ -119,42 +202,87 @@ void traceEmbree(benchmark::State& state, const std::string& path) {
                                                             3 * sizeof(unsigned), nt));
   for (unsigned i = 0; i < 3 * nt; ++i) ib[i] = i;
   rtcCommitGeometry(geom);
-  rtcAttachGeometry(scene, geom);
+  rtcAttachGeometry(e.scene, geom);
   rtcReleaseGeometry(geom);
-  rtcCommitScene(scene);
+  rtcCommitScene(e.scene);
+  RTCBounds b;
+  rtcGetSceneBounds(e.scene, &b);
+  e.lo = Vec3(b.lower_x, b.lower_y, b.lower_z), e.hi = Vec3(b.upper_x, b.upper_y, b.upper_z);
+  return e;
+}
+
+/// Closest hit with rtcIntersect1 when the scene's bounded primitives are all triangles.
+void traceEmbree(benchmark::State& state, const std::string& path) {
+  Workload& w = workload(path);
+  EmbreeScene& e = embreeScene(path);
+  if (!e.usable) {
+    state.SkipWithError("scene has non-triangle bounded primitives");
+    return;
+  }
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
-
+  const size_t nt = e.triangles;
   // Whole-line rays (tmin = -inf) start far behind the scene instead
-  RTCBounds b;
-  rtcGetSceneBounds(scene, &b);
-  const Vec3 lo(b.lower_x, b.lower_y, b.lower_z), hi(b.upper_x, b.upper_y, b.upper_z);
   size_t hits = 0, n = 0;
   for (auto _ : state) {
     for (const Ray& r0 : w.rays) {
       Ray r = r0;
       float tmin = w.tmin;
       if (tmin == -kInf && nt > 0) {
-        const float back = ((r.origin - 0.5f * (lo + hi)).norm() + (hi - lo).norm()) / r.direction.norm();
+        const float back = ((r.origin - 0.5f * (e.lo + e.hi)).norm() + (e.hi - e.lo).norm()) / r.direction.norm();
         r.origin -= back * r.direction;
         tmin = 0.f;
       }
       Hit h;
-      for (const Object* p : planes) p->intersect(r, tmin, h);
+      for (const Object* p : e.planes) p->intersect(r, tmin, h);
       RTCRayHit rh;
       rh.ray = {r.origin.x(), r.origin.y(), r.origin.z(), std::max(tmin, 0.f), r.direction.x(), r.direction.y(), r.direction.z(),
                 0.f, std::min(h.t, std::numeric_limits<float>::max()), 0xffffffffu, 0, 0};
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      if (nt > 0) rtcIntersect1(scene, &context, &rh);
+      if (nt > 0) rtcIntersect1(e.scene, &context, &rh);
       hits += (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID || h.found());
       ++n;
     }
   }
   state.SetItemsProcessed(static_cast<int64_t>(n));
   state.counters["hit_fraction"] = static_cast<double>(hits) / static_cast<double>(n);
-  state.SetLabel("embree 3, " + std::to_string(nt) + " triangles + " + std::to_string(planes.size()) + " planes");
-  rtcReleaseScene(scene);
-  rtcReleaseDevice(device);
+  state.SetLabel("embree 3, " + std::to_string(nt) + " triangles + " + std::to_string(e.planes.size()) + " planes");
+}
+
+/// Any hit with rtcOccluded1 on the same shadow rays (planes first, analytically).
+void occludedEmbree(benchmark::State& state, const std::string& path) {
+  Workload& w = workload(path);
+  EmbreeScene& e = embreeScene(path);
+  if (!e.usable) {
+    state.SkipWithError("scene has non-triangle bounded primitives");
+    return;
+  }
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  size_t blocked = 0, n = 0;
+  for (auto _ : state)
+    for (const ShadowRay& s : w.shadowRays) {
+      ++n;
+      bool hit = false;
+      for (const Object* p : e.planes) {
+        Hit h;
+        h.t = s.tmax;
+        if (p->intersect(s.ray, 0.f, h)) {
+          hit = true;
+          break;
+        }
+      }
+      if (!hit && e.triangles > 0) {
+        const Ray& r = s.ray;
+        RTCRay ray{r.origin.x(), r.origin.y(), r.origin.z(), 0.f, r.direction.x(), r.direction.y(), r.direction.z(),
+                   0.f, std::min(s.tmax, std::numeric_limits<float>::max()), 0xffffffffu, 0, 0};
+        rtcOccluded1(e.scene, &context, &ray);
+        hit = ray.tfar < 0.f;
+      }
+      blocked += hit;
+    }
+  state.SetItemsProcessed(static_cast<int64_t>(n));
+  state.counters["occluded_fraction"] = static_cast<double>(blocked) / static_cast<double>(std::max<size_t>(n, 1));
 }
 #endif
 
@@ -167,13 +295,19 @@ const bool registered = [] {
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     const std::string name = f.stem().string(), path = f.string();
-    benchmark::RegisterBenchmark(("Trace/grid/" + name).c_str(), traceAggregate, path, true)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Trace/brute/" + name).c_str(), traceAggregate, path, false)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Trace/grid/" + name).c_str(), traceAggregate, path, Method::Grid)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Trace/bvh/" + name).c_str(), traceAggregate, path, Method::Bvh)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Trace/brute/" + name).c_str(), traceAggregate, path, Method::Brute)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Occluded/grid/" + name).c_str(), occludedAggregate, path, true)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Occluded/bvh/" + name).c_str(), occludedAggregate, path, false)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Build/grid/" + name).c_str(), buildAggregate, path, true)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Build/bvh/" + name).c_str(), buildAggregate, path, false)->Unit(benchmark::kMillisecond);
     if (name == "vase")  // the former automatic resolution (3 cbrt(N) along the longest axis)
       benchmark::RegisterBenchmark("Trace/grid_34x48x34/vase", traceFixedGrid, path, std::array{34, 48, 34})
           ->Unit(benchmark::kMillisecond);
 #ifdef ALIASLAB_HAVE_EMBREE
     benchmark::RegisterBenchmark(("Trace/embree/" + name).c_str(), traceEmbree, path)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Occluded/embree/" + name).c_str(), occludedEmbree, path)->Unit(benchmark::kMillisecond);
 #endif
   }
   return true;
