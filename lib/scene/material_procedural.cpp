@@ -24,7 +24,7 @@ class Blend : public Material {
 
  private:
   // The weights at s: the point formula, or averaged over s's footprint.
-  Weights weightsAt(const SurfacePoint& s) const {
+  auto weightsAt(const SurfacePoint& s) const {  // -> Weights (declared below)
     const Vec4 h = textureFromWorld_ * s.p.homogeneous();
     const Vec3 q = h.hnormalized();
     if (!s.hasFootprint()) return weights(q, nullptr);
