@@ -377,6 +377,24 @@ TEST(Visualize, RenderFilterReproducesClassicTentPicture) {
   EXPECT_TRUE((img.get(57, 180) == Color(0, 0, 1)).all());   // last grid row
 }
 
+TEST(Visualize, RenderFilterSignedDrawsEvalCutAtTheRadiusAboveAColourBar) {
+  auto f = makeFilter("gaussian", 1.f, {{"sigma", 1.0}});
+  const Image img = renderFilterSigned(*f, 9, 9, 20);
+  ASSERT_EQ(img.width(), std::max(181, kColorBarMinWidth));
+  ASSERT_EQ(img.height(), 181 + kColorBarHeight);
+  const int b = kColorBarHeight;
+  // offset (0.55, 0.55) from (4.5, 4.5): d = 0.78 inside, weight exp(-d^2 / 2), shown as sqrt of it
+  const float w = std::exp(-0.5f * (0.55f * 0.55f * 2));
+  EXPECT_NEAR(img.get(101, b + 101)[1], 1 - std::sqrt(w), 1e-5);
+  EXPECT_NEAR(img.get(101, b + 101)[0], 1, 1e-6);
+  EXPECT_TRUE((img.get(112, b + 101) == Color(1, 1, 1)).all());  // offset (1.1, 0.55): beyond r = 1, white
+  EXPECT_TRUE((img.get(100, b + 57) == Color::Constant(0.55f)).all());  // grid column
+  // the bar runs blue (left) through white to red (right)
+  const int barRow = kColorBarHeight - 1 - 8;
+  EXPECT_TRUE((img.get(4, barRow) == Color(0, 0, 1)).all());
+  EXPECT_TRUE((img.get(img.width() - 5, barRow) == Color(1, 0, 0)).all());
+}
+
 TEST(Visualize, RenderSamplesPutsEachSampleInItsPixel) {
   const SampleBuffer b = makeSamples(3, 2, 2, 4, noisy);
   const Image img = renderSamples(b, 10);

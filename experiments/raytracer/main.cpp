@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
   try {
     validateRaytracerOptions(app, o);
     const SamplingPlan plan = makeSamplingPlan(app, o);
+    if (!plan.note.empty()) std::cerr << "raytracer: note: " << plan.note << "\n";
     if (!plan.sampler->warning().empty()) std::cerr << "raytracer: warning: " << plan.sampler->warning() << "\n";
     return run(o, plan);
   } catch (const OptionError& e) {
