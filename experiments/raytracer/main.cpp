@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "accel/aggregate.h"
+#include "core/cli.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
@@ -97,6 +98,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
 int main(int argc, char** argv) {
   CLI::App app{"raytracer: render a classic course scene file (aliaslab)", "raytracer"};
   RaytracerOptions o;
+  setupCommandLine(app, "raytracer", false);  // defaults stated in words: zero values mean "off"
   addRaytracerOptions(app, o);
   try {
     std::vector<std::string> args = translateClassicFlags(argc, argv);
@@ -106,6 +108,8 @@ int main(int argc, char** argv) {
     std::cerr << "raytracer: " << e.what() << "\nRun with --help for the options.\n";
     return 2;
   } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "raytracer: " << classicMessage(e.what()) << "\nRun with --help for the options.\n";

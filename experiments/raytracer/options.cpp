@@ -92,7 +92,10 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
                  "filter support radius in pixels (default: the filter's natural support: box 0.5, tent 1, "
                  "gaussian 3 sigma, mitchell/catmullrom/blackmanharris 2, lanczos/hann tau)");
   app.add_option("--seed", o.seed, "random seed (default 0)")->check(kSeed);
-  app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
+  app.add_option("--filter-param", o.filterParams,
+                 "filter shape parameters name=value, comma-separated or repeated (defaults: gaussian sigma=0.5 "
+                 "subtract_edge=0, mitchell B=C=1/3, lanczos and hann tau=3)")
+      ->delimiter(',');
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
   app.footer("The classic flags take one dash as in the course (-input, -size, ...) or two.");
 }

@@ -36,8 +36,13 @@ namespace aliaslab {
 
 using FilterSpec = std::pair<std::string, double>;  ///< (filter name, radius in pixels)
 
+/// The one default reference sample count of every front end (sweep --ref-spp,
+/// reference --spp): 1024 samples per pixel, a reference error well below the
+/// measured aliasing at the study's 4..64 spp (see the manifests' error fields).
+inline constexpr int kDefaultReferenceSpp = 1024;
+
 struct ReferenceOptions {
-  int spp = 1024;                 ///< samples per pixel in total (even; a multiple of 2 * batchSpp when >= that)
+  int spp = kDefaultReferenceSpp;                ///< samples per pixel in total (even; a multiple of 2 * batchSpp when >= that)
   std::string sampler = "sobol";  ///< scrambled low-discrepancy sampler
   uint64_t seed = 0x5eed2026;     ///< base seed of the batch scrambles
   int batchSpp = 16;              ///< samples per pixel per batch (memory of one batch)
