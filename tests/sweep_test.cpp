@@ -16,6 +16,7 @@
 
 #include "scratch_dir.h"
 #include "core/error.h"
+#include "study/reference.h"
 #include "study/config.h"
 #include "study/csv.h"
 #include "study/sweep.h"
@@ -286,4 +287,12 @@ TEST(SweepBadInput, RefusedBeforeAnyWorkWithTheMessageAndNoCsv) {
     EXPECT_FALSE(fs::exists(out / "study.csv")) << c.args;
     EXPECT_FALSE(fs::exists(workDir() / "badcache")) << c.args;  // no reference work either
   }
+}
+
+// Issue 16: manifests store scene paths relative to the repository, not the machine's absolute path.
+TEST(ReferenceManifest, ScenePathIsRelativeToTheRepository) {
+  using aliaslab::manifestScenePath;
+  EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt"), "scenes/zoneplate.txt");
+  EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/tests/../scenes/fence.txt"), "scenes/fence.txt");
+  EXPECT_EQ(manifestScenePath("/elsewhere/mine.txt"), "/elsewhere/mine.txt");  // outside: as given
 }

@@ -6,7 +6,8 @@
 //                     red positive, white 0, saturated at +-kErrorScale
 //   <base>-noise.png  per-pixel noise as the standard deviation s over the
 //                     K seeds (sqrt of the noise map), black 0 .. white at kNoiseScale
-// (colour maps: film/visualize.h falseColor and heatColor), with
+// (colour maps: film/visualize.h falseColor and heatColor, each above a
+// colour bar labelled with its scale: film/visualize.h withColorBar), with
 // <base> = <sampler>-spp<spp>-<filter>-r<radius>-<reconstruction>.
 //
 // Per scene, contact-<scene>.png in <out>/images/: the methods side by side

@@ -23,7 +23,7 @@ const std::vector<std::string>& csvColumns() {
       "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
       "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
-      "reconstruct_ms", "threads"};
+      "reconstruct_ms", "flip", "threads"};
   return cols;
 }
 
@@ -70,7 +70,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << ',' << r.seeds << ',' << real(r.mse) << ',' << real(r.aliasing) << ',' << real(r.noise) << ','
     << real(r.mseArea) << ',' << real(r.psnr) << ',' << r.refSpp << ',' << real(r.refError) << ',' << r.flagged
     << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
-    << real(r.reconstructMs) << ',' << r.threads;
+    << real(r.reconstructMs) << ',' << real(r.flip) << ',' << r.threads;
   return s.str();
 }
 

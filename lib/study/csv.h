@@ -4,7 +4,9 @@
 // Columns (exact order; meanings in ../shared/guide/SCIENCE.md and the README):
 //   scene,width,height,sampler,spp,filter,radius,filter_params,reconstruction,
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
-//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads
+//   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,flip,threads
+// (flip: mean LDR-FLIP of the K images against the pixel-area reference, study/flip.h;
+// threads stays last, the one column allowed to differ between shards)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -38,6 +40,7 @@ struct CsvRow {
   int flagged = 0;
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
+  double flip = 0;
   int threads = 0;
 };
 

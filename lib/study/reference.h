@@ -90,6 +90,11 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames);
 
+/// The scene path a manifest stores: relative to the repository (e.g.
+/// "scenes/fence.txt") for a scene inside it, so manifests do not carry the
+/// machine's absolute paths; a scene elsewhere keeps the path as given.
+std::string manifestScenePath(const std::string& path);
+
 /// `git rev-parse HEAD` of the source tree at run time, else "unknown".
 std::string gitRevision();
 
