@@ -412,6 +412,20 @@ TEST(Visualize, RenderSamplesPutsEachSampleInItsPixel) {
   EXPECT_FLOAT_EQ(renderSamples(SampleBuffer(2, 2, 0), 4).get(5, 1)[0], 0.f);   // (1,0) odd: black
 }
 
+TEST(Visualize, RenderSamplesMarkedOutlinesStrataAndRingsDarkSamples) {
+  SampleBuffer b = makeSamples(2, 2, 1, 1, noisy);
+  const Image plain = renderSamplesMarked(SampleBuffer(2, 2, 0), 20, 2, 2);  // 2 x 2 strata per 20-pixel cell
+  const Color line(0.1f, 0.2f, 0.45f);
+  EXPECT_TRUE((plain.get(9, 3) == line).all());   // x = 9..10 crosses the stratum boundary at 10
+  EXPECT_TRUE((plain.get(3, 19) == line).all());  // the pixel boundary at 20 as well
+  // a black sample far from the lines gets a white ring
+  b.samples()[0].L = Color::Zero(), b.samples()[0].x = 0.26f, b.samples()[0].y = 0.26f;
+  const Image marked = renderSamplesMarked(b, 20, 0, 0);
+  EXPECT_TRUE((marked.get(5, 5) == Color::Zero()).all());
+  EXPECT_TRUE((marked.get(6, 5) == Color::Ones()).all());
+  EXPECT_TRUE((marked.get(4, 4) == Color::Ones()).all());
+}
+
 TEST(Visualize, ColourMapsKeepSignAndOrder) {
   Image e(3, 1);
   e.set(0, 0, Color::Constant(-1)), e.set(1, 0, Color::Zero()), e.set(2, 0, Color::Constant(0.5f));

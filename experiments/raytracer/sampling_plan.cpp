@@ -150,7 +150,13 @@ RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int wi
 }
 
 Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& o) {
-  return renderSamples(rendered.samples, std::stoi(o.renderSamples[1]));
+  // the course's picture for the classic flags; with --sampler, strata outlined and dark samples ringed
+  const int zoom = std::stoi(o.renderSamples[1]);
+  if (o.sampler.empty()) return renderSamples(rendered.samples, zoom);
+  int columns = 0, rows = 0;
+  for (const char* grid : {"uniform", "jittered", "multijittered", "cmj"})  // patterns stratified on gridShape
+    if (o.sampler == grid) gridShape(std::max(1, o.spp), columns, rows);
+  return renderSamplesMarked(rendered.samples, zoom, columns, rows);
 }
 
 Image renderFilterImage(const SamplingPlan& plan, const RaytracerOptions& o) {

@@ -111,6 +111,40 @@ Image renderSamples(const SampleBuffer& samples, int zoom) {
   return img;
 }
 
+Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColumns, int strataRows) {
+  const int w = samples.width() * zoom, h = samples.height() * zoom;
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if ((x / zoom + y / zoom) % 2 == 0) img.set(x, y, Color::Constant(0.2f));
+  if (strataColumns > 0 && strataRows > 0) {
+    const Color line(0.1f, 0.2f, 0.45f);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        // a stratum boundary crosses this image pixel: floor of the stratum index changes within it
+        const bool vx = std::floor(double(x) * strataColumns / zoom) != std::floor(double(x + 1) * strataColumns / zoom);
+        const bool vy = std::floor(double(y) * strataRows / zoom) != std::floor(double(y + 1) * strataRows / zoom);
+        if (vx || vy) img.set(x, y, line);
+      }
+  }
+  if (zoom >= 4)
+    for (const FilmSample& s : samples.samples()) {
+      const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
+      if (!(fx >= 0 && fy >= 0 && fx < w && fy < h)) continue;
+      const Color ring = channelMean(s.L) < 0.5f ? Color::Ones() : Color::Zero();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = int(fx) + dx, y = int(fy) + dy;
+          if ((dx || dy) && x >= 0 && y >= 0 && x < w && y < h) img.set(x, y, ring);
+        }
+    }
+  for (const FilmSample& s : samples.samples()) {
+    const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
+    if (fx >= 0 && fy >= 0 && fx < w && fy < h) img.set(int(fx), int(fy), s.L);
+  }
+  return img;
+}
+
 Image renderFilter(const Filter& filter, int width, int height, int zoom) {
   Image img(width * zoom + 1, height * zoom + 1, kDarkBlue);
   const int R = classicSupport(filter), ci = width / 2, cj = height / 2;

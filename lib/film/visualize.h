@@ -16,6 +16,14 @@ namespace aliaslab {
 /// outside the film are left out). zoom >= 1.
 Image renderSamples(const SampleBuffer& samples, int zoom);
 
+/// The same picture made readable, for the general flags: when
+/// strataColumns x strataRows > 0 each pixel's strata are outlined in dark
+/// blue (0.1, 0.2, 0.45); each sample is its own image pixel in its colour
+/// with, at zoom >= 4, a ring of the 8 surrounding image pixels in white
+/// for a dark sample (channel mean < 0.5) or black for a bright one, so a
+/// black sample on a black cell still shows.
+Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColumns, int strataRows);
+
 /// The classic -render_filter picture for a width x height film:
 /// (width*zoom+1) x (height*zoom+1) dark blue (0,0,0.5); every cell within
 /// classicSupport(filter) of the centre pixel (width/2, height/2) is painted
