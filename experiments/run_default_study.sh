@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # README command (a): install what is missing, build, run the default study
 # on every scene in scenes/, then draw its charts and the HTML report.
-# Everything lands in results/ (results/study/ for the sweep itself).
+# A run writes only into its own folder, runs/default/ (git-ignored; set
+# ALIASLAB_RUN_DIR for another), never into the committed reference study in
+# results/: compare the two with analysis/compare.py. The reference cache
+# results/cache/refs (git-ignored) is shared.
 #   bash experiments/run_default_study.sh [extra sweep options]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -14,23 +17,24 @@ echo "== build"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DALIASLAB_TESTS=OFF >/dev/null
 cmake --build build -j "$jobs"
 
-echo "== default study (resumes if interrupted: rerun the same command)"
-# A new run replaces the committed study's CSV; a run that was interrupted
-# resumes it. results/study/.running marks a run in progress.
-marker=results/study/.running
+run=${ALIASLAB_RUN_DIR:-runs/default}
+echo "== default study into $run/ (resumes if interrupted: rerun the same command)"
+# A new run starts a fresh CSV in $run/study; a run that was interrupted
+# resumes it. $run/study/.running marks a run in progress.
+marker=$run/study/.running
 if [ -e "$marker" ]; then
   echo "resuming the interrupted run"
 else
-  mkdir -p results/study
-  rm -f results/study/study.csv
+  mkdir -p "$run/study"
+  rm -f "$run/study/study.csv"
   touch "$marker"
 fi
 start=$(date +%s)
-build/bin/sweep --preset default --out results/study "$@"
+build/bin/sweep --preset default --out "$run/study" --cache results/cache/refs "$@"
 rm -f "$marker"
 echo "study wall time: $(( $(date +%s) - start )) s"
 
 echo "== charts and report"
-$PY analysis/charts.py results/study/study.csv --out results/charts
-$PY analysis/report.py results --study results/study/study.csv
-echo "done: open results/index.html"
+$PY analysis/charts.py "$run/study/study.csv" --out "$run/charts"
+$PY analysis/report.py "$run" --study "$run/study/study.csv"
+echo "done: open $run/index.html (the committed reference study: results/index.html)"

@@ -377,6 +377,24 @@ TEST(Visualize, RenderFilterReproducesClassicTentPicture) {
   EXPECT_TRUE((img.get(57, 180) == Color(0, 0, 1)).all());   // last grid row
 }
 
+TEST(Visualize, RenderFilterSignedDrawsEvalCutAtTheRadiusAboveAColourBar) {
+  auto f = makeFilter("gaussian", 1.f, {{"sigma", 1.0}});
+  const Image img = renderFilterSigned(*f, 9, 9, 20);
+  ASSERT_EQ(img.width(), std::max(181, kColorBarMinWidth));
+  ASSERT_EQ(img.height(), 181 + kColorBarHeight);
+  const int b = kColorBarHeight;
+  // offset (0.55, 0.55) from (4.5, 4.5): d = 0.78 inside, weight exp(-d^2 / 2), shown as sqrt of it
+  const float w = std::exp(-0.5f * (0.55f * 0.55f * 2));
+  EXPECT_NEAR(img.get(101, b + 101)[1], 1 - std::sqrt(w), 1e-5);
+  EXPECT_NEAR(img.get(101, b + 101)[0], 1, 1e-6);
+  EXPECT_TRUE((img.get(112, b + 101) == Color(1, 1, 1)).all());  // offset (1.1, 0.55): beyond r = 1, white
+  EXPECT_TRUE((img.get(100, b + 57) == Color::Constant(0.55f)).all());  // grid column
+  // the bar runs blue (left) through white to red (right)
+  const int barRow = kColorBarHeight - 1 - 8;
+  EXPECT_TRUE((img.get(4, barRow) == Color(0, 0, 1)).all());
+  EXPECT_TRUE((img.get(img.width() - 5, barRow) == Color(1, 0, 0)).all());
+}
+
 TEST(Visualize, RenderSamplesPutsEachSampleInItsPixel) {
   const SampleBuffer b = makeSamples(3, 2, 2, 4, noisy);
   const Image img = renderSamples(b, 10);
@@ -420,6 +438,18 @@ TEST(Visualize, RenderSamplesShowsTheBlockNeighboursOffsets) {
       const Color c = small.get(x, y);
       EXPECT_FALSE(c[0] == 0.75f && c[1] == 0.55f) << x << "," << y;
     }
+TEST(Visualize, RenderSamplesMarkedOutlinesStrataAndRingsDarkSamples) {
+  SampleBuffer b = makeSamples(2, 2, 1, 1, noisy);
+  const Image plain = renderSamplesMarked(SampleBuffer(2, 2, 0), 20, 2, 2);  // 2 x 2 strata per 20-pixel cell
+  const Color line(0.1f, 0.2f, 0.45f);
+  EXPECT_TRUE((plain.get(9, 3) == line).all());   // x = 9..10 crosses the stratum boundary at 10
+  EXPECT_TRUE((plain.get(3, 19) == line).all());  // the pixel boundary at 20 as well
+  // a black sample far from the lines gets a white ring
+  b.samples()[0].L = Color::Zero(), b.samples()[0].x = 0.26f, b.samples()[0].y = 0.26f;
+  const Image marked = renderSamplesMarked(b, 20, 0, 0);
+  EXPECT_TRUE((marked.get(5, 5) == Color::Zero()).all());
+  EXPECT_TRUE((marked.get(6, 5) == Color::Ones()).all());
+  EXPECT_TRUE((marked.get(4, 4) == Color::Ones()).all());
 }
 
 TEST(Visualize, ColourMapsKeepSignAndOrder) {

@@ -143,6 +143,71 @@ TEST_F(RaytracerTest, RenderFilterTentPictureHasWeightsAtCellCorners) {
   expectColor(f, 40, 77, Color(0, 0, 1), 0.f);                           // grid column
 }
 
+// Issue 16, silent surprises 1 and 4.
+TEST_F(RaytracerTest, SeveralSamplesWithoutFilterAverageOverThePixel) {
+  // --spp 16 and no --filter: the documented default, the pixel-area box (not the first sample).
+  const std::string base = "-input " + kScene + " -size 16 16 --sampler jittered --spp 16 ";
+  const Result plain = run(base + "-stats -output " + path("plain.exr"));
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_NE(plain.out.find("box r=0.5"), std::string::npos) << plain.out;
+  ASSERT_EQ(run(base + "--filter box --radius 0.5 -output " + path("box.exr")).code, 0);
+  const Image a = readImage(path("plain.exr")), b = readImage(path("box.exr"));
+  EXPECT_TRUE(identical(a, b));
+  // and it is an average: some edge pixel lies strictly between the flat colours
+  int mixed = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x < 16; ++x) {
+      const Color c = a.get(x, y);
+      mixed += (c.maxCoeff() - c.minCoeff() > 1e-3f && c[0] > 0.01f && c[0] < 0.99f);
+    }
+  EXPECT_GT(mixed, 0);
+}
+
+TEST_F(RaytracerTest, ClassicSamplesWithoutFilterKeepTheCourseRuleAndSaySo) {
+  const Result r = run("-input " + kScene + " -size 16 16 -jittered_samples 4 -output " + path("j.exr"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("first sample"), std::string::npos) << r.err;
+}
+
+TEST_F(RaytracerTest, FilterWithoutRadiusUsesItsNaturalRadius) {
+  const std::string base = "-input " + kScene + " -size 16 16 --sampler jittered --spp 4 ";
+  const Result r = run(base + "--filter tent -output " + path("t.exr"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(run(base + "--filter tent --radius 1 -output " + path("t1.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("t.exr")), readImage(path("t1.exr"))));
+  // the Gaussian's natural radius follows sigma: 3 sigma
+  ASSERT_EQ(run(base + "--filter gaussian --filter-param sigma=0.4 -output " + path("g.exr")).code, 0);
+  ASSERT_EQ(run(base + "--filter gaussian --filter-param sigma=0.4 --radius 1.2 -output " + path("g1.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("g.exr")), readImage(path("g1.exr"))));
+}
+
+TEST_F(RaytracerTest, RenderFilterShowsTheCutGaussianThatIsUsed) {
+  // --filter gaussian --radius 1 with sigma 1: the weighted reconstruction cuts at distance 1.
+  const Result r = run("-input " + kScene + " -size 9 9 --filter gaussian --radius 1 --filter-param sigma=1 "
+                       "-render_filter " + path("g.png") + " 20");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image g = readImage(path("g.png"));
+  const int band = 34;  // colour bar band below the 181 x 181 picture (visualize.h kColorBarHeight)
+  ASSERT_EQ(g.height(), 181 + band);
+  // centre (4.5, 4.5) is image pixel (90, 90): full weight, pure red
+  expectColor(g, 90 + 1, band + 90 + 1, Color(1, 0, 0), 0.05f);
+  // offset (1.2, 0.05) lies beyond the radius: weight 0, white (the uncut Gaussian would be 0.49)
+  expectColor(g, 90 + 24, band + 91, Color(1, 1, 1), k8bit);
+  // offset (0.6, 0.05) inside: exp(-0.18) = 0.84, red with some white: green = 1 - sqrt(0.84)
+  expectColor(g, 90 + 12, band + 91, Color(1, 1 - std::sqrt(std::exp(-0.5f * (0.36f + 0.0025f))),
+                                           1 - std::sqrt(std::exp(-0.5f * (0.36f + 0.0025f)))), 2 * k8bit);
+}
+
+TEST_F(RaytracerTest, RenderFilterShowsNegativeLobesInBlue) {
+  const Result r = run("-input " + kScene + " -size 9 9 --filter lanczos --radius 3 -render_filter " +
+                       path("l.png") + " 20");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image l = readImage(path("l.png"));
+  // Lanczos-3 at offset (1.45, 0.05), in its first negative lobe: weight -0.14, shown as sqrt(0.14) = 0.38 blue
+  const Color c = l.get(90 + 29, 34 + 91);
+  EXPECT_GT(c[2], c[0] + 0.2f) << c.transpose();  // clearly blue, not black or white
+}
+
 TEST_F(RaytracerTest, RenderSamplesMarksCentreSamplesOnCheckerCells) {
   const Result r = run("-input " + kScene + " -size 16 16 -render_samples " + path("s.png") + " 4");
   ASSERT_EQ(r.code, 0) << r.err;

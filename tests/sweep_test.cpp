@@ -21,6 +21,7 @@
 #include "scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
+#include "study/reference.h"
 #include "study/config.h"
 #include "study/csv.h"
 #include "study/metrics.h"
@@ -380,4 +381,10 @@ TEST(SweepBadInput, AnUnusableTargetIsRefusedNamingTheOption) {
     EXPECT_FALSE(fs::exists(out / "study.csv")) << target;
     EXPECT_FALSE(fs::exists(workDir() / "badtargetcache")) << target;
   }
+// Issue 16: manifests store scene paths relative to the repository, not the machine's absolute path.
+TEST(ReferenceManifest, ScenePathIsRelativeToTheRepository) {
+  using aliaslab::manifestScenePath;
+  EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt"), "scenes/zoneplate.txt");
+  EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/tests/../scenes/fence.txt"), "scenes/fence.txt");
+  EXPECT_EQ(manifestScenePath("/elsewhere/mine.txt"), "/elsewhere/mine.txt");  // outside: as given
 }

@@ -58,7 +58,8 @@ std::string fmt(double v, const char* f = "%.3f") { return formatNumber(v, f); }
 
 int main(int argc, char** argv) {
   Params p;
-  CLI::App app{"RMSE against N of every sampler on the analytic integrands, with fitted slopes"};
+  CLI::App app{"convergence: RMSE against N of every sampler on the analytic integrands, with fitted slopes (aliaslab)"};
+  setupCommandLine(app, "convergence");
   app.add_option("--out", p.out, "Output folder")->capture_default_str();
   app.add_option("--realisations", p.realisations, "Independent sets per (sampler, N)")->capture_default_str()
       ->check(CLI::Range(2, 1 << 20));
@@ -67,15 +68,16 @@ int main(int argc, char** argv) {
                         ->capture_default_str();
   app.add_option("--fit-max", p.fitMax, "Largest N in the slope fit")->capture_default_str();
   app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
-  app.add_option("--sampler", p.samplers, "Samplers to run (default: all)");
+  app.add_option("--samplers", p.samplers, "Samplers to run (default: all)")->delimiter(',');
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
-  app.add_flag("!--no-chart", p.chart, "Skip the chart");
+  app.add_flag("!--no-chart", p.chart, "Skip the chart (analysis/convergence_chart.py)");
   if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
   try {
     // Validate everything before work.
     if (p.samplers.empty()) p.samplers = samplerNames();
-    for (const auto& s : p.samplers) makeSampler(s, 1 << 4, p.seed);  // unknown names fail before any work
+    for (const auto& s : p.samplers)  // unknown names fail before any work
+      relabelOption("--sampler", "--samplers", [&] { makeSampler(s, 1 << 4, p.seed); });
     if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
     if (!(std::isfinite(p.fitMin) && p.fitMin >= 1)) throw OptionError("--fit-min", "must be a number >= 1, found " + fmt(p.fitMin, "%g"));
     if (!(std::isfinite(p.fitMax) && p.fitMax >= 1)) throw OptionError("--fit-max", "must be a number >= 1, found " + fmt(p.fitMax, "%g"));

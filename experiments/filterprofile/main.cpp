@@ -40,14 +40,6 @@ struct Params {
   int profileSteps = 400;     // profile samples across [-r - 0.25, r + 0.25]
 };
 
-float naturalRadius(const std::string& name) {
-  static const std::map<std::string, float> radii = {{"box", 0.5f},     {"tent", 1.f},          {"gaussian", 1.5f},
-                                                     {"mitchell", 2.f}, {"catmullrom", 2.f},    {"lanczos", 3.f},
-                                                     {"hann", 3.f},     {"blackmanharris", 2.f}};
-  const auto it = radii.find(name);
-  return it == radii.end() ? 2.f : it->second;
-}
-
 void writeFilter(std::ostream& os, const Filter& f, const Params& p) {
   const double r = f.radius();
   std::string describe = f.describe();
@@ -83,8 +75,9 @@ void writeFilter(std::ostream& os, const Filter& f, const Params& p) {
 
 int main(int argc, char** argv) {
   Params p;
-  CLI::App app{"Profile and frequency response of every filter at its natural radius (CSV)"};
-  app.add_option("--out", p.out, "CSV file (default: standard output)");
+  CLI::App app{"filterprofile: profile and frequency response of every filter at its natural radius, as CSV (aliaslab)"};
+  setupCommandLine(app, "filterprofile");
+  app.add_option("--output", p.out, "CSV file (default: standard output)");
   app.add_option("--max-frequency", p.maxFrequency, "Largest frequency, cycles per pixel")
       ->capture_default_str()
       ->check(CLI::Range(0.1, 16.0));
@@ -93,14 +86,14 @@ int main(int argc, char** argv) {
     if (!p.out.empty()) {  // a file we can write, checked before the work
       namespace fs = std::filesystem;
       std::error_code ec;
-      if (fs::is_directory(p.out, ec)) throw OptionError("--out", "'" + p.out + "' is a folder; give a CSV file name");
+      if (fs::is_directory(p.out, ec)) throw OptionError("--output", "'" + p.out + "' is a folder; give a CSV file name");
       const fs::path dir = fs::path(p.out).parent_path().empty() ? fs::path(".") : fs::path(p.out).parent_path();
       if (!fs::is_directory(dir, ec) || ::access(dir.c_str(), W_OK) != 0)
-        throw OptionError("--out", "cannot write into folder '" + dir.string() + "'");
+        throw OptionError("--output", "cannot write into folder '" + dir.string() + "'");
     }
     std::ostringstream os;
     os << "filter,radius,describe,kind,x,value\n";
-    for (const auto& name : filterNames()) writeFilter(os, *makeFilter(name, naturalRadius(name)), p);
+    for (const auto& name : filterNames()) writeFilter(os, *makeFilter(name, static_cast<float>(defaultFilterRadius(name))), p);
     if (p.out.empty()) {
       std::cout << os.str();
     } else {

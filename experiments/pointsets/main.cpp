@@ -62,9 +62,10 @@ std::string fmt(double v) { return formatNumber(v, "%.6g"); }
 
 int main(int argc, char** argv) {
   Params p;
-  CLI::App app{"Discrepancy, minimum distance and power spectra of every sampler"};
+  CLI::App app{"pointsets: discrepancy, minimum distance and power spectra of every sampler (aliaslab)"};
+  setupCommandLine(app, "pointsets");
   app.add_option("--out", p.out, "Output folder")->capture_default_str();
-  app.add_option("--counts", p.counts, "Point counts")->capture_default_str()->check(CLI::Range(2, 1 << 16));
+  app.add_option("--counts", p.counts, "Point counts")->delimiter(',')->capture_default_str()->check(CLI::Range(2, 1 << 16));
   app.add_option("--sets", p.sets, "Independent sets per (sampler, N)")
       ->capture_default_str()
       ->check(CLI::Range(1, 1 << 16));
@@ -72,16 +73,18 @@ int main(int argc, char** argv) {
       ->capture_default_str()
       ->check(CLI::Range(0.5, 16.0));
   app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
-  app.add_option("--sampler", p.samplers, "Samplers (default: all)");
+  app.add_option("--samplers", p.samplers, "Samplers (default: all)")->delimiter(',');
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
-  app.add_flag("!--no-chart", p.chart, "Skip the chart");
+  app.add_flag("!--no-chart", p.chart, "Skip the chart (analysis/pointset_chart.py)");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
   try {
     // Validate everything before work: every sampler at every count.
     if (p.samplers.empty()) p.samplers = samplerNames();
     for (const auto& s : p.samplers)
-      for (int n : p.counts) relabelOption("--spp", "--counts", [&] { makeSampler(s, n, p.seed); });
+      for (int n : p.counts)
+        relabelOption("--sampler", "--samplers",
+                      [&] { relabelOption("--spp", "--counts", [&] { makeSampler(s, n, p.seed); }); });
     if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
     requireOutputFolders({{p.out, "--out"}});
 

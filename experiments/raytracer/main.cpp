@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "accel/aggregate.h"
+#include "core/cli.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
@@ -102,6 +103,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
 int main(int argc, char** argv) {
   CLI::App app{"raytracer: render a classic course scene file (aliaslab)", "raytracer"};
   RaytracerOptions o;
+  setupCommandLine(app, "raytracer", false);  // defaults stated in words: zero values mean "off"
   addRaytracerOptions(app, o);
   try {
     std::vector<std::string> args = translateClassicFlags(argc, argv);
@@ -112,6 +114,8 @@ int main(int argc, char** argv) {
     return 2;
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::cerr << "raytracer: " << classicMessage(e.what()) << "\nRun with --help for the options.\n";
     return 2;
@@ -119,6 +123,7 @@ int main(int argc, char** argv) {
   try {
     validateRaytracerOptions(app, o);
     const SamplingPlan plan = makeSamplingPlan(app, o);
+    if (!plan.note.empty()) std::cerr << "raytracer: note: " << plan.note << "\n";
     if (!plan.sampler->warning().empty()) std::cerr << "raytracer: warning: " << plan.sampler->warning() << "\n";
     return run(o, plan);
   } catch (const OptionError& e) {

@@ -75,7 +75,10 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--tent_filter", o.tentFilter, "tent (cone) filter of radius r pixels");
   app.add_option("--gaussian_filter", o.gaussianFilter, "Gaussian filter of standard deviation sigma pixels");
   app.add_option("--render_samples", o.renderSamples, "sample visualisation: file zoom")->expected(2);
-  app.add_option("--render_filter", o.renderFilter, "filter weight visualisation: file zoom")->expected(2);
+  app.add_option("--render_filter", o.renderFilter,
+                 "filter weight picture: file zoom (classic flags: the course picture; otherwise the filter as "
+                 "used, red positive, blue negative, with a colour bar)")
+      ->expected(2);
   // General sampling.
   std::string samplers, filters;
   for (const std::string& n : samplerNames()) samplers += (samplers.empty() ? "" : ", ") + n;
@@ -84,10 +87,18 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--sampler", o.sampler,
                  "sampler: " + samplers + "; or adaptive-contrast|adaptive-error|adaptive-subdiv:BASE (docs/adaptive.md)");
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");
-  app.add_option("--filter", o.filter, "reconstruction filter: " + filters);
-  app.add_option("--radius", o.radius, "filter support radius in pixels");
+  app.add_option("--filter", o.filter,
+                 "reconstruction filter: " + filters +
+                     " (default: with --spp above 1 the pixel-area box of radius 0.5, weighted; with 1 sample the "
+                     "sample itself)");
+  app.add_option("--radius", o.radius,
+                 "filter support radius in pixels (default: the filter's natural support: box 0.5, tent 1, "
+                 "gaussian 3 sigma, mitchell/catmullrom/blackmanharris 2, lanczos/hann tau)");
   app.add_option("--seed", o.seed, "random seed (default 0)")->check(kSeed);
-  app.add_option("--filter-param", o.filterParams, "filter shape parameter name=value (repeatable)");
+  app.add_option("--filter-param", o.filterParams,
+                 "filter shape parameters name=value, comma-separated or repeated (defaults: gaussian sigma=0.5 "
+                 "subtract_edge=0, mitchell B=C=1/3, lanczos and hann tau=3)")
+      ->delimiter(',');
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
   app.add_option("--prefilter", o.prefilter,
                  "none or footprint: average textures over each sample's footprint (1/sqrt(spp) pixels a side; "

@@ -39,8 +39,8 @@ struct RaytracerOptions {
   // General sampling.
   std::string sampler;                   ///< --sampler NAME (default: pixel centre)
   int spp = 0;                           ///< --spp N (default 1)
-  std::string filter;                    ///< --filter NAME (default: none, first sample)
-  float radius = 0.f;                    ///< --radius R in pixels (required with --filter)
+  std::string filter;                    ///< --filter NAME (default: box 0.5 when spp > 1, see sampling_plan.h)
+  float radius = 0.f;                    ///< --radius R in pixels (default: defaultFilterRadius)
   uint64_t seed = 0;                     ///< --seed S (default 0)
   std::vector<std::string> filterParams; ///< --filter-param name=value, repeatable
   std::string prefilter = "none";        ///< --prefilter none|footprint

@@ -50,7 +50,9 @@ std::string SamplingPlan::describe() const {
   std::string s = adaptive ? adaptive->describe() + " spp " + std::to_string(adaptive->spp())
                            : sampler->describe() + " spp " + std::to_string(sampler->spp());
   if (mode == ReconMode::Supersample) return s + ", supersample reconstruction (3x3 binomial, k x k box)";
-  if (filter) return s + ", " + filter->describe() + ", " + toString(mode) + " reconstruction";
+  if (filter)
+    return s + ", " + filter->describe() + (defaultFilter ? " (default: no --filter given)" : "") + ", " +
+           toString(mode) + " reconstruction";
   return s + ", first sample per pixel";
 }
 
@@ -103,9 +105,15 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     }
     plan.filter = relabelOption("--radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
   } else if (has("filter")) {
-    plan.filter = makeFilter(o.filter, o.radius, params);
+    // without --radius the filter's natural support (defaultFilterRadius, listed in --help)
+    const float radius = has("radius") ? o.radius : static_cast<float>(defaultFilterRadius(o.filter, params));
+    plan.filter = makeFilter(o.filter, radius, params);
   } else if (has("radius") || has("filter-param")) {
     throw OptionError(has("radius") ? "--radius" : "--filter-param", "needs --filter");
+  } else if (classicSampler.empty() && spp > 1 && !has("reconstruction")) {
+    // several samples and no filter: the pixel-area average (box 0.5, weighted), not the first sample
+    plan.filter = makeFilter("box", 0.5f);
+    plan.defaultFilter = true;
   }
 
   // Reconstruction: explicit, else classic for classic flags, else weighted.
@@ -129,6 +137,10 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
   }
   if (plan.adaptive && !plan.filter) plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
+  if (!classicSampler.empty() && spp > 1 && !plan.filter)
+    plan.note = "-" + classicSampler + " " + std::to_string(spp) +
+                " without a filter keeps each pixel's first sample (the course's rule); add -box_filter 0.5 "
+                "to average the samples over the pixel";
   if (!o.renderFilter.empty() && !plan.filter)
     throw OptionError("-render_filter", "needs a filter (-box_filter, -tent_filter, -gaussian_filter or --filter)");
   return plan;
@@ -151,11 +163,20 @@ RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int wi
 }
 
 Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& o) {
-  return renderSamples(rendered.samples, std::stoi(o.renderSamples[1]));
+  // the course's picture for the classic flags; with --sampler, strata outlined and dark samples ringed
+  const int zoom = std::stoi(o.renderSamples[1]);
+  if (o.sampler.empty()) return renderSamples(rendered.samples, zoom);
+  int columns = 0, rows = 0;
+  for (const char* grid : {"uniform", "jittered", "multijittered", "cmj"})  // patterns stratified on gridShape
+    if (o.sampler == grid) gridShape(std::max(1, o.spp), columns, rows);
+  return renderSamplesMarked(rendered.samples, zoom, columns, rows);
 }
 
 Image renderFilterImage(const SamplingPlan& plan, const RaytracerOptions& o) {
-  return renderFilter(*plan.filter, o.size[0], o.size[1], std::stoi(o.renderFilter[1]));
+  // the course's picture (classicSupport, evalClassic) where the course's gather is used, else the filter itself
+  const int zoom = std::stoi(o.renderFilter[1]);
+  return plan.mode == ReconMode::Classic ? renderFilter(*plan.filter, o.size[0], o.size[1], zoom)
+                                         : renderFilterSigned(*plan.filter, o.size[0], o.size[1], zoom);
 }
 
 }  // namespace aliaslab

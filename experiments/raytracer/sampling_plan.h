@@ -6,12 +6,15 @@
 // --filter, --radius, --filter-param, --seed) the weighted average unless
 // --reconstruction says otherwise. A classic and a general flag for the same
 // thing conflict. Without any sampler one sample sits at each pixel centre
-// (the uniform pattern with spp 1); without a filter each pixel takes its
-// first sample. An adaptive sampler (--sampler adaptive-contrast:jittered,
-// render/adaptive.h) spends --spp samples per pixel on average where the
-// image needs them (without a filter: the box of radius 0.5, each pixel's
-// area-weighted mean, rather than a first sample); -render_samples then
-// shows where they went.
+// (the uniform pattern with spp 1). Without a filter: with --spp above 1 the
+// pixel-area average (box of radius 0.5, weighted); with a classic sampler
+// flag each pixel takes its first sample, as the course says (the front end
+// prints a note then). --filter without --radius uses the filter's natural
+// radius (defaultFilterRadius).
+// An adaptive sampler (--sampler adaptive-contrast:jittered, render/adaptive.h)
+// spends --spp samples per pixel on average where the image needs them
+// (without a filter: the box of radius 0.5, each pixel's area-weighted mean);
+// -render_samples then shows where they went.
 #pragma once
 #include <memory>
 #include <string>
@@ -29,6 +32,8 @@ struct SamplingPlan {
   std::unique_ptr<AdaptiveSampler> adaptive;  ///< null unless --sampler names an adaptive method
   std::unique_ptr<Filter> filter;    ///< null: each pixel takes its first sample
   ReconMode mode = ReconMode::WeightedAverage;
+  bool defaultFilter = false;        ///< the filter is the default box 0.5 (no filter option given)
+  std::string note;                  ///< a remark for stderr (several classic samples, no filter), or ""
   std::string describe() const;
 };
 
@@ -46,7 +51,9 @@ RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int wi
 /// The classic -render_samples picture of the traced samples.
 Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& o);
 
-/// The classic -render_filter picture of the plan's filter.
+/// The -render_filter picture of the plan's filter: the course's picture
+/// (blue grid, grey weights) for the classic reconstruction, else
+/// renderFilterSigned (the filter as used, negative lobes in blue, colour bar).
 Image renderFilterImage(const SamplingPlan& plan, const RaytracerOptions& o);
 
 }  // namespace aliaslab

@@ -26,16 +26,16 @@ namespace fs = std::filesystem;
 
 int main(int argc, char** argv) {
   CLI::App app{"reference: streamed high-sample references with error estimates (aliaslab)"};
+  setupCommandLine(app, "reference");
   std::string scenePath, out = "results/refs", cache;
   std::vector<std::string> filters = {"box", "tent", "gaussian"};
   std::vector<double> radii = {0.5, 1.0, 1.5};
   std::vector<int> size;
-  ReferenceOptions o;
-  o.spp = 4096;
+  ReferenceOptions o;  // spp: kDefaultReferenceSpp, as the sweep's --ref-spp
   app.add_option("--scene", scenePath, "scene file")->required();
   app.add_option("--filters", filters, "filter names")->delimiter(',')->capture_default_str();
   app.add_option("--radii", radii, "radii in pixels (every filter x every radius)")->delimiter(',')->capture_default_str();
-  app.add_option("--size", size, "W H (default: the scene's # render: line)")->expected(2);
+  app.add_option("--size", size, "W H (default: the scene's # render: line)")->expected(2)->type_name("INT");
   app.add_option("--spp", o.spp, "samples per pixel in total: even, two halves of whole batches (the error estimate)")
       ->capture_default_str();
   app.add_option("--sampler", o.sampler, "scrambled low-discrepancy sampler")->capture_default_str();

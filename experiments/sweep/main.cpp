@@ -72,6 +72,7 @@ int main(int argc, char** argv) {
     else if (std::string(argv[i]) == "--preset" && std::string(argv[i + 1]) == "full") applyFullPreset(c);
 
   CLI::App app{"sweep: measure aliasing, noise and time over samplers x filters x radii (aliaslab)"};
+  setupCommandLine(app, "sweep");
   std::string preset, shard;
   std::vector<int> size;
   std::vector<std::string> merge;

@@ -1,7 +1,26 @@
-// Command-line parsing shared by the experiment front ends (CLI11).
+// Command-line parsing shared by the experiment front ends (CLI11), and the
+// one grammar they all follow:
+//   - options are long, double-dash, lower case with dashes (--max-n); the
+//     raytracer's classic course flags (-input, -size, ...) are the only
+//     single-dash ones;
+//   - a list is one comma-separated value (--samplers random,sobol); plural
+//     names take lists, singular names one value (--sampler in the
+//     raytracer, --samplers in the studies);
+//   - --out names a folder, --output a file;
+//   - every program has --help (defaults and ranges shown, as
+//     "(default: ...)" and "[lo..hi]") and --version (git revision and build
+//     type);
+//   - bad options exit 2 with "<program>: <message>".
+// setupCommandLine installs the help layout (HelpFormatter) and --version;
+// tests/cli_grammar_test.cpp checks every executable of experiments/.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "core/version.h"
 
 namespace aliaslab {
 
@@ -13,16 +32,81 @@ inline const CLI::Validator kSeed(
     },
     "");
 
+/// The help layout of every front end: option names without CLI11's flag
+/// defaults ("--no-chart", not "--no-chart{false}"), a value placeholder
+/// without validator text ("N", not "INT:INT in [2 - 1048576]"), lists as
+/// "TEXT,..." and the default, range and choices in the description.
+class HelpFormatter : public CLI::Formatter {
+ public:
+  std::string make_option_name(const CLI::Option* opt, bool positional) const override {
+    if (positional) return opt->get_name(true, false);
+    std::string names;
+    for (const std::string& s : opt->get_snames()) names += (names.empty() ? "-" : ", -") + s;
+    for (const std::string& l : opt->get_lnames()) names += (names.empty() ? "--" : ", --") + l;
+    return names;
+  }
+  std::string make_option_opts(const CLI::Option* opt) const override {
+    if (!opt->get_option_text().empty()) return " " + opt->get_option_text();
+    if (opt->get_expected_max() == 0) return "";  // a flag
+    std::string value = placeholder(opt);
+    if (opt->get_delimiter() == ',') value += ",...";
+    else if (opt->get_expected_max() == CLI::detail::expected_max_vector_size) value += " ...";
+    else
+      for (int k = 1; k < opt->get_expected_min(); ++k) value += " " + placeholder(opt);
+    return " " + value + (opt->get_required() ? " REQUIRED" : "");
+  }
+  std::string make_option_desc(const CLI::Option* opt) const override {
+    std::string d = opt->get_description();
+    const std::string type = opt->get_type_name(), extra = type.find(':') == std::string::npos
+                                                                ? std::string()
+                                                                : type.substr(type.find(':') + 1);
+    if (const size_t in = extra.find(" in ["); in != std::string::npos) {  // CLI::Range: "INT in [lo - hi]"
+      std::string range = extra.substr(in + 5);
+      range = range.substr(0, range.find(']'));
+      if (const size_t dash = range.find(" - "); dash != std::string::npos)
+        range = range.substr(0, dash) + ".." + range.substr(dash + 3);
+      d += " [" + range + "]";
+    } else if (!extra.empty() && extra[0] == '{') {  // CLI::IsMember: "{a,b}"
+      d += " (one of: " + extra.substr(1, extra.find('}') - 1) + ")";
+    }
+    std::string def = opt->get_expected_max() == 0 ? std::string() : opt->get_default_str();
+    if (def.size() >= 2 && def.front() == '[' && def.back() == ']') def = def.substr(1, def.size() - 2);
+    if (!def.empty() && d.find("default") == std::string::npos) d += " (default: " + def + ")";
+    return d;
+  }
+
+ private:
+  /// The value's kind without validator text: "INT", "FLOAT", "TEXT" or the option's own name for it.
+  static std::string placeholder(const CLI::Option* opt) {
+    std::string t = opt->get_type_name();
+    t = t.substr(0, t.find(':'));
+    return t.empty() ? "VALUE" : t;
+  }
+};
+
+/// Installs the shared help layout and --version on `app`; call it before
+/// adding options. With `showDefaults` every option's default value is
+/// printed in --help (the raytracer states its defaults in words instead:
+/// its zero values mean "off").
+inline void setupCommandLine(CLI::App& app, const std::string& program, bool showDefaults = true) {
+  app.formatter(std::make_shared<HelpFormatter>());
+  app.get_formatter()->column_width(34);
+  app.set_version_flag("--version", versionLine(program), "print the git revision and build type, then exit");
+  app.option_defaults()->always_capture_default(showDefaults);
+}
+
 /// Parses argv into `app`. Returns -1 when the program should go on;
-/// otherwise the exit code: 0 after printing --help, 2 after printing a
-/// usage error as "<program>: <message>" (CLI11's own codes are not used,
-/// so every front end exits 2 for bad options).
+/// otherwise the exit code: 0 after printing --help or --version, 2 after
+/// printing a usage error as "<program>: <message>" (CLI11's own codes are
+/// not used, so every front end exits 2 for bad options).
 inline int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
     std::fprintf(stderr, "%s: %s\nRun with --help for the options.\n", program, e.what());

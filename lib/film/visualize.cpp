@@ -1,10 +1,15 @@
 // Pictures of samples, filters and error maps.
 #include "film/visualize.h"
 
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
+
+#include "core/format.h"
 
 namespace aliaslab {
 namespace {
@@ -12,16 +17,88 @@ namespace {
 const Color kDarkBlue(0.f, 0.f, 0.5f), kBlue(0.f, 0.f, 1.f);
 const Color kGhost(0.75f, 0.55f, 0.15f);  ///< renderSamples: a block neighbour's sample offset (amber)
 
+/// sign(t) sqrt(|t|): lobes of a few per cent of the peak get a visible tint.
+float signedSqrt(float t) { return std::copysign(std::sqrt(std::abs(t)), t); }
+
 float channelMean(const Color& c) { return (c[0] + c[1] + c[2]) / 3.f; }
 
-/// White at 0, red towards +1, blue towards -1.
-Color diverging(float t) {
+}  // namespace
+
+Color divergingColor(float t) {
   t = std::clamp(std::isfinite(t) ? t : 0.f, -1.f, 1.f);
   const float a = 1.f - std::abs(t);
   return t >= 0 ? Color(1.f, a, a) : Color(a, a, 1.f);
 }
 
-}  // namespace
+Color heatColorOf(float t) {
+  t = std::clamp(std::isfinite(t) ? t : 1.f, 0.f, 1.f);
+  return Color(std::min(1.f, 3 * t), std::clamp(3 * t - 1, 0.f, 1.f), std::clamp(3 * t - 2, 0.f, 1.f));
+}
+
+bool drawText(Image& img, int x, int yTop, const std::string& text, int size) {
+  namespace IBA = OIIO::ImageBufAlgo;
+  const OIIO::ROI box = IBA::text_size(text, size, "DejaVuSans");
+  if (!box.defined()) return false;
+  // render white on black into a buffer the size of the text's box, then use it as coverage
+  OIIO::ImageBuf buf(OIIO::ImageSpec(box.width(), box.height(), 1, OIIO::TypeDesc::FLOAT));
+  IBA::zero(buf);
+  const float white[1] = {1.f};
+  if (!IBA::render_text(buf, -box.xbegin, -box.ybegin, text, size, "DejaVuSans", white)) return false;
+  for (int r = 0; r < box.height(); ++r)
+    for (int c = 0; c < box.width(); ++c) {
+      const int X = x + c, Y = img.height() - 1 - (yTop + r);  // Image rows count from the bottom
+      if (X < 0 || Y < 0 || X >= img.width() || Y >= img.height()) continue;
+      float a = 0.f;
+      buf.getpixel(c, r, &a, 1);
+      a = std::clamp(a, 0.f, 1.f);
+      img.set(X, Y, img.get(X, Y) * (1 - a) + Color::Constant(a));
+    }
+  return true;
+}
+
+Image withColorBar(const Image& picture, Color (*map)(float), const std::string& low, const std::string& mid,
+                   const std::string& high) {
+  const int w = std::max(picture.width(), kColorBarMinWidth), h = picture.height() + kColorBarHeight;
+  Image out(w, h, Color::Constant(0.12f));
+  for (int y = 0; y < picture.height(); ++y)
+    for (int x = 0; x < picture.width(); ++x) out.set(x, kColorBarHeight + y, picture.get(x, y));
+  // the bar: rows 3..14 of the band from its top, inset 4 pixels left and right
+  const int x0 = 4, x1 = w - 5, top = picture.height() + 3;  // top: rows counted from the top of `out`
+  for (int r = 0; r < 12; ++r)
+    for (int x = x0; x <= x1; ++x) out.set(x, h - 1 - (top + r), map(float(x - x0) / float(x1 - x0)));
+  const int textTop = top + 14;
+  const int size = 10;
+  auto width = [&](const std::string& t) {
+    const OIIO::ROI b = OIIO::ImageBufAlgo::text_size(t, size, "DejaVuSans");
+    return b.defined() ? b.width() : 0;
+  };
+  drawText(out, x0, textTop, low, size);
+  drawText(out, (x0 + x1) / 2 - width(mid) / 2, textTop, mid, size);
+  drawText(out, x1 - width(high), textTop, high, size);
+  return out;
+}
+
+Image renderFilterSigned(const Filter& filter, int width, int height, int zoom) {
+  const int W = width * zoom + 1, H = height * zoom + 1;
+  const float cx = width / 2 + 0.5f, cy = height / 2 + 0.5f;
+  std::vector<float> f(static_cast<size_t>(W) * H);
+  float peak = 0.f;
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x) {
+      const float v = filter.eval(float(x) / zoom - cx, float(y) / zoom - cy);
+      f[static_cast<size_t>(y) * W + x] = v;
+      if (std::isfinite(v)) peak = std::max(peak, std::abs(v));
+    }
+  if (!(peak > 0.f)) peak = 1.f;
+  Image img(W, H);
+  for (int y = 0; y < H; ++y)
+    for (int x = 0; x < W; ++x)
+      img.set(x, y, x % zoom == 0 || y % zoom == 0 ? Color::Constant(0.55f)
+                                                   : divergingColor(signedSqrt(f[static_cast<size_t>(y) * W + x] / peak)));
+  // the bar is linear in the weight, its colours through the same signed square root
+  return withColorBar(img, [](float t) { return divergingColor(signedSqrt(2 * t - 1)); }, "-" + formatNumber(peak),
+                      "0", "+" + formatNumber(peak));
+}
 
 Image renderSamples(const SampleBuffer& samples, int zoom) {
   const int w = samples.width() * zoom, h = samples.height() * zoom;
@@ -46,6 +123,40 @@ Image renderSamples(const SampleBuffer& samples, int zoom) {
           }
         }
   }
+  for (const FilmSample& s : samples.samples()) {
+    const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
+    if (fx >= 0 && fy >= 0 && fx < w && fy < h) img.set(int(fx), int(fy), s.L);
+  }
+  return img;
+}
+
+Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColumns, int strataRows) {
+  const int w = samples.width() * zoom, h = samples.height() * zoom;
+  Image img(w, h);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x)
+      if ((x / zoom + y / zoom) % 2 == 0) img.set(x, y, Color::Constant(0.2f));
+  if (strataColumns > 0 && strataRows > 0) {
+    const Color line(0.1f, 0.2f, 0.45f);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        // a stratum boundary crosses this image pixel: floor of the stratum index changes within it
+        const bool vx = std::floor(double(x) * strataColumns / zoom) != std::floor(double(x + 1) * strataColumns / zoom);
+        const bool vy = std::floor(double(y) * strataRows / zoom) != std::floor(double(y + 1) * strataRows / zoom);
+        if (vx || vy) img.set(x, y, line);
+      }
+  }
+  if (zoom >= 4)
+    for (const FilmSample& s : samples.samples()) {
+      const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
+      if (!(fx >= 0 && fy >= 0 && fx < w && fy < h)) continue;
+      const Color ring = channelMean(s.L) < 0.5f ? Color::Ones() : Color::Zero();
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int x = int(fx) + dx, y = int(fy) + dy;
+          if ((dx || dy) && x >= 0 && y >= 0 && x < w && y < h) img.set(x, y, ring);
+        }
+    }
   for (const FilmSample& s : samples.samples()) {
     const float fx = std::floor(s.x * zoom), fy = std::floor(s.y * zoom);
     if (fx >= 0 && fy >= 0 && fx < w && fy < h) img.set(int(fx), int(fy), s.L);
@@ -98,7 +209,7 @@ Image plotFilter(const Filter& filter, int size) {
   for (int y = 0; y < size; ++y)
     for (int x = 0; x < size; ++x) peak = std::max(peak, std::abs(f[size_t(y) * size + x] = filter.eval(offset(x), offset(y))));
   for (int y = 0; y < size; ++y)
-    for (int x = 0; x < size; ++x) img.set(x, panel + y, diverging(f[size_t(y) * size + x] / peak));
+    for (int x = 0; x < size; ++x) img.set(x, panel + y, divergingColor(f[size_t(y) * size + x] / peak));
 
   // 1-D profile below: values in [-peak, peak] over the panel's height
   if (panel > 2) {
@@ -117,7 +228,7 @@ Image plotFilter(const Filter& filter, int size) {
 Image falseColor(const Image& signedError, float scale) {
   Image img(signedError.width(), signedError.height());
   for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x) img.set(x, y, diverging(channelMean(signedError.get(x, y)) / scale));
+    for (int x = 0; x < img.width(); ++x) img.set(x, y, divergingColor(channelMean(signedError.get(x, y)) / scale));
   return img;
 }
 
@@ -125,9 +236,7 @@ Image heatColor(const Image& value, float maxValue) {
   Image img(value.width(), value.height());
   for (int y = 0; y < img.height(); ++y)
     for (int x = 0; x < img.width(); ++x) {
-      float t = channelMean(value.get(x, y)) / maxValue;
-      t = std::clamp(std::isfinite(t) ? t : 1.f, 0.f, 1.f);
-      img.set(x, y, Color(std::min(1.f, 3 * t), std::clamp(3 * t - 1, 0.f, 1.f), std::clamp(3 * t - 2, 0.f, 1.f)));
+      img.set(x, y, heatColorOf(channelMean(value.get(x, y)) / maxValue));
     }
   return img;
 }

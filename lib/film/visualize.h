@@ -1,6 +1,8 @@
 // Pictures of samples, filters and error maps (linear RGB Images, y up;
 // write them with writeImage).
 #pragma once
+#include <string>
+
 #include "core/image.h"
 #include "film/film.h"
 #include "filter/filter.h"
@@ -18,6 +20,14 @@ namespace aliaslab {
 /// pixels (zsobol) fill each other's gaps, independent ones clump.
 Image renderSamples(const SampleBuffer& samples, int zoom);
 
+/// The same picture made readable, for the general flags: when
+/// strataColumns x strataRows > 0 each pixel's strata are outlined in dark
+/// blue (0.1, 0.2, 0.45); each sample is its own image pixel in its colour
+/// with, at zoom >= 4, a ring of the 8 surrounding image pixels in white
+/// for a dark sample (channel mean < 0.5) or black for a bright one, so a
+/// black sample on a black cell still shows.
+Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColumns, int strataRows);
+
 /// The classic -render_filter picture for a width x height film:
 /// (width*zoom+1) x (height*zoom+1) dark blue (0,0,0.5); every cell within
 /// classicSupport(filter) of the centre pixel (width/2, height/2) is painted
@@ -25,6 +35,39 @@ Image renderSamples(const SampleBuffer& samples, int zoom);
 /// (X/zoom, Y/zoom) offset from that pixel's centre (0 gives black); then
 /// pure blue (0,0,1) on every row and column index that is a multiple of zoom.
 Image renderFilter(const Filter& filter, int width, int height, int zoom);
+
+/// The -render_filter picture of the filter the weighted (and importance)
+/// reconstruction really uses: eval(), cut at the filter's radius, so a
+/// Gaussian of radius R shows its disc of radius R whatever sigma is. The
+/// top (width*zoom+1) x (height*zoom+1) block shows eval at each image
+/// pixel's corner offset (X/zoom, Y/zoom) from the centre pixel's centre,
+/// in the diverging map of falseColor (white 0, red positive, blue negative
+/// lobes) of sign(f) sqrt(|f| / max|f|), so a lobe of 5% of the peak is a
+/// clear tint, with grey pixel grid lines; below it withColorBar's legend,
+/// linear in the weight from -max|f| to +max|f|.
+Image renderFilterSigned(const Filter& filter, int width, int height, int zoom);
+
+/// Diverging colour of t in [-1, 1] (clamped; NaN gives 0): white at 0, red
+/// towards +1, blue towards -1 (the map of falseColor).
+Color divergingColor(float t);
+/// Sequential "hot" colour of t in [0, 1] (clamped; NaN gives 1): black,
+/// red, yellow, white (the map of heatColor).
+Color heatColorOf(float t);
+
+/// `picture` above a legend band of kColorBarHeight rows: a horizontal bar
+/// of map(t) for t from 0 (left) to 1 (right), and under it the labels
+/// `low` at the left end, `mid` at the centre and `high` at the right end
+/// (drawn with OpenImageIO's text rendering when a font is found; the bar
+/// alone otherwise). The result is at least kColorBarMinWidth wide; the
+/// picture sits at its top left over a dark grey background.
+Image withColorBar(const Image& picture, Color (*map)(float t), const std::string& low, const std::string& mid,
+                   const std::string& high);
+inline constexpr int kColorBarHeight = 34, kColorBarMinWidth = 200;
+
+/// Draws `text` in white on `img` with the top of its box at row yTop
+/// (counted from the top of the picture) and its left at column x, at
+/// `size` pixels. False when no font is found.
+bool drawText(Image& img, int x, int yTop, const std::string& text, int size = 11);
 
 /// A sampler's points over blocksX x blocksY pixels: white dots on a dark
 /// background with grey pixel grid lines; (blocksX*zoom+1) x (blocksY*zoom+1).

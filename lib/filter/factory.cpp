@@ -28,20 +28,22 @@ struct Entry {
   const char* name;
   Maker make;        ///< declared in filter_impl.h, defined in the filter's own file
   FilterParams defaults;  ///< every shape parameter the filter takes, with its default
+  double (*naturalRadius)(const FilterParams&);  ///< the radius used when none is given (see filter.h)
 };
 // Registered filters, in the fixed order of filterNames(): adding a filter is its file, its make function's
 // declaration in filter_impl.h and one line here.
 const std::vector<Entry>& registry() {
   using namespace filterimpl;
   static const std::vector<Entry> entries = {
-      {"box", makeBox, {}},
-      {"tent", makeTent, {}},
-      {"gaussian", makeGaussian, {{"sigma", 0.5}, {"subtract_edge", 0}}},
-      {"mitchell", makeMitchell, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}}},
-      {"catmullrom", makeCatmullRom, {}},
-      {"lanczos", makeLanczos, {{"tau", 3}}},
-      {"hann", makeHann, {{"tau", 3}}},
-      {"blackmanharris", makeBlackmanHarris, {}},
+      {"box", makeBox, {}, [](const FilterParams&) { return 0.5; }},
+      {"tent", makeTent, {}, [](const FilterParams&) { return 1.0; }},
+      {"gaussian", makeGaussian, {{"sigma", 0.5}, {"subtract_edge", 0}},
+       [](const FilterParams& p) { return 3 * p.at("sigma"); }},
+      {"mitchell", makeMitchell, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}}, [](const FilterParams&) { return 2.0; }},
+      {"catmullrom", makeCatmullRom, {}, [](const FilterParams&) { return 2.0; }},
+      {"lanczos", makeLanczos, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
+      {"hann", makeHann, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
+      {"blackmanharris", makeBlackmanHarris, {}, [](const FilterParams&) { return 2.0; }},
   };
   return entries;
 }
@@ -64,6 +66,15 @@ const std::vector<std::string>& filterNames() {
 FilterParams defaultFilterParams(const std::string& name) {
   const Entry* e = find(name);
   return e ? e->defaults : FilterParams{};
+}
+
+double defaultFilterRadius(const std::string& name, const FilterParams& params) {
+  const Entry* e = find(name);
+  if (!e) return 1.0;  // makeFilter reports the unknown name
+  FilterParams p = e->defaults;
+  for (const auto& [key, value] : params)
+    if (p.count(key)) p[key] = value;
+  return std::clamp(e->naturalRadius(p), double(kMinFilterRadius), double(kMaxFilterRadius));
 }
 
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params) {

@@ -104,6 +104,13 @@ const std::vector<std::string>& filterNames();
 /// out-of-range shape parameter (so a misspelt "sigmaa" cannot pass).
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params = {});
 
+/// The radius used when a front end is given a filter name but no radius: the
+/// filter's natural support (box 0.5 = the pixel area, tent 1, gaussian
+/// 3 sigma, mitchell and catmullrom 2, lanczos and hann tau, blackmanharris
+/// 2), with shape parameters from `params` over the defaults. 1 for an
+/// unknown name (makeFilter then reports it).
+double defaultFilterRadius(const std::string& name, const FilterParams& params = {});
+
 /// Shape parameters a filter accepts, with defaults (for --help and docs).
 FilterParams defaultFilterParams(const std::string& name);
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "film/film.h"
+#include "study/reference.h"  // kDefaultReferenceSpp
 
 namespace aliaslab {
 
@@ -31,7 +32,7 @@ struct StudyConfig {
   std::vector<std::string> prefilter = {"none"};
   bool classicBox = true;   ///< also box at r = 0.5 when box is listed and 0.5 is not a radius
   int seeds = 8;            ///< K independent seeds per configuration (>= 2)
-  int refSpp = 1024;        ///< samples per pixel of the references
+  int refSpp = kDefaultReferenceSpp;       ///< samples per pixel of the references
   int width = 0, height = 0;  ///< size override (0: each scene's `# render:` size)
   int maxSize = 0;          ///< scale each scene down so its larger side is at most this (0: off)
   int longSide = 0;         ///< scale each scene up or down so its larger side is exactly this (0: off)

@@ -34,8 +34,13 @@ void writeConfigurationImages(const std::string& dir, const std::string& base, c
       error.set(x, y, seed0.get(x, y) - reference.get(x, y));
       deviation.set(x, y, noise.get(x, y).max(0.f).sqrt());
     }
-  writeImage((d / (base + "-error.png")).string(), falseColor(error, kErrorScale));
-  writeImage((d / (base + "-noise.png")).string(), heatColor(deviation, kNoiseScale));
+  // each picture carries its scale: a colour bar labelled with the saturating values
+  writeImage((d / (base + "-error.png")).string(),
+             withColorBar(falseColor(error, kErrorScale), [](float t) { return divergingColor(2 * t - 1); },
+                          "-" + formatNumber(kErrorScale), "0 (I - G)", "+" + formatNumber(kErrorScale)));
+  writeImage((d / (base + "-noise.png")).string(),
+             withColorBar(heatColor(deviation, kNoiseScale), heatColorOf, "0", "std dev",
+                          formatNumber(kNoiseScale)));
   if (density.width() > 0) writeImage((d / (base + "-density.png")).string(), densityPanel(seed0, reference, density));
 }
 

@@ -11,7 +11,8 @@
 //                     pixel (heat map, black 0 .. white at the largest count)
 //                     side by side, enlarged to at least 128 pixels high, with
 //                     the density's colour bar labelled in samples per pixel
-// (colour maps: film/visualize.h falseColor and heatColor), with
+// (colour maps: film/visualize.h falseColor and heatColor, each above a
+// colour bar labelled with its scale: film/visualize.h withColorBar), with
 // <base> = <sampler>-spp<spp>-<filter>-r<radius>-<reconstruction>.
 //
 // Per scene, contact-<scene>.png in <out>/images/: the methods side by side

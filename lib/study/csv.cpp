@@ -25,7 +25,7 @@ const std::vector<std::string>& csvColumns() {
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
       "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
-      "prefilter"};
+      "prefilter", "flip"};
   return cols;
 }
 
@@ -84,7 +84,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
     << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
     << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp << ','
-    << quoted(r.prefilter);
+    << quoted(r.prefilter) << ',' << real(r.flip);
   return s.str();
 }
 

@@ -7,10 +7,11 @@
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
 //   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
 //   lowfreq_error,lowfreq_error_se,blurred_mse (study/spectrum.h),
-//   mean_spp,max_spp,prefilter
+//   mean_spp,max_spp,prefilter,flip
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
-// fixed sampler and differ for adaptive ones, render/adaptive.h.)
+// fixed sampler and differ for adaptive ones, render/adaptive.h.
+// flip: mean LDR-FLIP of the K images against the target, study/flip.h.)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -44,6 +45,7 @@ struct CsvRow {
   int flagged = 0;
   long long nanPixels = 0, negativePixels = 0, undefinedPixels = 0;
   double traceMs = 0, reconstructMs = 0;
+  double flip = 0;
   int threads = 0;
   std::string target;  ///< the study's target T as "filter:radius" (default "box:0.5", the pixel area)
   double mseTarget = 0, blur = 0, cross = 0;

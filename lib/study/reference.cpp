@@ -126,10 +126,21 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
   return set;
 }
 
+std::string manifestScenePath(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path repo = fs::weakly_canonical(ALIASLAB_SOURCE_DIR, ec);
+  const fs::path p = ec ? fs::path() : fs::weakly_canonical(fs::absolute(path), ec);
+  if (ec || p.empty()) return path;
+  const fs::path rel = p.lexically_relative(repo);
+  const bool inside = !rel.empty() && *rel.begin() != "..";
+  return inside ? rel.generic_string() : path;
+}
+
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames) {
   std::ostringstream j;
-  j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(scene.path)
+  j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(manifestScenePath(scene.path))
     << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
     << ",\n  \"tracing\": " << jsonString(describeTraceOptions(scene.line.options)) << ",\n  \"spp\": " << set.spp
     << ",\n  \"sampler\": " << jsonString(set.sampler) << ",\n  \"seed\": " << set.seed

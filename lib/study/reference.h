@@ -36,8 +36,13 @@ namespace aliaslab {
 
 using FilterSpec = std::pair<std::string, double>;  ///< (filter name, radius in pixels)
 
+/// The one default reference sample count of every front end (sweep --ref-spp,
+/// reference --spp): 1024 samples per pixel, a reference error well below the
+/// measured aliasing at the study's 4..64 spp (see the manifests' error fields).
+inline constexpr int kDefaultReferenceSpp = 1024;
+
 struct ReferenceOptions {
-  int spp = 1024;                 ///< samples per pixel in total (even; a multiple of 2 * batchSpp when >= that)
+  int spp = kDefaultReferenceSpp;                ///< samples per pixel in total (even; a multiple of 2 * batchSpp when >= that)
   std::string sampler = "sobol";  ///< scrambled low-discrepancy sampler
   uint64_t seed = 0x5eed2026;     ///< base seed of the batch scrambles
   int batchSpp = 16;              ///< samples per pixel per batch (memory of one batch)
@@ -84,6 +89,11 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
 /// `imageNames[i]` is the image file of filter i as a path from the manifest's folder ("" for none).
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames);
+
+/// The scene path a manifest stores: relative to the repository (e.g.
+/// "scenes/fence.txt") for a scene inside it, so manifests do not carry the
+/// machine's absolute paths; a scene elsewhere keeps the path as given.
+std::string manifestScenePath(const std::string& path);
 
 /// `git rev-parse HEAD` of the source tree at run time, else "unknown".
 std::string gitRevision();

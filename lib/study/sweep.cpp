@@ -1,5 +1,7 @@
 #include "study/sweep.h"
 
+#include "study/flip.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -44,6 +46,8 @@ struct Pending {
   ReconStats stats;
   double traceMs = 0, reconMs = 0;
   Image seed0;
+  const Image* flipTarget = nullptr;  ///< what the flip column compares against (the pixel-area reference for now)
+  double flipSum = 0;                 ///< sum over the seeds of meanFlip(I_k, *flipTarget)
 };
 
 std::string supersampleParams(int spp) {
@@ -203,6 +207,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
         p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
         p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
+        p.flipTarget = &target.image;
       }
       bool shared = false;
       for (const Pending& p : rows) shared = shared || p.mode != ReconMode::ImportanceSampled;
@@ -218,6 +223,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         auto keep = [&](Pending& p, Reconstruction&& r, double traceMs, double reconMs) {
           p.metrics->add(r.image);
           p.spectrum->add(r.image);
+          p.flipSum += meanFlip(r.image, *p.flipTarget);
           p.stats += r.stats;
           p.traceMs += traceMs / config.seeds, p.reconMs += reconMs / config.seeds;
           if (k == 0 && sum.images) p.seed0 = std::move(r.image);
@@ -283,6 +289,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         r.mseTarget = m.mseTarget, r.blur = m.blur, r.cross = m.cross;
         r.mseSe = m.mseSe, r.noiseSe = m.noiseSe, r.aliasingSe = m.aliasingSe, r.mseTargetSe = m.mseTargetSe;
         r.refError = p.reference->error;
+        r.flip = p.flipSum / config.seeds;
         r.flagged = m.mse < 4.0 * p.reference->error ? 1 : 0;
         r.nanPixels = static_cast<long long>(p.stats.nanPixels);
         r.negativePixels = static_cast<long long>(p.stats.negativePixels);

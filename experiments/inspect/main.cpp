@@ -1,0 +1,90 @@
+// inspect: what an image file holds. Prints its size, channel names and
+// per channel min / max / mean over the finite values and the NaN and
+// infinity counts; for a cached reference (<cache>/<key>.exr beside
+// <key>.json, lib/study/reference.h) also the manifest's summary: scene,
+// size, spp, sampler, seed, filter, radius, reference error, git revision.
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <regex>
+#include <sstream>
+#include <vector>
+
+#include "core/cli.h"
+#include "core/error.h"
+
+using namespace aliaslab;
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The value of "key": in a manifest (a string without quotes, or a number), "" when absent.
+std::string field(const std::string& json, const std::string& key) {
+  std::smatch m;
+  const std::regex re("\"" + key + "\":\\s*(\"([^\"]*)\"|[-+0-9.eE]+)");
+  if (!std::regex_search(json, m, re)) return "";
+  return m[2].matched ? m[2].str() : m[1].str();
+}
+
+void printManifest(const fs::path& json, const std::string& key) {
+  std::ifstream in(json);
+  std::stringstream s;
+  s << in.rdbuf();
+  const std::string text = s.str();
+  std::printf("manifest: %s\n", json.string().c_str());
+  for (const char* k : {"scene", "scene_path", "width", "height", "tracing", "spp", "sampler", "seed", "git_revision"})
+    if (const std::string v = field(text, k); !v.empty()) std::printf("  %s: %s\n", k, v.c_str());
+  // the filter entry of this image (a set manifest lists several)
+  std::istringstream lines(text);
+  for (std::string line; std::getline(lines, line);)
+    if (line.find("\"filter\"") != std::string::npos && (key.empty() || line.find("\"" + key + "\"") != std::string::npos))
+      for (const char* k : {"filter", "radius", "describe", "ref_error", "undefined_pixels", "image"})
+        if (const std::string v = field(line, k); !v.empty()) std::printf("  %s: %s\n", k, v.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"inspect: size, channels, min/max/mean, NaN/Inf counts of an image; a cached reference's manifest "
+               "(aliaslab)"};
+  setupCommandLine(app, "inspect");
+  std::string file;
+  app.add_option("FILE", file, "image file (EXR, PNG, ...)")->required();
+  if (const int rc = parseCommandLine(app, argc, argv, "inspect"); rc >= 0) return rc;
+  try {
+    auto input = OIIO::ImageInput::open(file);
+    if (!input) throw FileError(file, "cannot read the image: " + OIIO::geterror());
+    const OIIO::ImageSpec spec = input->spec();
+    const int w = spec.width, h = spec.height, nc = spec.nchannels;
+    std::vector<float> px(static_cast<size_t>(w) * h * nc);
+    if (!input->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
+      throw FileError(file, "cannot read the pixels: " + input->geterror());
+    std::printf("file: %s\nsize: %d x %d\nformat: %s, %d channels\n", file.c_str(), w, h,
+                spec.format.c_str(), nc);
+    for (int c = 0; c < nc; ++c) {
+      double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0;
+      size_t finite = 0, nans = 0, infs = 0;
+      for (size_t i = c; i < px.size(); i += nc) {
+        const float v = px[i];
+        if (std::isnan(v)) ++nans;
+        else if (std::isinf(v)) ++infs;
+        else lo = std::min<double>(lo, v), hi = std::max<double>(hi, v), sum += v, ++finite;
+      }
+      std::printf("channel %s: min %.6g max %.6g mean %.6g nan %zu inf %zu\n",
+                  c < int(spec.channelnames.size()) ? spec.channelnames[c].c_str() : "?", finite ? lo : NAN,
+                  finite ? hi : NAN, finite ? sum / finite : NAN, nans, infs);
+    }
+    const fs::path json = fs::path(file).replace_extension(".json");
+    std::error_code ec;
+    if (fs::is_regular_file(json, ec)) printManifest(json, fs::path(file).stem().string());
+  } catch (const std::exception& e) {
+    std::cerr << "inspect: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

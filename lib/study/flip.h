@@ -1,0 +1,30 @@
+// LDR-FLIP: the perceptual difference of Andersson et al. 2020, "FLIP: A
+// Difference Evaluator for Alternating Images" (HPG 2020), for images with
+// values in [0, 1] (docs/flip.md explains every step and constant).
+//
+// Protocol: flipMap(test, reference) returns one value per pixel in [0, 1]
+// (0: no visible difference, 1: the largest difference, as between pure
+// green and pure blue); meanFlip is its mean, the number reported by
+// imgdiff and the sweep's `flip` column. Inputs are linear RGB images of the
+// same size, clamped to [0, 1] first (LDR); the viewing condition is given
+// in pixels per degree of visual angle (default: 67, a 0.7 m wide 4K screen
+// seen from 0.7 m, the paper's default). The map is symmetric in its two
+// arguments and a pure function of them.
+#pragma once
+#include <vector>
+
+#include "core/image.h"
+
+namespace aliaslab {
+
+inline constexpr double kFlipDefaultPixelsPerDegree = 67.0;
+
+/// Per-pixel LDR-FLIP of `test` against `reference` (same size; throws
+/// std::invalid_argument otherwise). Row-major like Image, values in [0, 1].
+std::vector<float> flipMap(const Image& test, const Image& reference,
+                           double pixelsPerDegree = kFlipDefaultPixelsPerDegree);
+
+/// Mean of flipMap over the pixels.
+double meanFlip(const Image& test, const Image& reference, double pixelsPerDegree = kFlipDefaultPixelsPerDegree);
+
+}  // namespace aliaslab
