@@ -141,9 +141,12 @@ TEST(ParserMaterials, ProceduralsAndPatternExtension) {
                   "frequency 1 }\n"
                   "  Pattern { materialIndex 0 materialIndex 1 frequency 1 type zoneplate } }\n");
   ASSERT_EQ(s.materials.size(), 7u);
-  // Marble with amplitude 0: w = 0.5 + 0.5 sin(3 x); at x = pi/6, w = 1 (second = Noise of 0 and 1).
+  // Marble with amplitude 0: w = (sin(3 x) + 1) / 2 goes to the FIRST material (SCENE_FORMAT's formula);
+  // at x = pi/6, w = 1: material 0 alone; at x = -pi/6, w = 0: material 2 (Noise of 0 and 1) alone.
   const Vec3 p(kPi / 6, 0.3f, 0.7f);
-  expectNear(s.materials[3]->diffuse(p).matrix(), s.materials[2]->diffuse(p).matrix());
+  expectNear(s.materials[3]->diffuse(p).matrix(), s.materials[0]->diffuse(p).matrix());
+  const Vec3 p2(-kPi / 6, 0.3f, 0.7f);
+  expectNear(s.materials[3]->diffuse(p2).matrix(), s.materials[2]->diffuse(p2).matrix());
   // Stripes on q = p + (0.5, 0, 0): w = 1 where sin(2 pi q.x) >= 0.
   expectNear(s.materials[5]->diffuse(Vec3(-0.25f, 0, 0)).matrix(), Vec3(0, 1, 0));  // q.x = 0.25
   expectNear(s.materials[5]->diffuse(Vec3(0.25f, 0, 0)).matrix(), Vec3(1, 0, 0));   // q.x = 0.75
