@@ -438,6 +438,8 @@ TEST(Visualize, RenderSamplesShowsTheBlockNeighboursOffsets) {
       const Color c = small.get(x, y);
       EXPECT_FALSE(c[0] == 0.75f && c[1] == 0.55f) << x << "," << y;
     }
+}
+
 TEST(Visualize, RenderSamplesMarkedOutlinesStrataAndRingsDarkSamples) {
   SampleBuffer b = makeSamples(2, 2, 1, 1, noisy);
   const Image plain = renderSamplesMarked(SampleBuffer(2, 2, 0), 20, 2, 2);  // 2 x 2 strata per 20-pixel cell

@@ -381,6 +381,8 @@ TEST(SweepBadInput, AnUnusableTargetIsRefusedNamingTheOption) {
     EXPECT_FALSE(fs::exists(out / "study.csv")) << target;
     EXPECT_FALSE(fs::exists(workDir() / "badtargetcache")) << target;
   }
+}
+
 // Issue 16: manifests store scene paths relative to the repository, not the machine's absolute path.
 TEST(ReferenceManifest, ScenePathIsRelativeToTheRepository) {
   using aliaslab::manifestScenePath;
