@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdint>
 #include <filesystem>
 #include <system_error>
@@ -55,19 +56,25 @@ void writeImage(const std::string& path, const Image& image) {
       }
 
   // Write beside the target, then rename: no half-written output.
-  const std::filesystem::path target(path);
-  const std::filesystem::path tmp = temporaryPathFor(path);
+  // Links are followed; a device or FIFO is refused (an image is written whole, then renamed into place).
+  const OutputTarget where = outputTarget(path);
+  if (where.special)
+    throw FileError(path, "not a regular file (a device, FIFO or socket): images are written to regular files only");
+  const std::filesystem::path target(where.path);
+  const std::filesystem::path tmp = temporaryPathFor(where.path);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw FileError(path, "cannot create an image writer: " + OIIO::geterror());
   OIIO::ImageSpec spec(w, h, 3, eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   if (!out->open(tmp.string(), spec)) throw FileError(path, "cannot open for writing: " + out->geterror());
+  errno = 0;
   const bool ok = eightBit ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
                            : out->write_image(OIIO::TypeDesc::FLOAT, flt.data());
   const bool closed = out->close();
   std::error_code ec;
   if (!ok || !closed) {
+    const std::string why = out->geterror() + (errno ? " (" + lastSystemError() + ")" : std::string());
     std::filesystem::remove(tmp, ec);
-    throw FileError(path, "write failed: " + out->geterror());
+    throw FileError(path, "write failed: " + why);
   }
   std::filesystem::rename(tmp, target, ec);
   if (ec) {

@@ -8,12 +8,14 @@
 #include <map>
 #include <memory>
 
+#include "core/files.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
 #include "study/contact.h"
 #include "study/csv.h"
+#include "study/lock.h"
 #include "study/metrics.h"
 #include "study/progress.h"
 #include "study/reference.h"
@@ -88,8 +90,17 @@ SweepSummary runSweep(const StudyConfig& config) {
   sum.images = config.images ? *config.images : total <= 200;
 
   const std::string csv = csvPath(config);
+  std::unique_ptr<CsvLock> lock;
   std::unique_ptr<CsvAppender> out;
-  if (!config.refsOnly) out = std::make_unique<CsvAppender>(csv);
+  if (!config.refsOnly) {
+    lock = std::make_unique<CsvLock>(csv, "sweep");  // one run per CSV (study/lock.h)
+    out = std::make_unique<CsvAppender>(csv);
+    checkSameStudy(csv, out->resumedLines(), config);
+  }
+  // Temporaries of killed runs ("*.partial.<pid>.*" whose process is gone).
+  for (const std::string& dir : {config.out, config.cache})
+    if (const size_t n = removeStaleTemporaries(dir))
+      std::fprintf(stderr, "note: removed %zu unfinished file(s) left by an interrupted run in %s\n", n, dir.c_str());
   const int threads = config.threads;
   const ReferenceOptions refOpts = referenceOptions(config);
 
@@ -110,6 +121,7 @@ SweepSummary runSweep(const StudyConfig& config) {
     size_t gend = gi;
     while (gend < groups.size() && groups[gend].scene == scenePath) ++gend;
     const auto scene = loadStudyScene(scenePath, config.width, config.height, config.maxSize);
+    if (out) checkSameSceneSize(csv, out->resumedLines(), scene->stem, scene->width, scene->height);
 
     // Which configurations are still missing from the CSV?
     std::vector<std::vector<Pending>> pending(gend - gi);
