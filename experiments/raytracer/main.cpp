@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "accel/aggregate.h"
+#include "core/cli.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "core/parallel.h"
@@ -37,6 +38,16 @@ void writeAll(const std::vector<std::pair<std::string, Image>>& images) {
   }
 }
 
+/// No image with NaN or infinite pixels is written (values beyond float range, e.g. a light of 3e38 on a colour
+/// of 3e38): InputError naming the scene, the image and the count, before anything is written.
+void refuseNonFinite(const std::string& scene, const std::vector<std::pair<std::string, Image>>& images) {
+  for (const auto& [path, image] : images)
+    if (const size_t n = countNonFinitePixels(image))
+      throw InputError(scene + ": " + std::to_string(n) + " of " + std::to_string(size_t(image.width()) * image.height()) +
+                       " pixels of " + path + " are NaN or infinite (lights or colours whose products exceed float "
+                       "range, about 3.4e38?); no image written");
+}
+
 int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t0 = Clock::now();
   const int w = o.size[0], h = o.size[1];
@@ -62,6 +73,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   // Colour image (and sample visualisation), depth, normals.
   if (!o.output.empty() || !o.renderSamples.empty()) {
     RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+    refuseNonFinite(o.input, {{o.output.empty() ? o.renderSamples[0] : o.output, r.image}});  // (the samples' colours)
     if (!o.output.empty()) images.emplace_back(o.output, std::move(r.image));
     if (!o.renderSamples.empty()) images.emplace_back(o.renderSamples[0], renderSamplesImage(r, o));
   }
@@ -69,6 +81,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
     images.emplace_back(o.depth[2], renderDepth(tracer, w, h, std::stof(o.depth[0]), std::stof(o.depth[1]), o.threads));
   if (!o.normals.empty()) images.emplace_back(o.normals, renderNormals(tracer, w, h, o.threads));
   const auto t3 = Clock::now();
+  refuseNonFinite(o.input, images);
   writeAll(images);
   const auto t4 = Clock::now();
 
@@ -102,6 +115,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args = translateClassicFlags(argc, argv);
     std::reverse(args.begin(), args.end());  // CLI11 takes a vector in reverse order
     app.parse(args);
+    refuseNonFiniteNumbers(app);
   } catch (const OptionError& e) {
     std::cerr << "raytracer: " << e.what() << "\nRun with --help for the options.\n";
     return 2;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <system_error>
@@ -29,6 +30,16 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 }  // namespace
+
+size_t countNonFinitePixels(const Image& image) {
+  size_t n = 0;
+  const size_t pixels = static_cast<size_t>(image.width()) * image.height();
+  for (size_t i = 0; i < pixels; ++i) {
+    const float* p = image.data() + 3 * i;
+    n += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+  }
+  return n;
+}
 
 bool isSupportedImageExtension(const std::string& path) {
   const std::string ext = lowerExtension(path);

@@ -128,6 +128,10 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
     ref.stats = ra.stats;
     ref.stats += rb.stats;
     ref.key = referenceKey(scene, ref.describe, o);
+    if (const size_t bad = countNonFinitePixels(ref.image))
+      throw InputError(scene.path + ": the reference (" + ref.describe + ") has " + std::to_string(bad) +
+                       " NaN or infinite pixels (lights or colours whose products exceed float range, about "
+                       "3.4e38?); nothing can be measured against it");
     set.images.push_back(std::move(ref));
   }
   set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
