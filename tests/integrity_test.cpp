@@ -13,6 +13,9 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sys/stat.h>
+#include <thread>
+#include <algorithm>
 #include <signal.h>
 #include <sstream>
 
@@ -283,4 +286,83 @@ TEST(Integrity, ARerunWithOtherStudyOptionsDoesNotAppendASecondStudy) {
   EXPECT_EQ(s.exitCode, 2) << s.err;
   EXPECT_NE(s.err.find("--size: o/study.csv holds scene sphere_triangle at 8 x 8"), std::string::npos) << s.err;
   EXPECT_EQ(readText((d / "o" / "study.csv").string()), before);
+}
+
+// Class 4: files that are not plain files.
+TEST(NonPlainOutputs, TextGoesThroughAFifoAndLinksStayLinks) {
+  const fs::path d = dirFor("fifo");
+  const fs::path fifo = d / "pipe.csv";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  // A reader drains the FIFO (opening it blocks until filterprofile opens it for writing).
+  std::string got;
+  std::thread reader([&] { got = readText(fifo.string()); });
+  const auto r = runProcess({std::string(ALIASLAB_BIN_DIR) + "/filterprofile", "--out", fifo.string()}, d.string(),
+                            (d / "logs").string());
+  reader.join();
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(fs::is_fifo(fifo)) << "the FIFO was replaced by a regular file";
+  EXPECT_GT(std::count(got.begin(), got.end(), '\n'), 100);
+
+  // A symbolic link is followed: the link stays, its target gets the text.
+  fs::create_symlink("target.csv", d / "link.csv");
+  const auto l = runProcess({std::string(ALIASLAB_BIN_DIR) + "/filterprofile", "--out", "link.csv"}, d.string(),
+                            (d / "logs").string());
+  EXPECT_EQ(l.exitCode, 0) << l.err;
+  EXPECT_TRUE(fs::is_symlink(d / "link.csv"));
+  EXPECT_EQ(readText((d / "target.csv").string()), got);
+}
+
+TEST(NonPlainOutputs, AnImageOntoADeviceIsRefused) {
+  const fs::path d = dirFor("device");
+  fs::create_symlink("/dev/null", d / "null.png");
+  const auto r = runProcess({std::string(ALIASLAB_BIN_DIR) + "/raytracer", "-input", kScene, "-size", "8", "8",
+                             "-output", "null.png"},
+                            d.string(), (d / "logs").string());
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("null.png: not a regular file"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
+}
+
+TEST(NonPlainOutputs, AnOutputEqualToAnInputIsRefused) {
+  const fs::path d = dirFor("same");
+  fs::copy_file(kScene, d / "in.png");
+  const std::string scene = readText((d / "in.png").string());
+  const auto r = runProcess({std::string(ALIASLAB_BIN_DIR) + "/raytracer", "-input", "in.png", "-size", "8", "8",
+                             "-output", "./in.png"},
+                            d.string(), (d / "logs").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("-output: './in.png' is also an input"), std::string::npos) << r.err;
+  EXPECT_EQ(readText((d / "in.png").string()), scene);
+  // The sweep's CSV onto its scene file.
+  fs::copy_file(kScene, d / "s.csv");
+  const auto s = sweep(d, {"--scenes", "s.csv", "--seeds", "2", "--out", "o", "--csv", "s.csv"});
+  EXPECT_EQ(s.exitCode, 2) << s.err;
+  EXPECT_NE(s.err.find("--csv: 's.csv' is also an input"), std::string::npos) << s.err;
+  EXPECT_EQ(readText((d / "s.csv").string()), scene);
+}
+
+// Class 5: configuration files say what they mean.
+TEST(ConfigFiles, UnknownKeysAndSectionsAreErrorsNamingKeyAndLine) {
+  const fs::path d = dirFor("config");
+  const std::pair<std::string, std::string> cases[] = {
+      {"[sweep]\nseeds = 4\n", "c.toml:1: section [sweep]"},
+      {"# a study\nseeds = 4\nsede = 3\n", "c.toml:3: unknown key 'sede'"},
+      {"seeds = 4\nsamplers\n", "c.toml:2: expected 'key = value'"},
+  };
+  for (const auto& [text, expect] : cases) {
+    std::ofstream(d / "c.toml") << text;
+    const auto r = sweep(d, scene() + std::vector<std::string>{"--config", "c.toml", "--out", "o"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("sweep: --config: " + expect), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(d / "o" / "study.csv"));
+  }
+  // Known keys, with '_' for '-', still work.
+  std::ofstream(d / "c.toml") << "# a study\nseeds = 2\nref_spp = 32\n";
+  const auto ok = runProcess({kSweep, "--config", "c.toml", "--scenes", kScene, "--samplers", "random", "--spp", "4",
+                              "--filters", "box", "--radii", "1", "--size", "8", "8", "--cache", "cache", "--quiet",
+                              "--no-images", "--out", "o"},
+                             d.string(), (d / "logs").string());
+  EXPECT_EQ(ok.exitCode, 0) << ok.err;
+  const std::string csv = readText((d / "o" / "study.csv").string());
+  EXPECT_NE(csv.find(",2,"), std::string::npos);
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <string>
 
 namespace aliaslab {
 
@@ -45,11 +47,56 @@ inline void refuseNonFiniteNumbers(const CLI::App& app) {
   }
 }
 
+/// Checks a --config file strictly before CLI11 reads it (CLI11 silently drops unknown keys and every key under
+/// a [section]): every line must be blank, a comment (# or ;) or `key = value` with `key` a long option of
+/// `app` (without the dashes; '_' may stand for '-'). Returns "" or "<file>:<line>: <problem>".
+inline std::string checkConfigFile(const CLI::App& app, const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return path + ": cannot open the --config file";
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    auto trim = [](std::string t) {
+      const size_t a = t.find_first_not_of(" \t\r"), b = t.find_last_not_of(" \t\r");
+      return a == std::string::npos ? std::string() : t.substr(a, b - a + 1);
+    };
+    const std::string t = trim(line);
+    const std::string where = path + ":" + std::to_string(n) + ": ";
+    if (t.empty() || t[0] == '#' || t[0] == ';') continue;
+    if (t[0] == '[')
+      return where + "section " + t + " is not supported: write the options as top-level keys (e.g. seeds = 8)";
+    const size_t eq = t.find('=');
+    if (eq == std::string::npos) return where + "expected 'key = value', found '" + t + "'";
+    std::string key = trim(t.substr(0, eq));
+    if (key.size() >= 2 && (key.front() == '"' || key.front() == '\'') && key.back() == key.front())
+      key = key.substr(1, key.size() - 2);
+    std::string dashed = key;
+    for (char& c : dashed) c = c == '_' ? '-' : c;
+    const CLI::Option* opt = app.get_option_no_throw("--" + key);
+    if (!opt) opt = app.get_option_no_throw("--" + dashed);
+    if (!opt || key.empty() || key.rfind("-", 0) == 0 || opt == app.get_config_ptr() || opt == app.get_help_ptr())
+      return where + "unknown key '" + key + "' (keys are the long option names of --help, without the dashes)";
+  }
+  return {};
+}
+
 /// Parses argv into `app`. Returns -1 when the program should go on;
 /// otherwise the exit code: 0 after printing --help, 2 after printing a
 /// usage error as "<program>: <message>" (CLI11's own codes are not used,
 /// so every front end exits 2 for bad options).
 inline int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
+  if (const CLI::Option* config = app.get_config_ptr())
+    for (int i = 1; i + 1 < argc; ++i) {
+      const std::string a = argv[i];
+      std::string file;
+      for (const std::string& name : config->get_lnames())
+        if (a == "--" + name) file = argv[i + 1];
+        else if (a.rfind("--" + name + "=", 0) == 0) file = a.substr(name.size() + 3);
+      if (file.empty()) continue;
+      if (const std::string problem = checkConfigFile(app, file); !problem.empty()) {
+        std::fprintf(stderr, "%s: --config: %s\n", program, problem.c_str());
+        return 2;
+      }
+    }
   try {
     app.parse(argc, argv);
     refuseNonFiniteNumbers(app);

@@ -235,9 +235,10 @@ void validateStudy(const StudyConfig& c) {
       relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
     });
 
-  // Scenes: present and parseable, with a known size.
+  // Scenes: present and parseable, with a known size; never the CSV this run writes.
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
+    refuseOutputOverInput("--csv", csvPath(c), {path});
     loadStudyScene(path, c.width, c.height, c.maxSize);
   }
 
