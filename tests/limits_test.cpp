@@ -148,3 +148,51 @@ TEST(FloatRange, NanIsRefusedByEveryNumericOptionOfEveryProgram) {
   }
   EXPECT_FALSE(fs::exists(d / "x.png"));
 }
+
+namespace {
+// Materials 0, 1 Phong; then each procedural material blends material i-1 with `second(i)`.
+std::string materialChain(const std::string& kind, int count, bool doubling) {
+  std::ostringstream s;
+  s << "OrthographicCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 size 6 }\n"
+    << "Materials { numMaterials " << count << "\nPhongMaterial { }\nPhongMaterial { }\n";  // lines 2-4
+  for (int i = 2; i < count; ++i)  // material i on line i + 3
+    s << kind << " { materialIndex " << i - 1 << " materialIndex " << (doubling ? i - 1 : 0)
+      << (kind == "Noise" ? " octaves 1" : "") << " }\n";
+  s << "}\nGroup { numObjects 1 MaterialIndex " << count - 1 << " Sphere { center 0 0 0 radius 1 } }\n";
+  return s.str();
+}
+int parseLine(const std::string& text) {
+  try {
+    parseSceneText(text, "m.txt", ".");
+  } catch (const ParseError& e) {
+    return e.line();
+  }
+  return 0;
+}
+}  // namespace
+
+TEST(BoundedWork, MaterialNestingStopsAt256LevelsNamingTheLine) {
+  // 256 levels (Phong + 255 Checkerboards) parse; one more fails at the 257th level's line.
+  EXPECT_EQ(parseLine(materialChain("Checkerboard", 257, false)), 0);
+  EXPECT_EQ(parseLine(materialChain("Checkerboard", 258, false)), 257 + 3);
+  // 50,000 levels (a stack overflow before) fail at the same line, at once.
+  EXPECT_EQ(parseLine(materialChain("Checkerboard", 50000, false)), 257 + 3);
+}
+
+TEST(BoundedWork, MaterialsThatDoubleTheWorkPerLevelAreRefused) {
+  // Blending material i-1 twice: material i costs 2^(i-1) Phong evaluations; 2^16 is the limit.
+  EXPECT_EQ(parseLine(materialChain("Noise", 18, true)), 0);        // material 17: 2^16
+  EXPECT_EQ(parseLine(materialChain("Noise", 30, true)), 18 + 3);   // material 18: 2^17
+}
+
+TEST(BoundedWork, ASizeThatCannotFitFailsBeforeAllocatingNamingTheMemory) {
+  const fs::path d = dirFor("memory");
+  const auto r = runProcess({kBin + "/sweep", "--scenes", ALIASLAB_SOURCE_DIR "/scenes/sphere_triangle.txt", "--size",
+                             "16384", "16384", "--spp", "4096", "--out", "o", "--cache", "c", "--quiet"},
+                            d.string(), (d / "logs").string());
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("sweep: --size: sphere_triangle at 16384 x 16384 and 4096 spp needs about"), std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("GB of memory"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(d / "o"));
+}

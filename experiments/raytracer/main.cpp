@@ -57,6 +57,10 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   // Filter visualisation needs no scene.
   if (!o.renderFilter.empty()) images.emplace_back(o.renderFilter[0], renderFilterImage(plan, o));
 
+  // Memory first: the traced samples of the whole image, the image and each further picture.
+  requireMemory(double(w) * h * (double(plan.sampler->spp()) * sizeof(FilmSample) + 5 * 3 * sizeof(float)), "-size",
+                "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " +
+                    std::to_string(plan.sampler->spp()) + " samples per pixel");
   // Scene, accelerator, tracer.
   const Scene scene = parseScene(o.input);
   // No output may overwrite an input: the scene is checked with the options, its OBJ files here.

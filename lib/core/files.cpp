@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,16 @@ std::string temporaryPathFor(const std::string& path) {
   static std::atomic<unsigned long> counter{0};
   return path + ".partial." + std::to_string(::getpid()) + "." + std::to_string(counter++) +
          std::filesystem::path(path).extension().string();
+}
+
+void requireMemory(double bytes, const std::string& option, const std::string& what) {
+  const double physical = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+  if (physical > 0 && bytes > physical) {
+    char text[160];
+    std::snprintf(text, sizeof text, "%s needs about %.1f GB of memory, more than this machine has (%.1f GB)",
+                  what.c_str(), bytes / 1e9, physical / 1e9);
+    throw OptionError(option, text);
+  }
 }
 
 std::string lastSystemError() { return std::strerror(errno); }

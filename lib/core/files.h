@@ -39,6 +39,10 @@ void refuseOutputOverInput(const std::string& option, const std::string& output,
 /// sub-folders: those whose process <pid> is no longer running. Returns how many were removed.
 size_t removeStaleTemporaries(const std::string& dir);
 
+/// Fails before allocating: throws OptionError(option) when `bytes` (an estimate of what `what` needs) exceeds
+/// the machine's physical memory, with the figure in the message (instead of std::bad_alloc after a long wait).
+void requireMemory(double bytes, const std::string& option, const std::string& what);
+
 /// "<strerror(errno)>", e.g. "No space left on device", for messages after a failed system call.
 std::string lastSystemError();
 

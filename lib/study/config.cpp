@@ -16,6 +16,7 @@
 #include "filter/filter.h"
 #include "sampling/sampler.h"
 #include "study/csv.h"
+#include "study/sweep.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {
@@ -239,7 +240,13 @@ void validateStudy(const StudyConfig& c) {
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     refuseOutputOverInput("--csv", csvPath(c), {path});
-    loadStudyScene(path, c.width, c.height, c.maxSize);
+    const auto scene = loadStudyScene(path, c.width, c.height, c.maxSize);
+    // Memory, before any allocation: one sample set at the largest spp plus an image per configuration (estimate).
+    const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
+    const double pixels = double(scene->width) * scene->height;
+    requireMemory(pixels * (maxSpp * double(sizeof(FilmSample)) + 12.0 * 4 * (countConfigurations(c) + 2)), "--size",
+                  scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) +
+                      " and " + std::to_string(maxSpp) + " spp");
   }
 
   // Output folders: all or none (a failed check removes the folders made before it).
