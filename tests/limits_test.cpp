@@ -196,3 +196,28 @@ TEST(BoundedWork, ASizeThatCannotFitFailsBeforeAllocatingNamingTheMemory) {
   EXPECT_NE(r.err.find("GB of memory"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(d / "o"));
 }
+
+TEST(BoundedWork, TheRayTreeOfOneSampleIsCappedAndSaysSo) {
+  // Two touching glass spheres, reflective and transparent colour 1, -bounces 1000: without a cap the work per
+  // sample doubles every level (hours); with it the render ends, warns, and does not depend on the thread count.
+  const fs::path d = dirFor("raytree");
+  std::ofstream(d / "glass.txt")
+      << "PerspectiveCamera { center 0 0 10 direction 0 0 -1 up 0 1 0 angle 30 }\n"
+         "Lights { numLights 1 DirectionalLight { direction -1 -1 -1 color 1 1 1 } }\n"
+         "Materials { numMaterials 1 PhongMaterial { diffuseColor 0.1 0.1 0.1 reflectiveColor 1 1 1 "
+         "transparentColor 1 1 1 indexOfRefraction 1.5 } }\n"
+         "Group { numObjects 2 Sphere { center -1.05 0 0 radius 1 } Sphere { center 1.05 0 0 radius 1 } }\n";
+  std::string images[2];
+  for (int threads : {1, 2}) {
+    const std::string out = "g" + std::to_string(threads) + ".png";  // (EXR headers carry a date)
+    const auto r = runProcess({kBin + "/raytracer", "-input", "glass.txt", "-size", "24", "24", "-bounces", "1000",
+                               "-output", out, "--threads", std::to_string(threads)},
+                              d.string(), (d / "logs").string());
+    ASSERT_FALSE(r.signaled);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("reached the cap of 65536 reflected/refracted rays per sample"), std::string::npos) << r.err;
+    images[threads - 1] = aliaslab::testing::readText((d / out).string());
+  }
+  EXPECT_FALSE(images[0].empty());
+  EXPECT_EQ(images[0], images[1]);
+}

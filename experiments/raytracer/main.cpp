@@ -92,6 +92,9 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   if (!o.depth.empty())
     images.emplace_back(o.depth[2], renderDepth(tracer, w, h, std::stof(o.depth[0]), std::stof(o.depth[1]), o.threads));
   if (!o.normals.empty()) images.emplace_back(o.normals, renderNormals(tracer, w, h, o.threads));
+  if (const uint64_t capped = samplesWithCappedRayTrees())
+    std::cerr << "raytracer: warning: " << capped << " samples reached the cap of " << kMaxSecondaryRaysPerSample
+              << " reflected/refracted rays per sample; their ray trees were cut (lower -bounces or raise -weight)\n";
   const auto t3 = Clock::now();
   refuseNonFinite(o.input, images);
   writeAll(images);
