@@ -196,8 +196,10 @@ TEST(SweepShards, MergeRefusesAnIncompleteSetOfShardFiles) {
   EXPECT_EQ(run("--merge " + merged + " " + shard[0] + " " + shard[2], &output), 2);
   EXPECT_NE(output.find("--merge: shard 1 of 3 is missing"), std::string::npos) << output;
   EXPECT_FALSE(fs::exists(merged));
-  EXPECT_EQ(run("--merge " + merged + " " + shard[2] + " " + shard[0] + " " + shard[1], &output), 0) << output;
-  EXPECT_TRUE(fs::exists(merged));
+  // Every shard there but none with a row: rows were lost (a study has at least one configuration).
+  EXPECT_EQ(run("--merge " + merged + " " + shard[2] + " " + shard[0] + " " + shard[1], &output), 2) << output;
+  EXPECT_NE(output.find("holds no rows"), std::string::npos) << output;
+  EXPECT_FALSE(fs::exists(merged));
 
   // In-process: every shard once, of one split; other names are not checked.
   EXPECT_NO_THROW(checkShardSet({"a/study.shard-1-of-2.csv", "b/study.shard-0-of-2.csv", "mine.csv"}));

@@ -10,6 +10,7 @@
 #include "accel/aggregate.h"
 #include "core/cli.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/image.h"
 #include "core/parallel.h"
 #include "options.h"
@@ -40,6 +41,16 @@ void writeAll(const std::vector<std::pair<std::string, Image>>& images) {
   }
 }
 
+/// No image with NaN or infinite pixels is written (values beyond float range, e.g. a light of 3e38 on a colour
+/// of 3e38): InputError naming the scene, the image and the count, before anything is written.
+void refuseNonFinite(const std::string& scene, const std::vector<std::pair<std::string, Image>>& images) {
+  for (const auto& [path, image] : images)
+    if (const size_t n = countNonFinitePixels(image))
+      throw InputError(scene + ": " + std::to_string(n) + " of " + std::to_string(size_t(image.width()) * image.height()) +
+                       " pixels of " + path + " are NaN or infinite (lights or colours whose products exceed float "
+                       "range, about 3.4e38?); no image written");
+}
+
 int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t0 = Clock::now();
   const int w = o.size[0], h = o.size[1];
@@ -48,8 +59,19 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   // Filter visualisation needs no scene.
   if (!o.renderFilter.empty()) images.emplace_back(o.renderFilter[0], renderFilterImage(plan, o));
 
+  // Memory first: the traced samples of the whole image, the image and each further picture.
+  requireMemory(double(w) * h * (double(plan.sampler->spp()) * sizeof(FilmSample) + 5 * 3 * sizeof(float)), "-size",
+                "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " +
+                    std::to_string(plan.sampler->spp()) + " samples per pixel");
   // Scene, accelerator, tracer.
   const Scene scene = parseScene(o.input);
+  // No output may overwrite an input: the scene is checked with the options, its OBJ files here.
+  const std::pair<const char*, std::string> outputs[] = {
+      {"-output", o.output}, {"-normals", o.normals}, {"-depth", o.depth.empty() ? "" : o.depth[2]},
+      {"-render_samples", o.renderSamples.empty() ? "" : o.renderSamples[0]},
+      {"-render_filter", o.renderFilter.empty() ? "" : o.renderFilter[0]}};
+  for (const auto& [option, path] : outputs)
+    if (!path.empty()) refuseOutputOverInput(option, path, scene.dependencies);
   const auto t1 = Clock::now();
   std::unique_ptr<Aggregate> aggregate =
       o.bruteForce ? makeBruteForce(*scene.root)
@@ -68,13 +90,18 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   // Colour image (and sample visualisation), depth, normals.
   if (!o.output.empty() || !o.renderSamples.empty()) {
     RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+    refuseNonFinite(o.input, {{o.output.empty() ? o.renderSamples[0] : o.output, r.image}});  // (the samples' colours)
     if (!o.output.empty()) images.emplace_back(o.output, std::move(r.image));
     if (!o.renderSamples.empty()) images.emplace_back(o.renderSamples[0], renderSamplesImage(r, o));
   }
   if (!o.depth.empty())
     images.emplace_back(o.depth[2], renderDepth(tracer, w, h, std::stof(o.depth[0]), std::stof(o.depth[1]), o.threads));
   if (!o.normals.empty()) images.emplace_back(o.normals, renderNormals(tracer, w, h, o.threads));
+  if (const uint64_t capped = samplesWithCappedRayTrees())
+    std::cerr << "raytracer: warning: " << capped << " samples reached the cap of " << kMaxSecondaryRaysPerSample
+              << " reflected/refracted rays per sample; their ray trees were cut (lower -bounces or raise -weight)\n";
   const auto t3 = Clock::now();
+  refuseNonFinite(o.input, images);
   writeAll(images);
   const auto t4 = Clock::now();
 
@@ -109,6 +136,7 @@ int main(int argc, char** argv) {
     std::vector<std::string> args = translateClassicFlags(argc, argv);
     std::reverse(args.begin(), args.end());  // CLI11 takes a vector in reverse order
     app.parse(args);
+    refuseNonFiniteNumbers(app);
   } catch (const OptionError& e) {
     std::cerr << "raytracer: " << e.what() << "\nRun with --help for the options.\n";
     return 2;

@@ -7,6 +7,7 @@
 
 #include "core/cli.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/image.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
@@ -198,6 +199,7 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
       if (same(files[a].second, files[b].second))
         throw OptionError(files[b].first, "'" + files[b].second + "' is also the " + files[a].first +
                                               " file; give each image its own name");
+  for (const auto& [option, path] : files) refuseOutputOverInput(option, path, {o.input});  // any output = an input
   if (o.output.empty() && o.normals.empty() && o.depth.empty() && o.renderSamples.empty() && o.renderFilter.empty())
     throw OptionError("-output", "nothing to write: give -output, -depth, -normals, -render_samples or -render_filter");
 

@@ -24,6 +24,7 @@
 #include "study/config.h"
 #include "study/contact.h"
 #include "study/csv.h"
+#include "study/lock.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;
@@ -125,6 +126,7 @@ int main(int argc, char** argv) {
   try {
     if (!merge.empty()) {
       checkShardSet(std::vector<std::string>(merge.begin() + 1, merge.end()));
+      const CsvLock lock(merge[0], "sweep --merge");
       mergeCsvFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
       // Contact sheets of the whole study when the shards wrote images beside it.
       const auto images = std::filesystem::path(merge[0]).parent_path() / "images";

@@ -12,9 +12,14 @@
 // Primitive boxes are padded, DDA crossings are computed in double, and
 // marching stops only once the best t is a small tolerance before the
 // current cell's exit, so no closer hit can lie in an unvisited cell.
+// Any finite coordinates are safe: extents and cell positions are computed
+// in double and cell indices clamped before conversion (cellIndex), so a
+// sphere of radius 1e19 or OBJ vertices at 1e38 give brute force's image.
 // A small per-ray mailbox skips re-testing a triangle met in an earlier cell
 // (the repeated test would give the same t against a bound that only shrinks).
 #pragma once
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -22,6 +27,15 @@
 #include "geometry/triangle_math.h"
 
 namespace aliaslab {
+
+inline constexpr double kFloatMax = 3.4028234663852886e38;
+
+/// The cell of a position in cell units, clamped to [0, n-1] before conversion (a double beyond int's range,
+/// +-inf or NaN is undefined behaviour in a cast): NaN gives `ifNaN`. Finite input of any size is safe.
+inline int cellIndex(double cells, int n, int ifNaN) {
+  if (std::isnan(cells)) return ifNaN;
+  return static_cast<int>(std::clamp(std::floor(cells), 0.0, static_cast<double>(n - 1)));
+}
 
 class Grid final : public Aggregate {
  public:

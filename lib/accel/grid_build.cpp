@@ -42,14 +42,17 @@ Grid::Grid(const Object& root, int nx, int ny, int nz) {
   if (triBoxes.empty()) return;  // nothing to grid: only planes (or nothing)
 
   // Padded bounds: a hit point may round slightly outside its primitive's box
-  const float maxAbs = std::max(world.min.cwiseAbs().maxCoeff(), world.max.cwiseAbs().maxCoeff());
-  const float pad = 1e-5f * world.extent().norm() + 1e-6f * maxAbs + 1e-30f;
+  // (in double: at coordinates near the float limit the extent's norm overflows float, and an infinite pad made
+  // every cell size NaN and the resolution a garbage int: a crash)
+  const double maxAbs = std::max(world.min.cwiseAbs().maxCoeff(), world.max.cwiseAbs().maxCoeff());
+  const float pad = static_cast<float>(
+      std::min(1e-5 * world.extent().cast<double>().norm() + 1e-6 * maxAbs + 1e-30, 1e-3 * double(kFloatMax)));
   for (int a = 0; a < 3; ++a) {
     lo_[a] = static_cast<double>(world.min[a]) - 2 * pad;
     hi_[a] = static_cast<double>(world.max[a]) + 2 * pad;
   }
-  diag_ = static_cast<float>(std::sqrt((hi_[0] - lo_[0]) * (hi_[0] - lo_[0]) + (hi_[1] - lo_[1]) * (hi_[1] - lo_[1]) +
-                                       (hi_[2] - lo_[2]) * (hi_[2] - lo_[2])));
+  diag_ = static_cast<float>(std::min(double(kFloatMax), std::sqrt((hi_[0] - lo_[0]) * (hi_[0] - lo_[0]) + (hi_[1] - lo_[1]) * (hi_[1] - lo_[1]) +
+                                       (hi_[2] - lo_[2]) * (hi_[2] - lo_[2]))));
   chooseResolution(nx, ny, nz);
   for (auto& b : triBoxes) {
     b.min.array() -= pad;
@@ -81,8 +84,8 @@ void Grid::fillCells(const std::vector<BBox>& boxes, float pad) {
   // Cell range of a box, per axis
   auto range = [&](const BBox& b, int lo[3], int hi[3]) {
     for (int a = 0; a < 3; ++a) {
-      lo[a] = std::clamp(static_cast<int>(std::floor((b.min[a] - lo_[a]) * invSize_[a])), 0, n_[a] - 1);
-      hi[a] = std::clamp(static_cast<int>(std::floor((b.max[a] - lo_[a]) * invSize_[a])), 0, n_[a] - 1);
+      lo[a] = cellIndex((b.min[a] - lo_[a]) * invSize_[a], n_[a], 0);
+      hi[a] = cellIndex((b.max[a] - lo_[a]) * invSize_[a], n_[a], n_[a] - 1);
     }
   };
   // Cells a primitive overlaps: its box range, pruned for triangles by the

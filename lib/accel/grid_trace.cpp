@@ -56,7 +56,7 @@ void Grid::march(const Ray& ray, double t0, double t1, Visit&& visit) const {
   auto boundary = [&](int a, int c) { return ((lo_[a] + c * size_[a]) - o[a]) * inv[a]; };
   for (int a = 0; a < 3; ++a) {
     const double p = d[a] == 0.0 ? o[a] : o[a] + t0 * d[a];
-    int c = std::clamp(static_cast<int>(std::floor((p - lo_[a]) * invSize_[a])), 0, n_[a] - 1);
+    int c = cellIndex((p - lo_[a]) * invSize_[a], n_[a], 0);
     if (d[a] > 0.0) {
       while (c > 0 && boundary(a, c) > t0) --c;
       while (c < n_[a] - 1 && boundary(a, c + 1) <= t0) ++c;

@@ -15,8 +15,36 @@ namespace aliaslab {
 /// sharing an output folder) never share a temporary.
 std::string temporaryPathFor(const std::string& path);
 
-/// Writes text to a file atomically (temporary + rename). Throws FileError.
+/// Writes text to a file atomically (temporary + rename; see outputTarget for links and devices). Throws
+/// FileError naming the file and the system's reason (e.g. "No space left on device").
 void writeTextFile(const std::string& path, const std::string& text);
+
+/// Where a write to `path` lands. Symbolic links are followed (the link stays a link and its final target is
+/// replaced); `special` is true when that target exists and is not a regular file or folder (a device such as
+/// /dev/stdout, a FIFO): text is then written straight through (no temporary, no rename), images are refused.
+struct OutputTarget {
+  std::string path;      ///< the final target (links resolved)
+  bool special = false;  ///< an existing device, FIFO or socket
+};
+OutputTarget outputTarget(const std::string& path);
+
+/// True when a and b name the same file (same inode when both exist, else the same normalised absolute path).
+bool sameFile(const std::string& a, const std::string& b);
+
+/// Throws OptionError(option) when `output` is any of `inputs` (writing it would destroy an input).
+void refuseOutputOverInput(const std::string& option, const std::string& output,
+                           const std::vector<std::string>& inputs);
+
+/// Removes the temporaries ("*.partial.<pid>.*", see temporaryPathFor) that a killed run left in `dir` and its
+/// sub-folders: those whose process <pid> is no longer running. Returns how many were removed.
+size_t removeStaleTemporaries(const std::string& dir);
+
+/// Fails before allocating: throws OptionError(option) when `bytes` (an estimate of what `what` needs) exceeds
+/// the machine's physical memory, with the figure in the message (instead of std::bad_alloc after a long wait).
+void requireMemory(double bytes, const std::string& option, const std::string& what);
+
+/// "<strerror(errno)>", e.g. "No space left on device", for messages after a failed system call.
+std::string lastSystemError();
 
 /// Runs argv[0] (found on PATH when it has no slash) with argv[1..] as its arguments, without a shell (so
 /// paths need no quoting), waits, and returns its exit status (-1 when it could not start or was killed).

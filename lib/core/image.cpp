@@ -3,6 +3,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <system_error>
@@ -28,6 +30,16 @@ std::string lowerExtension(const std::string& path) {
   return ext;
 }
 }  // namespace
+
+size_t countNonFinitePixels(const Image& image) {
+  size_t n = 0;
+  const size_t pixels = static_cast<size_t>(image.width()) * image.height();
+  for (size_t i = 0; i < pixels; ++i) {
+    const float* p = image.data() + 3 * i;
+    n += !(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]));
+  }
+  return n;
+}
 
 bool isSupportedImageExtension(const std::string& path) {
   const std::string ext = lowerExtension(path);
@@ -55,19 +67,25 @@ void writeImage(const std::string& path, const Image& image) {
       }
 
   // Write beside the target, then rename: no half-written output.
-  const std::filesystem::path target(path);
-  const std::filesystem::path tmp = temporaryPathFor(path);
+  // Links are followed; a device or FIFO is refused (an image is written whole, then renamed into place).
+  const OutputTarget where = outputTarget(path);
+  if (where.special)
+    throw FileError(path, "not a regular file (a device, FIFO or socket): images are written to regular files only");
+  const std::filesystem::path target(where.path);
+  const std::filesystem::path tmp = temporaryPathFor(where.path);
   auto out = OIIO::ImageOutput::create(path);
   if (!out) throw FileError(path, "cannot create an image writer: " + OIIO::geterror());
   OIIO::ImageSpec spec(w, h, 3, eightBit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT);
   if (!out->open(tmp.string(), spec)) throw FileError(path, "cannot open for writing: " + out->geterror());
+  errno = 0;
   const bool ok = eightBit ? out->write_image(OIIO::TypeDesc::UINT8, bytes.data())
                            : out->write_image(OIIO::TypeDesc::FLOAT, flt.data());
   const bool closed = out->close();
   std::error_code ec;
   if (!ok || !closed) {
+    const std::string why = out->geterror() + (errno ? " (" + lastSystemError() + ")" : std::string());
     std::filesystem::remove(tmp, ec);
-    throw FileError(path, "write failed: " + out->geterror());
+    throw FileError(path, "write failed: " + why);
   }
   std::filesystem::rename(tmp, target, ec);
   if (ec) {

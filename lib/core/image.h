@@ -44,6 +44,10 @@ void writeImage(const std::string& path, const Image& image);
 /// Reads any format OpenImageIO knows (first three channels). Throws FileError.
 Image readImage(const std::string& path);
 
+/// Number of pixels with a NaN or infinite channel. Front ends refuse to write such an image silently
+/// (raytracer, the references of sweep and reference): values beyond float range are not a picture.
+size_t countNonFinitePixels(const Image& image);
+
 /// True when the extension is one writeImage accepts (.png, .tga, .exr).
 bool isSupportedImageExtension(const std::string& path);
 

@@ -83,8 +83,25 @@ RayCounts TraceCounters::total() const {
 Tracer::Tracer(const Scene& scene, const Aggregate& aggregate, const TraceOptions& options)
     : scene_(scene), aggregate_(aggregate), options_(options) {}
 
+namespace {
+// Secondary rays left to the current primary sample (reset at depth 0; per thread, and one sample is traced by
+// one thread in a fixed order, so a cut tree is the same whatever the thread count).
+thread_local uint32_t tSecondaryLeft = 0;
+thread_local bool tCapped = false;
+std::atomic<uint64_t> gCappedSamples{0};
+// Takes one secondary ray from the budget; false (and the sample counted once) when it is spent.
+bool takeSecondaryRay() {
+  if (tSecondaryLeft > 0) return --tSecondaryLeft, true;
+  if (!tCapped) tCapped = true, gCappedSamples.fetch_add(1, std::memory_order_relaxed);
+  return false;
+}
+}  // namespace
+
+uint64_t samplesWithCappedRayTrees() { return gCappedSamples.load(); }
+
 Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float ior, Hit& hit,
                     const RayFootprint* footprint) const {
+  if (depth == 0) tSecondaryLeft = kMaxSecondaryRaysPerSample, tCapped = false;
   hit = Hit{};
   if (!aggregate_.intersect(ray, tmin, hit)) return scene_.background;
 
@@ -129,7 +146,7 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
   // Mirror reflection
   const Color reflective = m.reflective();
   const float reflectWeight = weight * maxComponent(reflective);
-  if (maxComponent(reflective) > 0.f && reflectWeight >= options_.weight) {
+  if (maxComponent(reflective) > 0.f && reflectWeight >= options_.weight && takeSecondaryRay()) {
     counters_.add(TraceCounters::Reflected);
     Hit h;
     const Ray r{p.p, mirrorDirection(d, n)};
@@ -144,7 +161,7 @@ Color Tracer::trace(const Ray& ray, float tmin, int depth, float weight, float i
     const Vec3 facing = backFace ? Vec3(-hit.normal) : hit.normal;
     const float eta = backFace ? materialIor : 1.f / materialIor;
     Vec3 t;
-    if (refractDirection(d, facing, eta, t)) {
+    if (refractDirection(d, facing, eta, t) && takeSecondaryRay()) {
       counters_.add(TraceCounters::Refracted);
       Hit h;
       const Ray r{p.p, t};

@@ -38,6 +38,13 @@
 
 namespace aliaslab {
 
+/// Work per sample is bounded: one primary sample spawns at most this many reflected and refracted rays in
+/// all (its ray tree is cut, depth first, once they are spent). Two facing glass spheres with -bounces 1000
+/// would otherwise double the work every level. samplesWithCappedRayTrees() counts the samples cut so far
+/// (the raytracer warns with the count).
+inline constexpr uint32_t kMaxSecondaryRaysPerSample = 1u << 16;
+uint64_t samplesWithCappedRayTrees();
+
 struct TraceOptions {
   bool shadows = false;     ///< -shadows: cast shadow rays (transparent objects shadow as opaque)
   int bounces = 0;          ///< -bounces n: maximum reflection/refraction depth

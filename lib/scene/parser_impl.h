@@ -19,6 +19,11 @@ namespace aliaslab::detail {
 
 /// Deepest nesting of Group / Transform blocks accepted (guards the stack).
 inline constexpr int kMaxNesting = 256;
+/// Procedural materials blend two earlier ones, which may blend others: at most 256 levels of such nesting,
+/// and at most 65536 Phong evaluations behind one shading query (a chain of materials that each blend the
+/// previous one twice doubles the work per level: 30 levels would be 2^30 evaluations per hit).
+inline constexpr int kMaxMaterialNesting = 256;
+inline constexpr double kMaxMaterialEvaluations = 65536;
 
 class SceneParser {
  public:
@@ -48,6 +53,8 @@ class SceneParser {
   Scene& scene_;
   std::string baseDir_;
   int current_ = -1;  ///< current MaterialIndex, -1 before the first one
+  std::vector<int> materialDepth_;       ///< nesting level of each material (Phong: 1)
+  std::vector<double> materialCost_;     ///< Phong evaluations behind one query of each material
 };
 
 }  // namespace aliaslab::detail

@@ -2,6 +2,10 @@
 #include "scene/parser_fields.h"
 #include "scene/parser_impl.h"
 
+#include <algorithm>
+
+#include "core/format.h"
+
 namespace aliaslab::detail {
 
 void SceneParser::parseMaterials() {
@@ -52,6 +56,8 @@ std::unique_ptr<Material> SceneParser::parseMaterial(const Token& keyword, int i
   p.indexOfRefraction = f.number("indexOfRefraction", p.indexOfRefraction);
   if (p.exponent < 0.f) f.fail("exponent", "must not be negative");
   if (!(p.indexOfRefraction > 0.f)) f.fail("indexOfRefraction", "must be positive");
+  materialDepth_.resize(static_cast<size_t>(index) + 1, 1), materialDepth_[index] = 1;
+  materialCost_.resize(static_cast<size_t>(index) + 1, 1), materialCost_[index] = 1;
   return makePhong(p);
 }
 
@@ -73,6 +79,8 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
 
   // Two earlier materials.
   const Material* blend[2];
+  int depth = 1;
+  double cost = 0;
   for (const Material*& mat : blend) {
     t_.expect("materialIndex", "in " + kind);
     const int line = t_.peek().line;
@@ -82,7 +90,19 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
                         (index == 0 ? " is invalid: a procedural material needs two earlier materials"
                                     : " must refer to an earlier material (0.." + std::to_string(index - 1) + ")"));
     mat = scene_.materials[k].get();
+    depth = std::max(depth, 1 + materialDepth_.at(k));
+    cost += materialCost_.at(k);
   }
+  if (depth > kMaxMaterialNesting)
+    t_.fail(keyword.line, kind + " (material " + std::to_string(index) + "): materials nested deeper than " +
+                              std::to_string(kMaxMaterialNesting) + " levels (each blends earlier materials)");
+  if (cost > kMaxMaterialEvaluations)
+    t_.fail(keyword.line, kind + " (material " + std::to_string(index) + "): one query would evaluate " +
+                              formatNumber(cost, "%.0f") + " Phong materials (the limit is " +
+                              formatNumber(kMaxMaterialEvaluations, "%.0f") +
+                              "): blending the same nested material twice doubles the work per level");
+  materialDepth_.resize(static_cast<size_t>(index) + 1, 1), materialDepth_[index] = depth;
+  materialCost_.resize(static_cast<size_t>(index) + 1, 1), materialCost_[index] = cost;
 
   // The pattern's own fields.
   const FieldSpec octaves{"octaves", FieldKind::Integer, 0, 32};

@@ -11,17 +11,44 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "core/format.h"
 #include "filter/filter.h"
 #include "render/adaptive.h"
 #include "sampling/sampler.h"
+#include "study/csv.h"
+#include "study/sweep.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {
 
 namespace fs = std::filesystem;
 
+namespace {
+std::vector<std::string> expandSceneList(const std::vector<std::string>& scenes);
+std::string formatValue(const std::string& s) { return "'" + s + "'"; }
+std::string formatValue(int v) { return std::to_string(v); }
+std::string formatValue(double v) { return formatNumber(v); }
+}
+
 std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes) {
+  std::vector<std::string> out = expandSceneList(scenes);
+  // Rows are keyed by the scene's file stem: two different files with one stem would share rows.
+  std::vector<std::string> unique;
+  std::map<std::string, std::string> byStem;
+  for (const std::string& s : out) {
+    const std::string stem = fs::path(s).stem().string();
+    const auto [it, fresh] = byStem.emplace(stem, s);
+    if (fresh) unique.push_back(s);
+    else if (!sameFile(it->second, s))
+      throw OptionError("--scenes", "two scenes have the same name '" + stem + "' ('" + it->second + "' and '" + s +
+                                        "'); the CSV keys rows by scene name, so rename one of them");
+  }
+  return unique;
+}
+
+namespace {
+std::vector<std::string> expandSceneList(const std::vector<std::string>& scenes) {
   std::vector<std::string> out;
   for (const std::string& s : scenes) {
     std::error_code ec;
@@ -38,6 +65,7 @@ std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes
   }
   return out;
 }
+}  // namespace
 
 std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config) {
   std::vector<std::pair<std::string, double>> out;
@@ -230,6 +258,14 @@ void validateStudy(const StudyConfig& c) {
   if (c.maxSize < 0) throw OptionError("--max-size", "must be >= 0");
   if (c.longSide < 0) throw OptionError("--long-side", "must be >= 0");
   parseTarget(c.target);
+  // A name or number listed twice would make every configuration of it twice (the CSV keeps one).
+  auto once = [](const auto& list, const char* option) {
+    for (size_t i = 0; i < list.size(); ++i)
+      for (size_t j = i + 1; j < list.size(); ++j)
+        if (list[i] == list[j]) throw OptionError(option, "lists " + formatValue(list[i]) + " twice");
+  };
+  once(c.samplers, "--samplers"), once(c.spp, "--spp"), once(c.filters, "--filters"), once(c.radii, "--radii");
+  once(c.reconstruction, "--reconstruction");
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("--spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
@@ -249,10 +285,17 @@ void validateStudy(const StudyConfig& c) {
       relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
     });
 
-  // Scenes: present and parseable, with a known size.
+  // Scenes: present and parseable, with a known size; never the CSV this run writes.
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
-    loadStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
+    refuseOutputOverInput("--csv", csvPath(c), {path});
+    const auto scene = loadStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
+    // Memory, before any allocation: one sample set at the largest spp plus an image per configuration (estimate).
+    const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
+    const double pixels = double(scene->width) * scene->height;
+    requireMemory(pixels * (maxSpp * double(sizeof(FilmSample)) + 12.0 * 4 * (countConfigurations(c) + 2)), "--size",
+                  scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) +
+                      " and " + std::to_string(maxSpp) + " spp");
   }
 
   // Output folders: all or none (a failed check removes the folders made before it).
@@ -263,6 +306,50 @@ void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>
   NewFolders made;
   for (const auto& [dir, option] : folders) made.require(dir.empty() ? "." : dir, option);
   made.keep();
+}
+
+}  // namespace aliaslab
+
+namespace aliaslab {
+
+namespace {
+// The value of column `name` in a parsed row.
+const std::string& field(const std::vector<std::string>& f, const std::string& name) {
+  const auto& cols = csvColumns();
+  return f[static_cast<size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin())];
+}
+std::string sameStudyAdvice() {
+  return ". A study CSV holds one study: rerun with the options it was made with to resume it, or give another "
+         "--out or --csv for the new study";
+}
+}  // namespace
+
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c) {
+  const std::pair<const char*, const char*> studyWide[] = {{"seeds", "--seeds"}, {"ref_spp", "--ref-spp"}};
+  const std::string wanted[] = {std::to_string(c.seeds), std::to_string(c.refSpp)};
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const auto f = splitCsvLine(lines[i]);
+    if (f.size() != csvColumns().size()) continue;
+    for (size_t k = 0; k < std::size(studyWide); ++k)
+      if (field(f, studyWide[k].first) != wanted[k])
+        throw OptionError(studyWide[k].second, csv + " holds a study made with " + studyWide[k].first + " " +
+                                                   field(f, studyWide[k].first) + " (data row " +
+                                                   std::to_string(i + 1) + "); this run asks for " + wanted[k] +
+                                                   sameStudyAdvice());
+  }
+}
+
+void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
+                        int width, int height) {
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const auto f = splitCsvLine(lines[i]);
+    if (f.size() != csvColumns().size() || field(f, "scene") != stem) continue;
+    if (field(f, "width") != std::to_string(width) || field(f, "height") != std::to_string(height))
+      throw OptionError("--size", csv + " holds scene " + stem + " at " + field(f, "width") + " x " +
+                                      field(f, "height") + " (data row " + std::to_string(i + 1) +
+                                      "); this run renders it at " + std::to_string(width) + " x " +
+                                      std::to_string(height) + " (--size / --max-size)" + sameStudyAdvice());
+  }
 }
 
 }  // namespace aliaslab

@@ -66,7 +66,9 @@ struct SampleSetGroup {
   std::vector<Configuration> configs;
 };
 
-/// Expands folders in `scenes` into their sorted *.txt files.
+/// Expands folders in `scenes` into their sorted *.txt files. The same file given twice is kept once; two
+/// different files with the same stem (a/s.txt, b/s.txt) are refused (OptionError "--scenes"): rows are keyed
+/// by the stem.
 std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes);
 
 /// Every group in canonical order (unsharded). Supersample rows exist only
@@ -109,6 +111,13 @@ void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>
 /// Checks names, numbers, scenes (existence and parse) and the output
 /// folder (created if missing, must be writable). Throws InputError.
 void validateStudy(const StudyConfig& config);
+
+/// A CSV holds one study: throws OptionError naming the option (--seeds, --ref-spp) when a row of the
+/// existing CSV `lines` was made with another value than `config` asks for (a rerun would add a second copy).
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& config);
+/// The same for the image size of one scene (--size / --max-size).
+void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
+                        int width, int height);
 
 /// The CSV path the config writes.
 std::string csvPath(const StudyConfig& config);

@@ -16,7 +16,8 @@
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
 // ref_spp, target, prefilter): a rerun skips configurations whose key is already in the file.
-// CsvAppender opens an existing file for resumption: it checks the header,
+// CsvAppender opens an existing file for resumption: it checks the header and rows first (a file that is
+// not a study CSV is never modified),
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
 // sortCsvRows() puts rows into the canonical order (by key, numbers compared
@@ -87,6 +88,8 @@ class CsvAppender {
 
   bool has(const std::string& key) const { return keys_.count(key) > 0; }
   size_t resumedRows() const { return resumed_; }
+  /// The rows the file held when it was opened.
+  const std::vector<std::string>& resumedLines() const { return lines_; }
   /// Writes the row with one write() and fsync. Throws FileError.
   void append(const CsvRow& row);
 
@@ -94,6 +97,7 @@ class CsvAppender {
   std::string path_;
   int fd_ = -1;
   std::set<std::string> keys_;
+  std::vector<std::string> lines_;
   size_t resumed_ = 0;
 };
 
@@ -109,8 +113,16 @@ void writeCsvFile(const std::string& path, const std::vector<std::string>& lines
 /// Rewrites a CSV in canonical order.
 void canonicaliseCsv(const std::string& path);
 
-/// Merges shard CSVs into `out` in canonical order (rows with the same key
-/// are kept once). Throws FileError for an unreadable input or a foreign header.
+/// Reads a shard for merging, strictly: a folder, an empty file, a header-only file (unless allowNoRows), a cut
+/// last line or a row with the wrong number of fields is an error naming the file (and line). Throws FileError /
+/// ParseError.
+std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows = false);
+
+/// Merges shard CSVs into `out` in canonical order (rows with the same key and the same results are kept
+/// once). Every input is read with readShardCsv; two rows with the same key but different results (timing and
+/// threads aside) are an error naming both files and lines; `out` equal to an input is refused. A header-only
+/// shard (study.shard-i-of-N.csv) is accepted only when the study has fewer groups than shards (every shard
+/// with rows holds one group and no higher-numbered shard has rows).
 void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs);
 
 }  // namespace aliaslab

@@ -51,6 +51,14 @@ double jsonField(const std::string& text, const std::string& field) {
   if (at == std::string::npos) return -1;
   try { return std::stod(text.substr(at + field.size() + 3)); } catch (const std::exception&) { return -1; }
 }
+// The text in `"field": "<text>"` of a small JSON text, or "".
+std::string jsonText(const std::string& text, const std::string& field) {
+  const std::string open = "\"" + field + "\": \"";
+  const size_t at = text.find(open);
+  if (at == std::string::npos) return {};
+  const size_t end = text.find('"', at + open.size());
+  return end == std::string::npos ? std::string() : text.substr(at + open.size(), end - at - open.size());
+}
 }  // namespace
 
 void validateReferenceOptions(const ReferenceOptions& o) {
@@ -120,6 +128,10 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
     ref.stats = ra.stats;
     ref.stats += rb.stats;
     ref.key = referenceKey(scene, ref.describe, o);
+    if (const size_t bad = countNonFinitePixels(ref.image))
+      throw InputError(scene.path + ": the reference (" + ref.describe + ") has " + std::to_string(bad) +
+                       " NaN or infinite pixels (lights or colours whose products exceed float range, about "
+                       "3.4e38?); nothing can be measured against it");
     set.images.push_back(std::move(ref));
   }
   set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -137,8 +149,11 @@ std::string manifestScenePath(const std::string& path) {
   return inside ? rel.generic_string() : path;
 }
 
+std::string imageContentHash(const std::string& path) { return hex16(hashBytes(readFileBytes(path), 0x1a6e)); }
+
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
-                              const std::vector<std::string>& imageNames) {
+                              const std::vector<std::string>& imageNames,
+                              const std::vector<std::string>& imageHashes) {
   std::ostringstream j;
   j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(manifestScenePath(scene.path))
     << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
@@ -151,8 +166,9 @@ std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
     j << (i ? "," : "") << "\n    {\"filter\": " << jsonString(r.filter.first) << ", \"radius\": "
       << jsonNumber(r.filter.second) << ", \"describe\": " << jsonString(r.describe)
       << ", \"ref_error\": " << jsonNumber(r.error) << ", \"undefined_pixels\": " << r.stats.undefinedPixels
-      << ", \"key\": " << jsonString(r.key) << ", \"image\": " << jsonString(i < imageNames.size() ? imageNames[i] : "")
-      << "}";
+      << ", \"key\": " << jsonString(r.key) << ", \"image\": " << jsonString(i < imageNames.size() ? imageNames[i] : "");
+    if (i < imageHashes.size()) j << ", \"image_hash\": " << jsonString(imageHashes[i]);
+    j << "}";
   }
   j << "\n  ]\n}\n";
   return j.str();
@@ -177,8 +193,16 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
     if (fs::exists(exr) && fs::exists(json)) {
       try {
         ReferenceImage& r = set.images[i];
+        const std::string manifest = readFileBytes(json.string());
+        const std::string stored = jsonText(manifest, "image_hash"), actual = imageContentHash(exr.string());
+        if (stored != actual) {
+          std::fprintf(stderr, "note: cached reference %s does not match its manifest %s (%s); rendering it again\n",
+                       exr.string().c_str(), json.string().c_str(),
+                       stored.empty() ? "no content hash" : "content hash differs");
+          throw FileError(exr.string(), "content hash mismatch");
+        }
         r.image = readImage(exr.string());
-        r.error = jsonField(readFileBytes(json.string()), "ref_error");
+        r.error = jsonField(manifest, "ref_error");
         if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
           r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
           continue;
@@ -203,7 +227,7 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
     one.spp = fresh.spp, one.sampler = fresh.sampler, one.seed = fresh.seed, one.seconds = fresh.seconds;
     one.images = {r};
     writeTextFile((fs::path(cacheDir) / (r.key + ".json")).string(),
-                  referenceManifest(scene, one, {r.key + ".exr"}));
+                  referenceManifest(scene, one, {r.key + ".exr"}, {imageContentHash(exr)}));
     set.images[missingIndex[m]] = std::move(r);
   }
   return set;

@@ -20,7 +20,10 @@
 // Blackman-Harris weights by float ulps). Each reference is stored as <cache>/<key>.exr beside
 // <key>.json (its manifest). cachedReferences() loads what is there and
 // renders the missing ones together in one pass; files are written to a
-// temporary name and renamed, so concurrent shards can share a cache.
+// temporary name and renamed, so concurrent shards can share a cache. Each
+// manifest records the content hash of its EXR ("image_hash"); an entry whose
+// EXR does not match it (replaced, damaged, or made before the hash) is not
+// trusted: a note says so on stderr and the reference is rendered again.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -88,7 +91,11 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
 /// git revision, seconds, and per filter describe(), ref_error, key, image file.
 /// `imageNames[i]` is the image file of filter i as a path from the manifest's folder ("" for none).
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
-                              const std::vector<std::string>& imageNames);
+                              const std::vector<std::string>& imageNames,
+                              const std::vector<std::string>& imageHashes = {});
+
+/// The content hash stored in a cache manifest ("image_hash"): 16 hex digits of hashBytes over the file's bytes.
+std::string imageContentHash(const std::string& path);
 
 /// The scene path a manifest stores: relative to the repository (e.g.
 /// "scenes/fence.txt") for a scene inside it, so manifests do not carry the

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "core/format.h"
+#include "core/files.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
 #include "render/adaptive.h"
@@ -19,6 +20,7 @@
 #include "sampling/sampler.h"
 #include "study/contact.h"
 #include "study/csv.h"
+#include "study/lock.h"
 #include "study/metrics.h"
 #include "study/progress.h"
 #include "study/reference.h"
@@ -107,8 +109,17 @@ SweepSummary runSweep(const StudyConfig& config) {
   sum.images = config.images ? *config.images : total <= 200;
 
   const std::string csv = csvPath(config);
+  std::unique_ptr<CsvLock> lock;
   std::unique_ptr<CsvAppender> out;
-  if (!config.refsOnly) out = std::make_unique<CsvAppender>(csv);
+  if (!config.refsOnly) {
+    lock = std::make_unique<CsvLock>(csv, "sweep");  // one run per CSV (study/lock.h)
+    out = std::make_unique<CsvAppender>(csv);
+    checkSameStudy(csv, out->resumedLines(), config);
+  }
+  // Temporaries of killed runs ("*.partial.<pid>.*" whose process is gone).
+  for (const std::string& dir : {config.out, config.cache})
+    if (const size_t n = removeStaleTemporaries(dir))
+      std::fprintf(stderr, "note: removed %zu unfinished file(s) left by an interrupted run in %s\n", n, dir.c_str());
   const int threads = config.threads;
   const ReferenceOptions refOpts = referenceOptions(config);
   const auto [targetFilter, targetRadius] = parseTarget(config.target);
@@ -132,6 +143,7 @@ SweepSummary runSweep(const StudyConfig& config) {
     size_t gend = gi;
     while (gend < groups.size() && groups[gend].scene == scenePath) ++gend;
     const auto scene = loadStudyScene(scenePath, config.width, config.height, config.maxSize, config.longSide);
+    if (out) checkSameSceneSize(csv, out->resumedLines(), scene->stem, scene->width, scene->height);
 
     // Which configurations are still missing from the CSV?
     std::vector<std::vector<Pending>> pending(gend - gi);
