@@ -63,7 +63,9 @@ font-size:.9em}figure{margin:.8em 0;background:#fff;border:1px solid #ddd;paddin
 max-width:100%;box-sizing:border-box;vertical-align:top}figure img{max-width:100%;height:auto}
 figcaption{font-size:.85em;color:#444;max-width:60em}table{border-collapse:collapse;font-size:.82em;margin:.5em 0}
 td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}td:first-child{text-align:left}
-.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}nav a{margin-right:.8em}
+.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}
+.pair{display:flex;flex-wrap:wrap;gap:8px;align-items:flex-start}.pair figure{margin:0}
+.pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
 
 
@@ -422,7 +424,8 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     parts = [head, f"<p>Radially averaged power spectra of the per-seed error images (I<sub>k</sub> &minus; G), "
              f"frequency in cycles per pixel; the dotted line is a quarter of Nyquist "
              f"({spectra.CUTOFF:g} cycles/pixel), below which <code>lowfreq_error</code> counts the error's "
-             "energy. White error is flat; blue-noise error (correlated samplers) rises to the right. "
+             "energy. White error is flat; error moved to high frequencies (what the correlated samplers aim "
+             "for) rises to the right. "
              "Definitions: docs/spectrum.md.</p>"]
     spp0 = spectra.pick_spp(levels, 16)
     overview = spectra.chart(spec, scene, spp0, spectra.chart_path(charts_dir, scene, spp0))
@@ -454,7 +457,9 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
             if has_blur:
                 vals.append(f"blurred mse {r['blurred_mse']:.3g}")
             if "lowfreq_error" in r:
-                vals.append(f"low-frequency share {r['lowfreq_error']:.3g}")
+                se = r.get("lowfreq_error_se", np.nan)
+                vals.append(f"low-frequency share {r['lowfreq_error']:.3g}"
+                            + (f" &plusmn; {se:.1g}" if np.isfinite(se) else ""))
             if has_flip:
                 vals.append(f"FLIP {r['flip']:.3g}")
             cells.append(f"<tr><td>{html.escape(sampler)}</td>" + "".join(f"<td>{v}</td>" for v in vals) + "</tr>")
@@ -465,14 +470,14 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
         png = spectra.chart(spec, scene, spp, spectra.chart_path(charts_dir, scene, spp, "spectrum_pair"),
                             samplers=pair, title=f"{scene}: {pair[0]} vs {pair[1]} at {spp} spp")
         if png:
-            pics.append(figure(page_dir, png, f"Their error spectra at {spp} spp.", embed))
+            pics.append(figure(page_dir, png, f"Their error spectra at {spp} spp.", embed, cls="spec"))
         pics = [p for p in pics if p]
         parts.append(f"<h5>{spp} spp: {html.escape(pair[0])} (independent) vs {html.escape(pair[1])} "
                      f"(correlated), {html.escape(filt)} r={float(radius):g}</h5>")
         if cells:
             parts.append("<table>" + "".join(cells) + "</table>")
         if pics:
-            parts.append("<div class='pix'>" + "".join(pics) + "</div>")
+            parts.append("<div class='pair'>" + "".join(pics) + "</div>")
         else:
             parts.append("<p class='note'>No images for these rows (run the sweep with <code>--images</code>).</p>")
     return "\n".join(p for p in parts if p)

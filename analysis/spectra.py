@@ -11,6 +11,7 @@ import os
 
 import numpy as np
 import pandas as pd
+from matplotlib import ticker
 
 import common
 from common import plt
@@ -110,6 +111,12 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
     ax.text(CUTOFF, 1.01, " quarter Nyquist", transform=ax.get_xaxis_transform(), fontsize=8, color="0.3",
             va="bottom")
     ax.set_yscale("log")
+    lo, hi = ax.get_ylim()
+    if hi / lo < 30:  # less than ~1.5 decades: label the minor ticks too, or the axis has one number
+        ax.yaxis.set_minor_locator(ticker.LogLocator(subs=(2.0, 5.0)))
+        ax.yaxis.set_minor_formatter(ticker.LogFormatterSciNotation(labelOnlyBase=False,
+                                                                   minor_thresholds=(3, 3)))
+        ax.tick_params(axis="y", which="minor", labelsize=7)
     ax.set_xlim(0, max(float(np.max(f)) for f, _ in data.values()) * 1.02)
     ax.set_xlabel("frequency (cycles per pixel; Nyquist = 0.5 along an axis)")
     ax.set_ylabel("error power (radial mean)")
