@@ -48,6 +48,7 @@ import pandas as pd
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import charts  # noqa: E402
 import common  # noqa: E402
+import spectra  # noqa: E402
 from common import plt  # noqa: E402
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -62,7 +63,9 @@ font-size:.9em}figure{margin:.8em 0;background:#fff;border:1px solid #ddd;paddin
 max-width:100%;box-sizing:border-box;vertical-align:top}figure img{max-width:100%;height:auto}
 figcaption{font-size:.85em;color:#444;max-width:60em}table{border-collapse:collapse;font-size:.82em;margin:.5em 0}
 td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}td:first-child{text-align:left}
-.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}nav a{margin-right:.8em}
+.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}
+.pair{display:flex;flex-wrap:wrap;gap:8px;align-items:flex-start}.pair figure{margin:0}
+.pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
 
 
@@ -380,7 +383,8 @@ def method_image(images, scene, r):
 def scene_table(sd):
     """HTML table of the scene's three lowest errors at each spp level, with their terms."""
     terms = charts.components(sd)
-    extra = [(c, l) for c, l in (("flip", "FLIP"), ("lowfreq_error", "low-frequency error"),
+    extra = [(c, l) for c, l in (("blurred_mse", "blurred mse"), ("flip", "FLIP"),
+                                 ("lowfreq_error", "low-frequency share &plusmn; se"),
                                  ("mean_spp", "mean spp spent")) if c in sd.columns]
     ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
     rows = []
@@ -395,15 +399,91 @@ def scene_table(sd):
                     v += " (0 within error)"
                 cells.append(v)
             for c, _ in extra:
-                cells.append(f"{r[c]:.3g}")
+                v = f"{r[c]:.3g}"
+                se = r.get(c + "_se", np.nan)
+                if c == "lowfreq_error" and np.isfinite(se):
+                    v += f" &plusmn; {se:.1g}"
+                cells.append(v)
             cells.append(f"{r['time_ms']:.3g}")
             rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
     head = (["method", "spp", "error &plusmn; se"] + [html.escape(l) for _, l in terms]
-            + [html.escape(l) for _, l in extra] + ["time (ms)"])
+            + [l for _, l in extra] + ["time (ms)"])
     return ("<table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(rows) + "</table>")
 
 
-def scene_section(page_dir, scene, sd, charts_dir, images, embed):
+def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
+    """Issue 22: where the error sits on screen. An overview chart of every sampler's error spectrum at one
+    spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
+    spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
+    head = "<h4>Where the error sits on screen</h4>"
+    if spec is None or not (spec["scene"] == str(scene)).any():
+        return (head + "<p class='note'>No error spectra for this scene (the study CSV has no "
+                "<code>spectra/</code> files beside it: written by sweeps since issue 22).</p>")
+    spec = spec[spec["scene"] == str(scene)]
+    levels = sorted(int(x) for x in spec["spp"].unique())
+    parts = [head, f"<p>Radially averaged power spectra of the per-seed error images (I<sub>k</sub> &minus; G), "
+             f"frequency in cycles per pixel; the dotted line is a quarter of Nyquist "
+             f"({spectra.CUTOFF:g} cycles/pixel), below which <code>lowfreq_error</code> counts the error's "
+             "energy. White error is flat; error moved to high frequencies (what the correlated samplers aim "
+             "for) rises to the right. "
+             "Definitions: docs/spectrum.md.</p>"]
+    spp0 = spectra.pick_spp(levels, 16)
+    overview = spectra.chart(spec, scene, spp0, spectra.chart_path(charts_dir, scene, spp0))
+    if overview:
+        parts.append(figure(page_dir, overview, f"Error spectra of every sampler at {spp0} spp.", embed))
+    ind, corr = spectra.pick_samplers(spec["sampler"].unique())
+    if ind is None or not corr:
+        parts.append("<p class='note'>Side-by-side comparison omitted: the study needs an independent and a "
+                     "correlated sampler (<code>zsobol</code> or <code>bluenoise-dither:BASE</code>).</p>")
+        return "\n".join(p for p in parts if p)
+    pair = [ind, corr[0]]
+    has_flip = "flip" in sd.columns and np.isfinite(sd["flip"].to_numpy(dtype=float)).any()
+    has_blur = "blurred_mse" in sd.columns
+    if not has_flip:
+        parts.append("<p class='note'>FLIP is not shown: this study CSV has no <code>flip</code> column.</p>")
+    shown = [s for s in (4, 16) if s in levels] or levels[:2]
+    filt, radius, recon = spectra.common_method(spec)
+    for spp in shown:
+        rows = sd[(sd["spp"] == spp) & (sd["filter_name"] == filt) & (sd["radius"] == float(radius))
+                  & (sd["reconstruction"] == recon) & (sd["prefilter"].astype(str) == "none")]
+        cells, pics = [], []
+        for sampler in pair:
+            r = rows[rows["sampler"] == sampler]
+            if not len(r):
+                continue
+            r = r.iloc[0]
+            vals = [f"mse {r['mse']:.3g}" + (f" &plusmn; {r['mse_se']:.1g}" if "mse_se" in r and
+                                             np.isfinite(r["mse_se"]) else "")]
+            if has_blur:
+                vals.append(f"blurred mse {r['blurred_mse']:.3g}")
+            if "lowfreq_error" in r:
+                se = r.get("lowfreq_error_se", np.nan)
+                vals.append(f"low-frequency share {r['lowfreq_error']:.3g}"
+                            + (f" &plusmn; {se:.1g}" if np.isfinite(se) else ""))
+            if has_flip:
+                vals.append(f"FLIP {r['flip']:.3g}")
+            cells.append(f"<tr><td>{html.escape(sampler)}</td>" + "".join(f"<td>{v}</td>" for v in vals) + "</tr>")
+            found = method_image(images, scene, r)
+            if found:
+                pics.append(figure(page_dir, found[1], f"{html.escape(sampler)}, {spp} spp: signed error of "
+                                   "seed 0 (red too bright, blue too dark)", embed))
+        png = spectra.chart(spec, scene, spp, spectra.chart_path(charts_dir, scene, spp, "spectrum_pair"),
+                            samplers=pair, title=f"{scene}: {pair[0]} vs {pair[1]} at {spp} spp")
+        if png:
+            pics.append(figure(page_dir, png, f"Their error spectra at {spp} spp.", embed, cls="spec"))
+        pics = [p for p in pics if p]
+        parts.append(f"<h5>{spp} spp: {html.escape(pair[0])} (independent) vs {html.escape(pair[1])} "
+                     f"(correlated), {html.escape(filt)} r={float(radius):g}</h5>")
+        if cells:
+            parts.append("<table>" + "".join(cells) + "</table>")
+        if pics:
+            parts.append("<div class='pair'>" + "".join(pics) + "</div>")
+        else:
+            parts.append("<p class='note'>No images for these rows (run the sweep with <code>--images</code>).</p>")
+    return "\n".join(p for p in parts if p)
+
+
+def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None):
     s = common.slug(scene)
     parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd)]
     chart = lambda kind, caption: figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed)
@@ -442,6 +522,7 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed):
         pics = [p for p in pics if p]
         if len(pics) > 1:
             parts.append("<div class='pix'>" + "".join(pics) + "</div>")
+    parts.append(spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
     return "\n".join(p for p in parts if p)
 
 
@@ -515,6 +596,7 @@ def isolation_section(results, embed):
 def build_report(results, study, charts_dir=None, images=None, label=None, embed=True, draw=True):
     """Writes RESULTS/index.html (and engineering.html); returns the index path. Raises common.InputError."""
     df, notes = common.load_study(study)
+    spec = spectra.load(study)
     charts_dir = charts_dir or os.path.join(results, "charts")
     images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
     if draw:
@@ -551,7 +633,8 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     body.append("<h2 id='scenes'>Per scene</h2><p>" + " ".join(
         f"<a href='#scene-{html.escape(common.slug(s))}'>{html.escape(s)}</a>" for s in scenes) + "</p>")
     for scene in scenes:
-        body.append(scene_section(results, scene, df[df["scene"] == scene], charts_dir, images, embed))
+        body.append(scene_section(results, scene, df[df["scene"] == scene], charts_dir, images, embed,
+                                  spec))
     body.append("<h2 id='stability'>Stability</h2>")
     counts = {c: int(np.nansum(df[c].to_numpy(dtype=float))) for c in
               ("undefined_pixels", "negative_pixels", "nan_pixels")}

@@ -120,14 +120,75 @@ def tiny_png(path, value=0.5):
     return path
 
 
-def make_results(folder, new_columns=True, prefilter=False, shards=True, engineering=True):
+SPECTRUM_BINS = 16
+SPECTRUM_BIN_WIDTH = 0.5 * 2 ** 0.5 / SPECTRUM_BINS  # up to the frequency square's corner
+
+
+def spectrum_power(sampler, spp, frequency):
+    """Synthetic radially averaged error power: flat (white) for independent samplers, rising with
+    frequency (blue) for the correlated `zsobol`."""
+    base = SAMPLERS.get(sampler, 0.02) / spp + 1e-4
+    return base * (8 * frequency ** 2 if sampler == "zsobol" else 1.0)
+
+
+def add_correlated(csv_path):
+    """Appends a copy of every `random` row as `zsobol` (a correlated sampler) to the CSV."""
+    with open(csv_path, newline="") as f:
+        reader = csv.DictReader(f)
+        fields, table = reader.fieldnames, list(reader)
+    extra = []
+    for r in table:
+        if r["sampler"] == "random":
+            z = dict(r, sampler="zsobol", flagged="0")
+            if "lowfreq_error" in z and z["lowfreq_error"] != "":
+                z["lowfreq_error"] = str(float(z["lowfreq_error"]) / 5)
+                z["blurred_mse"] = str(float(z["blurred_mse"]) / 3)
+            extra.append(z)
+    with open(csv_path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(table + extra)
+
+
+def write_spectra(study_dir, samplers, scenes=None):
+    """spectra/<scene>.csv as the sweep writes them (lib/study/spectrum.h): every sampler x spp x filter x
+    radius, kinds error and noise, SPECTRUM_BINS bins."""
+    folder = os.path.join(study_dir, "spectra")
+    os.makedirs(folder, exist_ok=True)
+    fields = ["scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter", "kind", "bin",
+              "frequency", "power", "energy"]
+    for scene in scenes or SCENES:
+        name = os.path.splitext(os.path.basename(scene))[0]
+        with open(os.path.join(folder, name + ".csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            w.writeheader()
+            for sampler in samplers:
+                for spp in SPPS:
+                    for filt in FILTERS:
+                        for radius in RADII:
+                            for kind in ("error", "noise"):
+                                for b in range(SPECTRUM_BINS):
+                                    fr = (b + 0.5) * SPECTRUM_BIN_WIDTH
+                                    pw = spectrum_power(sampler, spp, fr)
+                                    w.writerow(dict(scene=scene, sampler=sampler, spp=spp, filter=filt,
+                                                    radius=radius, reconstruction="weighted", prefilter="none",
+                                                    kind=kind, bin=b, frequency=fr, power=pw,
+                                                    energy=pw * (b + 1)))
+
+
+def make_results(folder, new_columns=True, prefilter=False, shards=True, engineering=True, spectra=False):
     """A results folder as the sweep and the experiments leave it: study/study.csv (the merged CSV),
     two shard CSVs beside it holding the same rows (when `shards`), study/images with a contact sheet
     per scene and the seed-0 image and error image of every configuration at the highest spp, and
-    (when `engineering`) a benchmark and a fuzzing record. Returns the study CSV's path."""
+    (when `engineering`) a benchmark and a fuzzing record. With `spectra`, the study also holds a
+    correlated sampler `zsobol` (a copy of `random`'s rows), spectra/<scene>.csv for every sampler and the
+    images of random and zsobol at 4 and 16 spp. Returns the study CSV's path."""
     study = os.path.join(folder, "study")
     os.makedirs(study, exist_ok=True)
     csv_path = write(os.path.join(study, "study.csv"), new_columns=new_columns, prefilter=prefilter)
+    if spectra:
+        add_correlated(csv_path)
+        write_spectra(study, list(SAMPLERS) + ["zsobol"])
     if shards:
         with open(csv_path) as f:
             lines = f.read().splitlines()
@@ -148,6 +209,11 @@ def make_results(folder, new_columns=True, prefilter=False, shards=True, enginee
                     base = f"{sampler}-spp{max(SPPS)}-{filt}-r{radius:g}-weighted"
                     tiny_png(os.path.join(images, stem, base + ".png"), 0.5)
                     tiny_png(os.path.join(images, stem, base + "-error.png"), 0.1)
+        for sampler in (("random", "zsobol") if spectra else ()):
+            for spp in (4, 16):
+                base = f"{sampler}-spp{spp}-box-r0.5-weighted"
+                tiny_png(os.path.join(images, stem, base + ".png"), 0.5)
+                tiny_png(os.path.join(images, stem, base + "-error.png"), 0.2)
     if engineering:
         with open(os.path.join(folder, "study_speed.md"), "w") as f:
             f.write("# Study speed (measured)\n\nbefore the fused pass, after the fused pass.\n\n"
