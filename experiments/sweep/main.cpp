@@ -36,8 +36,10 @@ constexpr int kFullRefSpp = 8192;
 // filters; measured to finish in under 10 minutes on 2 cores (results/study_speed.md).
 void applyDefaultPreset(StudyConfig& c) {
   c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
-  c.samplers = {"random", "uniform", "jittered", "sobol", "pmj02", "bluenoise"};
-  c.spp = {4, 16};
+  c.samplers = {"random",  "uniform", "jittered",
+                "sobol",   "pmj02",   "bluenoise",
+                "zsobol",  "bluenoise-dither:random", "adaptive-contrast:jittered"};
+  c.spp = {4, 16, 64};
   c.filters = {"box", "tent", "gaussian", "mitchell", "lanczos"};
   c.radii = {0.5, 1.0, 2.0};
   c.reconstruction = {"weighted"};
