@@ -1,7 +1,10 @@
 #include "sampling_plan.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 
 #include "core/error.h"
 #include "core/format.h"
@@ -146,12 +149,38 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   return plan;
 }
 
+namespace {
+/// Progress on stderr for a render that runs longer than two seconds:
+/// "raytracer: tracing 42% (elapsed 3s, ETA 4s)", redrawn at most twice a
+/// second; short renders print nothing. Called one call at a time (Progress).
+class RenderProgress {
+ public:
+  void operator()(int done, int total) {
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start_).count();
+    if (elapsed < 2.0 || total <= 0 || (done < total && elapsed - shown_ < 0.5)) return;
+    shown_ = elapsed;
+    const double f = static_cast<double>(done) / total;
+    std::fprintf(stderr, "\rraytracer: tracing %3d%% (elapsed %.0fs, ETA %.0fs)%s", static_cast<int>(100 * f), elapsed,
+                 f > 0 ? elapsed * (1 - f) / f : 0.0, done >= total ? "\n" : "");
+    std::fflush(stderr);
+  }
+
+ private:
+  using Clock = std::chrono::steady_clock;
+  Clock::time_point start_ = Clock::now();
+  double shown_ = -1;
+};
+}  // namespace
+
 RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int width, int height, int threads) {
   RenderedImage out;
   const bool importance = plan.filter && plan.mode == ReconMode::ImportanceSampled;
-  out.samples = plan.adaptive ? traceAdaptive(tracer, *plan.adaptive, width, height, threads)
-                : importance  ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads)
-                              : traceSamples(tracer, *plan.sampler, width, height, threads);
+  auto state = std::make_shared<RenderProgress>();
+  const Progress progress = [state](int done, int total) { (*state)(done, total); };
+  out.samples = plan.adaptive ? traceAdaptive(tracer, *plan.adaptive, width, height, threads, progress)
+                : importance  ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads,
+                                                       progress)
+                              : traceSamples(tracer, *plan.sampler, width, height, threads, progress);
   if (plan.filter) {
     out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
   } else {
