@@ -10,6 +10,7 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "filter/filter.h"
+#include "render/tracer.h"
 #include "sampling/sampler.h"
 #include "study/config.h"
 
@@ -146,7 +147,8 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   if (w < 1 || h < 1 || w > 16384 || h > 16384)
     throw OptionError("-size", "width and height must be in 1..16384, found " + std::to_string(w) + " " +
                                    std::to_string(h));
-  if (o.bounces < 0 || o.bounces > 1000) throw OptionError("-bounces", "must be in 0..1000");
+  if (o.bounces < 0 || o.bounces > kMaxBounces)
+    throw OptionError("-bounces", "must be in 0.." + std::to_string(kMaxBounces));
   if (!(o.weight >= 0.f) || !std::isfinite(o.weight)) throw OptionError("-weight", "must be finite and >= 0");
   if (o.threads < 0) throw OptionError("--threads", "must be >= 0 (0 = all cores)");
   parsePrefilter(o.prefilter, "--prefilter");

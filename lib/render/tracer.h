@@ -39,10 +39,13 @@
 namespace aliaslab {
 
 /// Work per sample is bounded: one primary sample spawns at most this many reflected and refracted rays in
-/// all (its ray tree is cut, depth first, once they are spent). Two facing glass spheres with -bounces 1000
+/// all (its ray tree is cut, depth first, once they are spent). Two facing glass spheres with -bounces 256
 /// would otherwise double the work every level. samplesWithCappedRayTrees() counts the samples cut so far
 /// (the raytracer warns with the count).
 inline constexpr uint32_t kMaxSecondaryRaysPerSample = 1u << 16;
+/// The deepest ray tree (-bounces): the tracer recurses once per level, so the
+/// depth is bounded to keep every thread's stack safe (also under sanitizers).
+inline constexpr int kMaxBounces = 256;
 uint64_t samplesWithCappedRayTrees();
 
 struct TraceOptions {

@@ -76,6 +76,8 @@ RenderLine readRenderLine(const std::string& path) {
         r.options.shadeBack = true;
       } else if (f == "-bounces") {
         r.options.bounces = static_cast<int>(number(k, f));
+        if (r.options.bounces < 0 || r.options.bounces > kMaxBounces)
+          throw ParseError(path, lineNo, "render line: -bounces must be in 0.." + std::to_string(kMaxBounces));
       } else if (f == "-weight") {
         r.options.weight = static_cast<float>(number(k, f));
       } else if (f == "-grid") {
