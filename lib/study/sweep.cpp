@@ -78,7 +78,8 @@ ReferenceOptions referenceOptions(const StudyConfig& c) {
 //     traceSampleSet   phase A, one task per seed: "trace this sample set" (+ the shared Accumulator pass)
 //     reconstructRow   phase B, one task per (seed, row): that row's image of that seed
 //     foldSeeds        phase C, one task per row: the window's images added to its metrics IN SEED ORDER
-//     finishRow        serial, per row at the end of its group: "row finished" (CSV row, spectra, images)
+//   finishRow          one task per row at the end of its group: "row finished" (metrics, spectra, images)
+//   writeRows          serial: the group's spectra and CSV lines, in row order, one write each
 // Every task writes only its own slot; slots are folded in (seed, row) order, so nothing depends on which
 // thread ran what or when it finished (tests/sweep_parallel_test.cpp runs the tasks in a shuffled order).
 // ---------------------------------------------------------------------------
@@ -282,9 +283,9 @@ void runGroup(const GroupContext& g, const std::function<void(double)>& advance)
   }
 }
 
-// The row of a finished configuration: metrics into the CSV row, its spectra, its images. Serial, in row order.
-void finishRow(const StudyConfig& config, Pending& p, CsvAppender& out, const fs::path& imageDir, bool images,
-               std::set<std::string>& spectraWritten) {
+// "Row finished": a configuration's metrics into its CSV row, its spectra, and (images on) its images.
+// One task per row (each writes only its own files); the CSV and spectra lines are written by writeRows.
+void finishRow(Pending& p, const fs::path& imageDir, bool images, SpectrumMetrics& sm) {
   const Metrics m = p.metrics->result();
   CsvRow& r = p.row;
   r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.mseArea, r.psnr = m.psnr;
@@ -296,22 +297,34 @@ void finishRow(const StudyConfig& config, Pending& p, CsvAppender& out, const fs
   r.negativePixels = static_cast<long long>(p.stats.negativePixels);
   r.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
   r.traceMs = p.traceMs, r.reconstructMs = p.reconMs;
-  const SpectrumMetrics sm = p.spectrum->result();
+  sm = p.spectrum->result();
   r.lowfreqError = sm.lowfreqError, r.lowfreqErrorSe = sm.lowfreqErrorSe, r.blurredMse = sm.blurredMse;
-  {  // spectra first: a row in the study CSV always has its spectra (a repeat is dropped at the end)
-    const std::string spectra = spectrumPath(config, r.scene);
-    fs::create_directories(fs::path(spectra).parent_path());
-    appendSpectrumCsv(spectra, r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
-                                   formatNumber(r.radius, "%.9g") + ',' + r.reconstruction, sm);
-    spectraWritten.insert(spectra);
-  }
-  if (images) {
-    fs::create_directories(imageDir);
+  if (images)
     writeConfigurationImages(imageDir.string(), configurationImageBase(r), p.seed0, p.reference->image,
                              p.metrics->noiseMap());
-  }
-  out.append(r);
   p.metrics.reset(), p.spectrum.reset(), p.seed0 = Image();  // a finished row's K images and sums are not needed again
+}
+
+// A finished group's rows, in row order: spectra first (a row in the study CSV always has its spectra; a
+// repeat is dropped at the end), then the CSV rows, each file with one write (the CSV with one fsync).
+void writeRows(const StudyConfig& config, const std::vector<Pending>& rows, const std::vector<SpectrumMetrics>& spectra,
+               CsvAppender& out, std::set<std::string>& spectraWritten) {
+  std::map<std::string, std::vector<std::pair<std::string, const SpectrumMetrics*>>> byFile;
+  for (size_t i = 0; i < rows.size(); ++i) {
+    const CsvRow& r = rows[i].row;
+    byFile[spectrumPath(config, r.scene)].emplace_back(
+        r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
+            formatNumber(r.radius, "%.9g") + ',' + r.reconstruction,
+        &spectra[i]);
+  }
+  for (const auto& [path, lines] : byFile) {
+    fs::create_directories(fs::path(path).parent_path());
+    appendSpectrumCsv(path, lines);
+    spectraWritten.insert(path);
+  }
+  std::vector<CsvRow> csvRows;
+  for (const Pending& p : rows) csvRows.push_back(p.row);
+  out.append(csvRows);
 }
 
 // Resume: the rows of groups [gi, gend) (one scene) still missing from the CSV; adds the (filter, radius) of
@@ -456,12 +469,13 @@ SweepSummary runSweep(const StudyConfig& config) {
       const uint64_t rays0 = scene->tracer->counters().primary.load();
       runGroup(ctx, [&](double u) { progress.advance(u); });
       sum.primaryRays += scene->tracer->counters().primary.load() - rays0;
-      // Rows (and images) of the group, in row order.
+      // Rows (and images) of the group: results and images one task per row, then the CSV lines in row order.
       t0 = Clock::now();
-      for (Pending& p : rows) {
-        finishRow(config, p, *out, imageDir, sum.images, spectraWritten);
-        ++sum.rowsWritten;
-      }
+      if (sum.images) fs::create_directories(imageDir);
+      std::vector<SpectrumMetrics> spectra(rows.size());
+      parallelFor(int(rows.size()), threads, [&](int i) { finishRow(rows[i], imageDir, sum.images, spectra[i]); });
+      writeRows(config, rows, spectra, *out, spectraWritten);
+      sum.rowsWritten += rows.size();
       sum.phases.io += secondsSince(t0);
     }
     gi = gend;
