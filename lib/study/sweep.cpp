@@ -473,7 +473,17 @@ SweepSummary runSweep(const StudyConfig& config) {
       t0 = Clock::now();
       if (sum.images) fs::create_directories(imageDir);
       std::vector<SpectrumMetrics> spectra(rows.size());
-      parallelFor(int(rows.size()), threads, [&](int i) { finishRow(rows[i], imageDir, sum.images, spectra[i]); });
+      std::vector<double> busy(rows.size(), 0);
+      parallelFor(int(rows.size()), threads, [&](int i) {
+        const auto t = Clock::now();
+        finishRow(rows[i], imageDir, sum.images, spectra[i]);
+        busy[i] = secondsSince(t);
+      });
+      const double wallFinish = secondsSince(t0);
+      double work = 0;
+      for (double b : busy) work += b;
+      sum.phases.finish += work, sum.phases.waiting += std::max(0.0, wallFinish * threads - work);
+      t0 = Clock::now();
       writeRows(config, rows, spectra, *out, spectraWritten);
       sum.rowsWritten += rows.size();
       sum.phases.io += secondsSince(t0);
