@@ -15,6 +15,11 @@
 // <csv folder>/spectra/<scene>.csv (<scene>.<csv stem>.csv for shards or a
 // --csv path) just before the row, and are put in canonical order at the end.
 //
+// Threads: the seeds of a group (at most min(seeds, threads) sample sets in
+// flight) and each (seed, row) reconstruction run as tasks, folded into the
+// rows' accumulators in seed order, so every number and image is the same
+// for any thread count (steps and memory bound: docs/sweep_scheduling.md).
+//
 // Resuming: configurations whose key is already in the CSV are skipped (a
 // group whose rows are all present is not traced). At the end the CSV is
 // rewritten in canonical order, so an interrupted-and-resumed run, or merged
