@@ -4,6 +4,8 @@
 #include <atomic>
 #include <exception>
 #include <mutex>
+#include <numeric>
+#include <random>
 #include <thread>
 #include <vector>
 
@@ -14,7 +16,21 @@ int resolveThreads(int requested) {
   return std::max(1u, std::thread::hardware_concurrency());
 }
 
-void parallelFor(int n, int threads, const std::function<void(int)>& body) {
+namespace {
+std::atomic<uint64_t> shuffleSeed{0};
+}
+
+void setParallelShuffle(uint64_t seed) { shuffleSeed = seed; }
+
+void parallelFor(int n, int threads, const std::function<void(int)>& userBody) {
+  std::vector<int> order;
+  if (const uint64_t seed = shuffleSeed.load(); seed != 0 && n > 1) {
+    order.resize(n);
+    std::iota(order.begin(), order.end(), 0);
+    std::shuffle(order.begin(), order.end(), std::mt19937_64(seed ^ static_cast<uint64_t>(n)));
+  }
+  const std::function<void(int)> shuffled = [&](int i) { userBody(order[i]); };
+  const std::function<void(int)>& body = order.empty() ? userBody : shuffled;
   threads = std::min(resolveThreads(threads), std::max(n, 1));
   if (threads <= 1) {
     for (int i = 0; i < n; ++i) body(i);

@@ -334,12 +334,15 @@ CsvAppender::~CsvAppender() {
   if (fd_ >= 0) ::close(fd_);
 }
 
-void CsvAppender::append(const CsvRow& row) {
-  const std::string line = formatCsvRow(row) + '\n';
-  if (::write(fd_, line.data(), line.size()) != static_cast<ssize_t>(line.size()))
+void CsvAppender::append(const CsvRow& row) { append(std::vector<CsvRow>{row}); }
+
+void CsvAppender::append(const std::vector<CsvRow>& rows) {
+  std::string lines;
+  for (const CsvRow& row : rows) lines += formatCsvRow(row) + '\n';
+  if (::write(fd_, lines.data(), lines.size()) != static_cast<ssize_t>(lines.size()))
     throw FileError(path_, "write failed: " + lastSystemError());
   ::fdatasync(fd_);
-  keys_.insert(csvKey(row));
+  for (const CsvRow& row : rows) keys_.insert(csvKey(row));
 }
 
 }  // namespace aliaslab

@@ -2,6 +2,7 @@
 
 #include "aliaslab_paths.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
@@ -10,6 +11,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/parallel.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/format.h"
@@ -106,11 +108,16 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
   const int batch = effectiveBatch(o);
   const int batches = o.spp / batch;
   ProgressBar progress(batches, "reference " + scene.stem, o.progress);
-  for (int k = 0; k < batches; ++k) {
-    const auto sampler = makeSampler(o.sampler, batch, hashWords(o.seed, k));
-    const SampleBuffer samples = traceSamples(*scene.tracer, *sampler, scene.width, scene.height, o.threads);
-    (k % 2 ? b : a).add(samples, o.threads);
-    progress.advance();
+  // Batches k (even, into a) and k + 1 (odd, into b) run as two concurrent tasks, each on half the threads:
+  // each half still receives its batches in k order, so the sums are those of the serial loop, bit for bit.
+  const int inner = std::max(1, resolveThreads(o.threads) / 2);
+  for (int k = 0; k < batches; k += 2) {
+    parallelFor(std::min(2, batches - k), std::min(2, resolveThreads(o.threads)), [&](int half) {
+      const auto sampler = makeSampler(o.sampler, batch, hashWords(o.seed, k + half));
+      const SampleBuffer samples = traceSamples(*scene.tracer, *sampler, scene.width, scene.height, inner);
+      (half ? b : a).add(samples, inner);
+    });
+    progress.advance(std::min(2, batches - k));
   }
   progress.finish();
 

@@ -177,6 +177,11 @@ std::vector<std::string> readSpectrumLines(const std::string& path, bool& any) {
 }  // namespace
 
 void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m) {
+  appendSpectrumCsv(path, {{keyFields, &m}});
+}
+
+void appendSpectrumCsv(const std::string& path,
+                       const std::vector<std::pair<std::string, const SpectrumMetrics*>>& configurations) {
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
     bool any = false;
@@ -190,11 +195,15 @@ void appendSpectrumCsv(const std::string& path, const std::string& keyFields, co
   std::string out;
   const bool fresh = !std::filesystem::exists(path, ec) || std::filesystem::file_size(path, ec) == 0;
   if (fresh) out = spectrumCsvHeader() + '\n';
-  for (const auto& [kind, s] : {std::pair<const char*, const RadialSpectrum*>{"error", &m.error}, {"noise", &m.noise}})
-    for (int b = 0; b < kSpectrumBins; ++b)
-      if (s->count[b] > 0)
-        out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + real(RadialSpectrum::frequency(b)) + ',' +
-               real(s->power(b)) + ',' + real(s->energy[b]) + '\n';
+  for (const auto& [keyFields, mp] : configurations) {
+    const SpectrumMetrics& m = *mp;
+    for (const auto& [kind, s] :
+         {std::pair<const char*, const RadialSpectrum*>{"error", &m.error}, {"noise", &m.noise}})
+      for (int b = 0; b < kSpectrumBins; ++b)
+        if (s->count[b] > 0)
+          out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + real(RadialSpectrum::frequency(b)) + ',' +
+                 real(s->power(b)) + ',' + real(s->energy[b]) + '\n';
+  }
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
   if (fd < 0) throw FileError(path, "cannot open for appending");
   const bool ok = ::write(fd, out.data(), out.size()) == static_cast<ssize_t>(out.size());

@@ -40,6 +40,7 @@
 #pragma once
 #include <complex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/image.h"
@@ -98,6 +99,9 @@ class SpectrumAccumulator {
 /// (kind = error or noise; one line per bin), creating it with the header when missing. One write per
 /// call; a torn last line from a killed run is cut first. Throws FileError.
 void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m);
+/// The same for several configurations (key fields, spectra) in one write (the sweep: one per group).
+void appendSpectrumCsv(const std::string& path,
+                       const std::vector<std::pair<std::string, const SpectrumMetrics*>>& configurations);
 /// Rewrites a spectrum CSV sorted by its key columns, keeping the last copy of a repeated
 /// (configuration, kind, bin) line (a configuration re-measured after an interruption).
 void canonicaliseSpectrumCsv(const std::string& path);

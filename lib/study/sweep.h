@@ -20,6 +20,11 @@
 // <csv folder>/spectra/<scene>.csv (<scene>.<csv stem>.csv for shards or a
 // --csv path) just before the row, and are put in canonical order at the end.
 //
+// Threads: the seeds of a group (at most min(seeds, threads) sample sets in
+// flight) and each (seed, row) reconstruction run as tasks, folded into the
+// rows' accumulators in seed order, so every number and image is the same
+// for any thread count (steps and memory bound: docs/sweep_scheduling.md).
+//
 // Resuming: configurations whose key is already in the CSV are skipped (a
 // group whose rows are all present is not traced). At the end the CSV is
 // rewritten in canonical order, so an interrupted-and-resumed run, or merged
@@ -33,6 +38,16 @@
 
 namespace aliaslab {
 
+/// Where the sweep's time went (seconds). trace, splat, resolve and metrics are thread-seconds of work summed
+/// over tasks (trace includes importance traces; resolve includes classic/supersample/importance
+/// reconstruction; finish = finishRow: metric and spectrum results, images); waiting is thread-seconds idle inside the parallel phases (threads x wall - work);
+/// references (scene load, reference cache or pass, manifest) and io (CSV and spectrum lines, canonical
+/// order, contact sheets) are wall seconds of the serial steps.
+struct SweepPhases {
+  double trace = 0, splat = 0, resolve = 0, metrics = 0, finish = 0, waiting = 0;
+  double references = 0, io = 0;
+};
+
 struct SweepSummary {
   size_t groups = 0;            ///< sample-set groups of this shard
   size_t sampleSetsTraced = 0;  ///< traceSamples calls (one per group and seed, when needed)
@@ -43,7 +58,17 @@ struct SweepSummary {
   bool images = false;          ///< whether images were written
   double seconds = 0;
   std::vector<std::string> notes;  ///< skipped combinations etc.
+  SweepPhases phases;
+  size_t peakInFlightBytes = 0;    ///< peak task state counted by the scheduler (sample sets, accumulators, images)
 };
+
+/// The documented bound on the sweep's in-flight task state (bytes) for one group: with
+/// W = min(seeds, threads) sample sets in flight, W x (sample buffer + Accumulator + rowsPerGroup images)
+/// plus up to `threads` importance-traced buffers. Sample buffer = width x height x spp x sizeof(FilmSample)
+/// (24 B); Accumulator = width x height x (weightedRows + 1) x 4 doubles; image = width x height x 3 floats.
+/// runSweep's summary.peakInFlightBytes never exceeds it (tests/sweep_parallel_test.cpp).
+size_t sweepMemoryBound(int threads, int width, int height, int spp, size_t rowsPerGroup, size_t weightedRows,
+                        int seeds);
 
 /// Validates (InputError before any work), then runs the sweep.
 SweepSummary runSweep(const StudyConfig& config);
