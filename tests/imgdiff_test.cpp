@@ -127,4 +127,23 @@ TEST(Flip, GrowsWithTheColourDifferenceAndIsSymmetric) {
   EXPECT_NEAR(meanFlip(a, b), meanFlip(b, a), 1e-6);
 }
 
+TEST(Flip, APreparedReferenceServesManyImagesUnchanged) {
+  // The sweep prepares its target once (FlipReference) and compares every
+  // seed's image with it, from many threads: the object must not change
+  // between calls, and must agree with the symmetric two-image form.
+  Image ref(20, 14), a(20, 14), b(20, 14, Color(0.9f, 0.1f, 0.2f));
+  for (int y = 0; y < 14; ++y)
+    for (int x = 0; x < 20; ++x) {
+      ref.set(x, y, Color::Constant((x / 3 + y / 5) % 2 ? 0.8f : 0.2f));
+      a.set(x, y, Color(x / 20.f, y / 14.f, 0.5f));
+    }
+  const FlipReference prepared(ref);
+  const double first = prepared.mean(a);
+  EXPECT_GT(prepared.mean(b), 0.0);
+  EXPECT_EQ(prepared.mean(a), first);
+  EXPECT_NEAR(first, meanFlip(ref, a), 1e-6);  // the map is symmetric: computed the other way round
+  EXPECT_EQ(prepared.mean(ref), 0.0);
+  EXPECT_THROW(prepared.mean(Image(19, 14)), std::invalid_argument);
+}
+
 }  // namespace

@@ -183,3 +183,21 @@ TEST(ReferenceParallel, OneTwoThreeFiveAndMoreThreadsThanBatchesGiveTheSameRefer
     }
   }
 }
+
+// pointsets runs one task per (sampler, count), each into its own slot and files: its tables and images are
+// the same bytes for 1 and 3 threads (3 jobs x 2 counts: odd, so the partition is uneven).
+TEST(PointsetsParallel, OneAndThreeThreadsWriteTheSameFiles) {
+  std::map<std::string, std::string> runs[2];
+  int i = 0;
+  for (int threads : {1, 3}) {
+    const fs::path out = workDir() / ("pointsets" + std::to_string(threads));
+    const std::string cmd = std::string(ALIASLAB_BIN_DIR) + "/pointsets --samplers random,jittered,sobol --counts 16,64 " +
+                            "--sets 6 --no-chart --threads " + std::to_string(threads) + " --out " + out.string() +
+                            " > " + (workDir() / "pointsets.log").string() + " 2>&1";
+    ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+    for (const auto& e : fs::directory_iterator(out)) runs[i][e.path().filename().string()] = readBytes(e.path());
+    ++i;
+  }
+  ASSERT_GE(runs[0].size(), 13u);  // 6 point plots, 6 periodograms, the tables
+  EXPECT_EQ(runs[0], runs[1]);
+}

@@ -82,6 +82,13 @@ std::vector<std::string> withoutThreads(std::vector<std::string> rows) {
 }
 
 // One uninterrupted run, shared by the tests.
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 const std::string& fullCsv() {
   static const std::string path = [] {
     const std::string p = (workDir() / "full.csv").string();
@@ -143,6 +150,12 @@ TEST(SweepShards, TheGnuParallelScriptMergesToTheUnshardedCsv) {
                           tinyArgs(1) + " --out " + dir.string() + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   EXPECT_EQ(withoutThreads(withoutTiming((dir / "study.csv").string())), withoutThreads(withoutTiming(fullCsv())));
+  // The shards' spectra (spectra/<scene>.study.shard-i-of-3.csv) merge into spectra/<scene>.csv, equal to the
+  // unsharded run's (spectra have no timing columns).
+  const std::string stem = fs::path(kScene).stem().string();
+  const std::string merged = slurp(dir / "spectra" / (stem + ".csv"));
+  EXPECT_GT(std::count(merged.begin(), merged.end(), '\n'), 12);
+  EXPECT_EQ(merged, slurp(workDir() / "spectra" / (stem + ".full.csv")));
 }
 
 TEST(SweepShards, TheSlurmScriptSubmitsReferencesShardsAndMerge) {

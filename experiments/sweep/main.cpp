@@ -25,6 +25,7 @@
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/lock.h"
+#include "study/spectrum.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;
@@ -130,6 +131,8 @@ int main(int argc, char** argv) {
       checkShardSet(std::vector<std::string>(merge.begin() + 1, merge.end()));
       const CsvLock lock(merge[0], "sweep --merge");
       mergeCsvFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
+      // and the shards' spectra (spectra/<scene>.<shard>.csv) into the merged CSV's
+      mergeSpectrumFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
       // Contact sheets of the whole study when the shards wrote images beside it.
       const auto images = std::filesystem::path(merge[0]).parent_path() / "images";
       if (std::filesystem::is_directory(images)) writeContactSheets(merge[0], images.string());

@@ -12,7 +12,7 @@ namespace aliaslab {
 Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filters)
     : width_(width), height_(height), filters_(std::move(filters)) {
   const size_t n = 4 * static_cast<size_t>(width) * height;
-  sums_.assign(filters_.size(), std::vector<double>(n, 0.0));
+  sums_.assign(filters_.size(), LargeVector<double>(n, 0.0));
   plain_.assign(n, 0.0);
 }
 

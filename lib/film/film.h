@@ -37,9 +37,14 @@
 #include <vector>
 
 #include "core/image.h"
+#include "core/huge_pages.h"
 #include "filter/filter.h"
 
 namespace aliaslab {
+
+/// Storage of large per-pixel buffers: huge pages where offered (core/huge_pages.h).
+template <class T>
+using LargeVector = std::vector<T, HugePageAllocator<T>>;
 
 struct FilmSample {
   float x = 0, y = 0;          ///< film position
@@ -76,8 +81,8 @@ class SampleBuffer {
   }
   FilmSample* pixel(int i, int j) { return samples_.data() + start(i, j); }
   const FilmSample* pixel(int i, int j) const { return samples_.data() + start(i, j); }
-  std::vector<FilmSample>& samples() { return samples_; }
-  const std::vector<FilmSample>& samples() const { return samples_; }
+  LargeVector<FilmSample>& samples() { return samples_; }
+  const LargeVector<FilmSample>& samples() const { return samples_; }
 
  private:
   size_t start(int i, int j) const {
@@ -85,7 +90,7 @@ class SampleBuffer {
     return variable() ? offsets_[p] : p * spp_;
   }
   int width_ = 0, height_ = 0, spp_ = 0;
-  std::vector<FilmSample> samples_;
+  LargeVector<FilmSample> samples_;
   bool areaWeighted_ = false;
   std::vector<size_t> offsets_;  ///< variable count only: pixel p's samples at [offsets_[p], offsets_[p + 1])
 };
@@ -156,7 +161,7 @@ class Accumulator {
  private:
   int width_, height_;
   std::vector<const Filter*> filters_;
-  std::vector<std::vector<double>> sums_;  ///< per filter: r, g, b, weight per pixel
+  std::vector<LargeVector<double>> sums_;  ///< per filter: r, g, b, weight per pixel
   std::vector<double> plain_;              ///< r, g, b, count of each pixel's own finite samples (fallback)
   size_t samplesAdded_ = 0;
   size_t nonFinite_ = 0;

@@ -286,14 +286,28 @@ void validateStudy(const StudyConfig& c) {
     });
 
   // Scenes: present and parseable, with a known size; never the CSV this run writes.
+  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep.h sweepMemoryBound),
+  // plus the scene's reference images and the reference pass's sums: the largest group decides.
+  size_t rowsPerGroup = 0, weightedRows = 0;
+  for (const SampleSetGroup& g : expandStudy(c)) {
+    rowsPerGroup = std::max(rowsPerGroup, g.configs.size());
+    weightedRows = std::max<size_t>(weightedRows, std::count_if(g.configs.begin(), g.configs.end(), [](const Configuration& x) {
+                                      return x.mode == ReconMode::WeightedAverage;
+                                    }));
+  }
+  const double references = double(studyFilters(c).size() + 2) * (3 * sizeof(float) + 4 * sizeof(double));
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     refuseOutputOverInput("--csv", csvPath(c), {path});
     const auto scene = loadStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
-    // Memory, before any allocation: one sample set at the largest spp plus an image per configuration (estimate).
+    // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
+    // the references (an image and a pass's 4 sums per (filter, radius), the area and the target).
     const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
     const double pixels = double(scene->width) * scene->height;
-    requireMemory(pixels * (maxSpp * double(sizeof(FilmSample)) + 12.0 * 4 * (countConfigurations(c) + 2)), "--size",
+    requireMemory(double(sweepMemoryBound(c.threads, scene->width, scene->height, maxSpp, rowsPerGroup, weightedRows,
+                                          c.seeds)) +
+                      pixels * references,
+                  "--size",
                   scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) +
                       " and " + std::to_string(maxSpp) + " spp");
   }

@@ -55,20 +55,35 @@ constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95, kQf = 0.5, kFeatureWidth = 0.
 /// (along y), each of odd length, edges clamped.
 std::vector<double> convolve(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                              const std::vector<double>& ky) {
+  // The same sums, in the same order of k, as the textbook loop with clamped
+  // indices; the interior (no clamping needed) runs without the clamps.
   const int rx = static_cast<int>(kx.size()) / 2, ry = static_cast<int>(ky.size()) / 2;
   std::vector<double> tmp(in.size()), out(in.size());
-  for (int y = 0; y < h; ++y)
+  for (int y = 0; y < h; ++y) {
+    const double* row = in.data() + static_cast<size_t>(y) * w;
+    double* dst = tmp.data() + static_cast<size_t>(y) * w;
     for (int x = 0; x < w; ++x) {
       double s = 0;
-      for (int k = -rx; k <= rx; ++k) s += kx[k + rx] * in[static_cast<size_t>(y) * w + std::clamp(x + k, 0, w - 1)];
-      tmp[static_cast<size_t>(y) * w + x] = s;
+      if (x - rx >= 0 && x + rx < w) {
+        const double* p = row + (x - rx);
+        for (int k = 0; k <= 2 * rx; ++k) s += kx[k] * p[k];
+      } else {
+        for (int k = -rx; k <= rx; ++k) s += kx[k + rx] * row[std::clamp(x + k, 0, w - 1)];
+      }
+      dst[x] = s;
     }
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      double s = 0;
-      for (int k = -ry; k <= ry; ++k) s += ky[k + ry] * tmp[static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w + x];
-      out[static_cast<size_t>(y) * w + x] = s;
+  }
+  std::vector<const double*> rows(2 * ry + 1);
+  for (int y = 0; y < h; ++y) {
+    for (int k = -ry; k <= ry; ++k) rows[k + ry] = tmp.data() + static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w;
+    double* dst = out.data() + static_cast<size_t>(y) * w;
+    for (int x = 0; x < w; ++x) dst[x] = 0;
+    for (int k = 0; k <= 2 * ry; ++k) {  // per pixel, still k = -ry .. ry in order
+      const double c = ky[k];
+      const double* src = rows[k];
+      for (int x = 0; x < w; ++x) dst[x] += c * src[x];
     }
+  }
   return out;
 }
 
@@ -159,32 +174,48 @@ void features(const Image& img, double ppd, std::vector<double>& edge, std::vect
 
 }  // namespace
 
-std::vector<float> flipMap(const Image& test, const Image& reference, double ppd) {
-  if (test.width() != reference.width() || test.height() != reference.height())
+FlipReference::FlipReference(const Image& reference, double ppd)
+    : width_(reference.width()), height_(reference.height()), ppd_(ppd), lab_(filteredLab(reference, ppd)) {
+  features(reference, ppd, edge_, point_);
+}
+
+std::vector<float> FlipReference::map(const Image& test) const {
+  if (test.width() != width_ || test.height() != height_)
     throw std::invalid_argument("flipMap: images of different sizes");
-  const size_t n = static_cast<size_t>(test.width()) * test.height();
-  const std::vector<V3> lt = filteredLab(test, ppd), lr = filteredLab(reference, ppd);
-  std::vector<double> et, pt, er, pr;
-  features(test, ppd, et, pt);
-  features(reference, ppd, er, pr);
+  const size_t n = static_cast<size_t>(width_) * height_;
+  const std::vector<V3> lt = filteredLab(test, ppd_);
+  std::vector<double> et, pt;
+  features(test, ppd_, et, pt);
   // the largest colour difference of the gamut: pure green against pure blue
   const double cmax = std::pow(hyab(huntLab({0, 1, 0}), huntLab({0, 0, 1})), kQc);
   std::vector<float> out(n);
   for (size_t i = 0; i < n; ++i) {
-    const double dc = std::pow(hyab(lt[i], lr[i]), kQc);
+    const double dc = std::pow(hyab(lt[i], lab_[i]), kQc);
     const double ec = dc < kPc * cmax ? dc * kPt / (kPc * cmax)
                                       : kPt + (dc - kPc * cmax) / (cmax - kPc * cmax) * (1 - kPt);
-    const double ef = std::pow(std::max(std::abs(et[i] - er[i]), std::abs(pt[i] - pr[i])) / std::sqrt(2.0), kQf);
+    const double ef = std::pow(std::max(std::abs(et[i] - edge_[i]), std::abs(pt[i] - point_[i])) / std::sqrt(2.0), kQf);
     out[i] = static_cast<float>(std::clamp(std::pow(std::min(ec, 1.0), 1 - std::min(ef, 1.0)), 0.0, 1.0));
   }
   return out;
 }
 
-double meanFlip(const Image& test, const Image& reference, double ppd) {
-  const std::vector<float> m = flipMap(test, reference, ppd);
+double FlipReference::mean(const Image& test) const {
+  const std::vector<float> m = map(test);
   double s = 0;
   for (float v : m) s += v;
   return m.empty() ? 0.0 : s / m.size();
+}
+
+std::vector<float> flipMap(const Image& test, const Image& reference, double ppd) {
+  if (test.width() != reference.width() || test.height() != reference.height())
+    throw std::invalid_argument("flipMap: images of different sizes");
+  return FlipReference(reference, ppd).map(test);
+}
+
+double meanFlip(const Image& test, const Image& reference, double ppd) {
+  if (test.width() != reference.width() || test.height() != reference.height())
+    throw std::invalid_argument("flipMap: images of different sizes");
+  return FlipReference(reference, ppd).mean(test);
 }
 
 }  // namespace aliaslab

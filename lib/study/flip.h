@@ -11,6 +11,7 @@
 // seen from 0.7 m, the paper's default). The map is symmetric in its two
 // arguments and a pure function of them.
 #pragma once
+#include <array>
 #include <vector>
 
 #include "core/image.h"
@@ -26,5 +27,24 @@ std::vector<float> flipMap(const Image& test, const Image& reference,
 
 /// Mean of flipMap over the pixels.
 double meanFlip(const Image& test, const Image& reference, double pixelsPerDegree = kFlipDefaultPixelsPerDegree);
+
+/// One reference, prepared once (its filtered Lab and feature planes), then
+/// compared against many test images: the sweep compares every seed's image
+/// of every row against the same target, so half of each comparison's work
+/// is done once per scene instead. map()/mean() give exactly the numbers of
+/// flipMap()/meanFlip() with this reference (same arithmetic, same order).
+/// Read-only after construction, so one object may serve many threads.
+class FlipReference {
+ public:
+  explicit FlipReference(const Image& reference, double pixelsPerDegree = kFlipDefaultPixelsPerDegree);
+  std::vector<float> map(const Image& test) const;
+  double mean(const Image& test) const;
+
+ private:
+  int width_, height_;
+  double ppd_;
+  std::vector<std::array<double, 3>> lab_;
+  std::vector<double> edge_, point_;
+};
 
 }  // namespace aliaslab

@@ -239,4 +239,50 @@ void canonicaliseSpectrumCsv(const std::string& path) {
   writeTextFile(path, text);
 }
 
+std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene) {
+  const std::filesystem::path csv(studyCsv);
+  const std::string stem = csv.filename() == "study.csv" ? "" : "." + csv.stem().string();
+  return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
+}
+
+std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  std::map<std::string, std::vector<std::string>> byScene;  // scene -> lines of every shard
+  for (const std::string& input : inputs) {
+    const fs::path dir = fs::path(input).parent_path() / "spectra";
+    // this shard's files end in "<suffix>": ".<stem>.csv", or just ".csv" for a study.csv (then the scene
+    // name has no dot, which tells them from other shards' files in the same folder)
+    const std::string probe = spectrumCsvPath(input, "X");
+    const std::string suffix = fs::path(probe).filename().string().substr(1);
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) continue;
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(dir, ec)) files.push_back(e.path());
+    std::sort(files.begin(), files.end());
+    for (const fs::path& f : files) {
+      const std::string name = f.filename().string();
+      if (name.size() <= suffix.size() || name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+        continue;
+      const std::string scene = name.substr(0, name.size() - suffix.size());
+      if (suffix == ".csv" && scene.find('.') != std::string::npos) continue;
+      if (name.find(".partial.") != std::string::npos) continue;
+      bool any = false;
+      auto lines = readSpectrumLines(f.string(), any);
+      auto& all = byScene[scene];
+      all.insert(all.end(), lines.begin(), lines.end());
+    }
+  }
+  std::vector<std::string> written;
+  for (const auto& [scene, lines] : byScene) {
+    const std::string path = spectrumCsvPath(out, scene);
+    fs::create_directories(fs::path(path).parent_path());
+    std::string text = spectrumCsvHeader() + '\n';
+    for (const std::string& l : lines) text += l + '\n';
+    writeTextFile(path, text);
+    canonicaliseSpectrumCsv(path);
+    written.push_back(path);
+  }
+  return written;
+}
+
 }  // namespace aliaslab

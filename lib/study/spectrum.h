@@ -107,5 +107,12 @@ void appendSpectrumCsv(const std::string& path,
 void canonicaliseSpectrumCsv(const std::string& path);
 /// The header of the spectrum CSV (no newline).
 const std::string& spectrumCsvHeader();
+/// Where the sweep writes a scene's spectra for the study CSV `studyCsv`: <its folder>/spectra/<scene>.csv,
+/// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one.
+std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene);
+/// The spectra of the shard CSVs `inputs` (each shard's spectrumCsvPath files) joined per scene into
+/// spectrumCsvPath(out, scene), in canonical order (sweep --merge). Inputs without spectra add nothing.
+/// Returns the files written.
+std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs);
 
 }  // namespace aliaslab

@@ -59,13 +59,8 @@ CsvRow templateRow(const StudyConfig& c, const StudyScene& s, const SampleSetGro
   return r;
 }
 
-// The per-scene spectrum CSV (study/spectrum.h) beside the study CSV: <csv folder>/spectra/<scene>.csv, or
-// <scene>.<csv stem>.csv when the CSV is not the default study.csv (shards, --csv), so shards never share one.
-std::string spectrumPath(const StudyConfig& c, const std::string& scene) {
-  const fs::path csv(csvPath(c));
-  const std::string stem = csv.filename() == "study.csv" ? "" : "." + csv.stem().string();
-  return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
-}
+// The per-scene spectrum CSV beside the study CSV (study/spectrum.h spectrumCsvPath).
+std::string spectrumPath(const StudyConfig& c, const std::string& scene) { return spectrumCsvPath(csvPath(c), scene); }
 
 ReferenceOptions referenceOptions(const StudyConfig& c) {
   ReferenceOptions o;
@@ -101,8 +96,8 @@ struct Pending {
   ReconStats stats;
   double traceMs = 0, reconMs = 0;
   Image seed0;
-  const Image* flipTarget = nullptr;  ///< what the flip column compares against (the study's target)
-  double flipSum = 0;                 ///< sum over the seeds of meanFlip(I_k, *flipTarget), in seed order
+  const FlipReference* flipTarget = nullptr;  ///< what the flip column compares against (the study's target)
+  double flipSum = 0;                         ///< sum over the seeds of meanFlip(I_k, target), in seed order
 };
 
 // What an adaptive sampler actually spent in a group (mean over seeds of the mean spp, max over seeds),
@@ -196,7 +191,7 @@ SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
 // Phase B: row `p`'s image of the set `t` (weighted: resolve from the shared Accumulator; classic and
 // supersample: from the sample buffer; importance: its own trace with the row's filter).
 RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weightedIndex, const Pending& p, int k,
-                        int innerThreads, double* traceS, double* resolveS) {
+                        int innerThreads, double* traceS, double* resolveS, double* flipS) {
   RowImage out;
   if (p.mode == ReconMode::ImportanceSampled) {
     const auto sampler = makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
@@ -220,7 +215,9 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
     *resolveS += out.reconMs / 1000;
     if (p.mode == ReconMode::WeightedAverage) out.reconMs += 1000.0 * t.splatSeconds[weightedIndex];
   }
-  out.flip = meanFlip(out.r.image, *p.flipTarget);
+  const auto tf = Clock::now();
+  out.flip = p.flipTarget->mean(out.r.image);
+  *flipS += secondsSince(tf);
   g.inFlight.add(imageBytes(g.scene.width, g.scene.height));
   return out;
 }
@@ -280,20 +277,22 @@ void runGroup(const GroupContext& g, const std::function<void(double)>& advance)
     g.phases.waiting += std::max(0.0, wallA * g.threads - busy);
     // Phase B: one task per (seed, row).
     std::vector<RowImage> images(size_t(W) * R);
-    std::vector<double> traceB(images.size(), 0), resolveB(images.size(), 0), busyB(images.size(), 0);
+    std::vector<double> traceB(images.size(), 0), resolveB(images.size(), 0), flipB(images.size(), 0),
+        busyB(images.size(), 0);
     const int inner = innerThreads(g.threads, images.size());
     t0 = Clock::now();
     parallelFor(int(images.size()), g.threads, [&](int n) {
       const auto t = Clock::now();
       const int i = n / int(R);
       const size_t r = size_t(n) % R;
-      images[n] = reconstructRow(g, traces[i], weightedIndex[r], g.rows[r], k0 + i, inner, &traceB[n], &resolveB[n]);
+      images[n] = reconstructRow(g, traces[i], weightedIndex[r], g.rows[r], k0 + i, inner, &traceB[n], &resolveB[n],
+                                 &flipB[n]);
       busyB[n] = secondsSince(t) * inner;
     });
     const double wallB = secondsSince(t0);
     busy = 0;
     for (size_t n = 0; n < images.size(); ++n) {
-      busy += busyB[n], g.phases.trace += traceB[n], g.phases.resolve += resolveB[n];
+      busy += busyB[n], g.phases.trace += traceB[n], g.phases.resolve += resolveB[n], g.phases.flip += flipB[n];
       if (g.rows[n % R].mode == ReconMode::ImportanceSampled) ++g.sum.importanceTraces;
     }
     g.phases.waiting += std::max(0.0, wallB * g.threads - busy);
@@ -503,6 +502,7 @@ SweepSummary runSweep(const StudyConfig& config) {
     const ReferenceImage& area = *refOf.at(kArea);
     const ReferenceImage& target = *refOf.at(targetSpec);
     const fs::path imageDir = fs::path(config.out) / "images" / scene->stem;
+    const FlipReference flipTarget(target.image);  // prepared once per scene, shared by every (seed, row) task
 
     for (size_t g = gi; g < gend; ++g) {
       const SampleSetGroup& group = groups[g];
@@ -522,7 +522,7 @@ SweepSummary runSweep(const StudyConfig& config) {
         p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
         p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
         p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
-        p.flipTarget = &target.image;
+        p.flipTarget = &flipTarget;
       }
       GroupSpent spent{double(group.spp), group.spp, Image()};
       const GroupContext ctx{config, *scene, group, tracer, rows, threads, sum.images, inFlight, sum.phases, sum, spent};

@@ -1,0 +1,43 @@
+// Large buffers backed by transparent huge pages where the kernel offers them.
+//
+// A traced sample set (film/film.h SampleBuffer) holds width x height x spp
+// samples: 100 MB for 512 x 512 at 16 spp. Touching it the first time costs
+// one page fault per 4 KB page, and page faults of one process serialise in
+// the kernel, so with 4 KB pages a second thread gains little (the raytracer
+// measured 1.62x from 1 to 2 threads; results/study_speed.md). Blocks of at
+// least 2 MB are therefore aligned to 2 MB and advised MADV_HUGEPAGE: one
+// fault per 2 MB instead of 512. Smaller blocks come from malloc as usual.
+// Where the kernel says "never" the advice is a no-op; nothing depends on it
+// but time. Freed large blocks are kept and handed out
+// again for the same rounded size (at most 512 MiB kept): a sweep allocates the same few sizes per
+// sample set, and returning them to the kernel costs page faults again plus an
+// munmap that stalls every thread of the process. The contents of a reused
+// block are whatever the previous owner left; std::vector initialises them.
+#pragma once
+#include <cstddef>
+#include <new>
+
+namespace aliaslab {
+
+void* allocateLarge(size_t bytes);
+void freeLarge(void* p, size_t bytes) noexcept;  ///< bytes: as given to allocateLarge
+
+/// std::allocator with allocateLarge/freeLarge underneath.
+template <class T>
+struct HugePageAllocator {
+  using value_type = T;
+  HugePageAllocator() = default;
+  template <class U>
+  HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
+  T* allocate(size_t n) {
+    if (n > size_t(-1) / sizeof(T)) throw std::bad_array_new_length();
+    return static_cast<T*>(allocateLarge(n * sizeof(T)));
+  }
+  void deallocate(T* p, size_t n) noexcept { freeLarge(p, n * sizeof(T)); }
+  template <class U>
+  bool operator==(const HugePageAllocator<U>&) const noexcept { return true; }
+  template <class U>
+  bool operator!=(const HugePageAllocator<U>&) const noexcept { return false; }
+};
+
+}  // namespace aliaslab
