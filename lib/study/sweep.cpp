@@ -518,11 +518,22 @@ SweepSummary runSweep(const StudyConfig& config) {
         progress.advance(groupUnits[g]);
         continue;
       }
-      for (Pending& p : rows) {
-        p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
-        p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
-        p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
-        p.flipTarget = &flipTarget;
+      // Each row's accumulators (the spectrum's transforms the reference): one task per row.
+      {
+        const auto ts = Clock::now();
+        std::vector<double> busy(rows.size(), 0);
+        parallelFor(int(rows.size()), threads, [&](int i) {
+          const auto t = Clock::now();
+          Pending& p = rows[i];
+          p.reference = p.mode == ReconMode::Supersample ? &area : refOf.at({p.row.filter, p.row.radius});
+          p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, area.image, target.image);
+          p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
+          p.flipTarget = &flipTarget;
+          busy[i] = secondsSince(t);
+        });
+        double work = 0;
+        for (double b : busy) work += b;
+        sum.phases.setup += work, sum.phases.waiting += std::max(0.0, secondsSince(ts) * threads - work);
       }
       GroupSpent spent{double(group.spp), group.spp, Image()};
       const GroupContext ctx{config, *scene, group, tracer, rows, threads, sum.images, inFlight, sum.phases, sum, spent};

@@ -40,11 +40,11 @@ namespace aliaslab {
 
 /// Where the sweep's time went (seconds). trace, splat, resolve and metrics are thread-seconds of work summed
 /// over tasks (trace includes importance traces; resolve includes classic/supersample/importance
-/// reconstruction; flip = the flip column's comparisons, one per (seed, row); finish = finishRow: metric and spectrum results, images); waiting is thread-seconds idle inside the parallel phases (threads x wall - work);
+/// reconstruction; setup = each row's metric and spectrum accumulators at the start of its group; flip = the flip column's comparisons, one per (seed, row); finish = finishRow: metric and spectrum results, images); waiting is thread-seconds idle inside the parallel phases (threads x wall - work);
 /// references (scene load, reference cache or pass, manifest) and io (CSV and spectrum lines, canonical
 /// order, contact sheets) are wall seconds of the serial steps.
 struct SweepPhases {
-  double trace = 0, splat = 0, resolve = 0, metrics = 0, flip = 0, finish = 0, waiting = 0;
+  double setup = 0, trace = 0, splat = 0, resolve = 0, metrics = 0, flip = 0, finish = 0, waiting = 0;
   double references = 0, io = 0;
 };
 

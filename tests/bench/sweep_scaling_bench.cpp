@@ -3,7 +3,7 @@
 // they are not timed), each run into a fresh output folder.
 //   SweepThreads/<n>  wall time of the whole runSweep; counters:
 //     speedup      wall(1 thread) / wall(n), both measured in this run
-//     trace, splat, resolve, metrics, flip, finish   thread-seconds of work in the parallel phases
+//     setup, trace, splat, resolve, metrics, flip, finish   thread-seconds of work in the parallel phases
 //     waiting      thread-seconds idle inside the parallel phases
 //     io, refs     wall seconds of the serial steps (CSV/spectra lines, canonical order; scene + cached refs)
 //     serial_frac  (io + refs + wall outside the phases) / wall, at this thread count
@@ -72,11 +72,11 @@ void sweepThreads(benchmark::State& state) {
   }
   if (threads == 1) oneThreadWall = wall;
   const SweepPhases& p = s.phases;
-  const double inPhases = (p.trace + p.splat + p.resolve + p.metrics + p.flip + p.finish + p.waiting) / threads;
+  const double inPhases = (p.setup + p.trace + p.splat + p.resolve + p.metrics + p.flip + p.finish + p.waiting) / threads;
   state.counters["speedup"] = oneThreadWall > 0 ? oneThreadWall / wall : 0;
   state.counters["trace"] = p.trace, state.counters["splat"] = p.splat;
   state.counters["resolve"] = p.resolve, state.counters["metrics"] = p.metrics;
-  state.counters["flip"] = p.flip;
+  state.counters["flip"] = p.flip, state.counters["setup"] = p.setup;
   state.counters["finish"] = p.finish;
   state.counters["waiting"] = p.waiting, state.counters["io"] = p.io, state.counters["refs"] = p.references;
   state.counters["serial_frac"] = std::max(0.0, wall - inPhases) / wall;
