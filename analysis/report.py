@@ -248,10 +248,14 @@ def summary_chart(df, out_dir):
         handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.5, label="pre-filtered"))
     leg = ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                     title="colour: sampler, size: spp", title_fontsize=7)
-    ax.add_artist(leg)
-    shown = lines[:20] + ([f"... {len(lines) - 20} more"] if len(lines) > 20 else [])
-    ax.text(1.01, 0.0, "Pareto front:\n" + "\n".join(shown), transform=ax.transAxes, fontsize=7, va="bottom",
-            family="monospace")
+    leg.set_in_layout(True)
+    # the numbered front below the plot, in columns of at most 8 lines (beside the legend it collided with
+    # it once there were a dozen samplers)
+    shown = lines[:24] + ([f"... {len(lines) - 24} more"] if len(lines) > 24 else [])
+    per_col = 8
+    for c in range(0, len(shown), per_col):
+        ax.text(0.55 * (c // per_col), -0.17, ("Pareto front:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per_col]),
+                transform=ax.transAxes, fontsize=7, va="top", family="monospace")
     ax.set_title("Error against the target vs time, every method at every spp level, all scenes"
                  + (f"\n{clipped}" if clipped else ""), fontsize=10)
     common.save_figure(fig, out_dir, name)
