@@ -10,6 +10,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <atomic>
 
@@ -508,11 +509,14 @@ SweepSummary runSweep(const StudyConfig& config) {
       const SampleSetGroup& group = groups[g];
       // Pre-filtered groups trace with the same scene and flags, footprints on
       // (1/sqrt(spp) pixels a side); references never do.
-      TraceOptions prefilterOptions = scene->tracer->options();
-      prefilterOptions.prefilter = true;
-      prefilterOptions.footprintPixels = 1.f / std::sqrt(static_cast<float>(group.spp));
-      const Tracer prefilterTracer(scene->scene, *scene->aggregate, prefilterOptions);
-      const Tracer& tracer = parsePrefilter(group.prefilter) ? prefilterTracer : *scene->tracer;
+      std::optional<Tracer> prefilterTracer;  // built only for the groups that pre-filter
+      if (parsePrefilter(group.prefilter)) {
+        TraceOptions options = scene->tracer->options();
+        options.prefilter = true;
+        options.footprintPixels = 1.f / std::sqrt(static_cast<float>(group.spp));
+        prefilterTracer.emplace(scene->scene, *scene->aggregate, options);
+      }
+      const Tracer& tracer = prefilterTracer ? *prefilterTracer : *scene->tracer;
       auto& rows = pending[g - gi];
       if (rows.empty()) {
         progress.advance(groupUnits[g]);
