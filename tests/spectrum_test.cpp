@@ -173,4 +173,34 @@ TEST(Spectrum, CsvAppendsAndCanonicalises) {
   std::filesystem::remove(path);
 }
 
+// Canonical order by hand: numbers compare as numbers (spp 4 < 16, radius 1.5 < 10, bin 2 < 10, where text
+// order says the opposite), text as text, and of a key written twice the last copy is kept.
+TEST(Spectrum, CanonicalOrderIsNumericAndKeepsTheLastCopy) {
+  const std::string path = (std::filesystem::temp_directory_path() / "aliaslab_spectrum_order_test.csv").string();
+  {
+    std::ofstream out(path);
+    out << spectrumCsvHeader() << '\n'
+        << "s,a,16,box,1.5,weighted,none,error,2,0.1,5,50\n"
+        << "s,a,4,box,10,weighted,none,error,2,0.1,6,60\n"
+        << "s,a,4,box,1.5,weighted,none,noise,10,0.5,1,10\n"
+        << "s,a,4,box,1.5,weighted,none,error,10,0.5,7,70\n"
+        << "s,a,4,box,1.5,weighted,none,error,2,0.1,8,80\n"
+        << "r,b,64,tent,2,weighted,none,error,0,0,3,30\n"
+        << "s,a,16,box,1.5,weighted,none,error,2,0.1,9,90\n";  // re-measured: replaces the first line
+  }
+  canonicaliseSpectrumCsv(path);
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, spectrumCsvHeader());
+  std::vector<std::string> lines;
+  while (std::getline(in, line)) lines.push_back(line);
+  const std::vector<std::string> expected = {
+      "r,b,64,tent,2,weighted,none,error,0,0,3,30",      "s,a,4,box,1.5,weighted,none,error,2,0.1,8,80",
+      "s,a,4,box,1.5,weighted,none,error,10,0.5,7,70",   "s,a,4,box,1.5,weighted,none,noise,10,0.5,1,10",
+      "s,a,4,box,10,weighted,none,error,2,0.1,6,60",     "s,a,16,box,1.5,weighted,none,error,2,0.1,9,90"};
+  EXPECT_EQ(lines, expected);
+  std::filesystem::remove(path);
+}
+
 }  // namespace

@@ -1,5 +1,6 @@
 #include "core/huge_pages.h"
 
+#include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstdlib>
@@ -47,6 +48,15 @@ void* allocateLarge(size_t bytes) {
   if (!p) throw std::bad_alloc();
   ::madvise(p, rounded, MADV_HUGEPAGE);  // advice only: ignored where huge pages are off
   return p;
+}
+
+void keepMediumBlocks() {
+  static const bool done = [] {
+    ::mallopt(M_MMAP_THRESHOLD, 32 << 20);   // below 32 MB: from the heap, not a fresh mapping
+    ::mallopt(M_TRIM_THRESHOLD, 512 << 20);  // the heap's free top is returned only beyond 512 MB
+    return true;
+  }();
+  (void)done;
 }
 
 void freeLarge(void* p, size_t bytes) noexcept {

@@ -20,6 +20,13 @@
 namespace aliaslab {
 
 void* allocateLarge(size_t bytes);
+
+/// Keeps medium blocks (below 32 MB: a row's image, FLIP's planes, per-row sums) in the C heap once freed,
+/// instead of glibc's default of returning each one to the kernel (munmap, or a heap trim) and faulting it in
+/// again at the next allocation: a study frees thousands of them per group (0.17 s of a 19 s one-thread
+/// study, all of it serial; results/study_speed.md). Process-wide, idempotent; the heap then stays at its
+/// peak size. A no-op under AddressSanitizer (its allocator ignores it).
+void keepMediumBlocks();
 void freeLarge(void* p, size_t bytes) noexcept;  ///< bytes: as given to allocateLarge
 
 /// std::allocator with allocateLarge/freeLarge underneath.

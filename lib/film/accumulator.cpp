@@ -12,7 +12,8 @@ namespace aliaslab {
 Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filters)
     : width_(width), height_(height), filters_(std::move(filters)) {
   const size_t n = 4 * static_cast<size_t>(width) * height;
-  sums_.assign(filters_.size(), LargeVector<double>(n, 0.0));
+  sums_.resize(filters_.size());
+  for (auto& s : sums_) s.assign(n, 0.0);  // zero-filled in place (not copied from a zero vector)
   plain_.assign(n, 0.0);
 }
 

@@ -51,6 +51,7 @@ SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts
     offsets_[p + 1] = offsets_[p] + static_cast<size_t>(counts[p]);
   }
   samples_.resize(offsets_.back());
+  std::fill(samples_.begin(), samples_.end(), FilmSample{});
 }
 
 namespace filmimpl {

@@ -33,7 +33,9 @@
 // and dense regions do not count more than their area.
 #pragma once
 #include <cstddef>
+#include <algorithm>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/image.h"
@@ -52,11 +54,37 @@ struct FilmSample {
   float weight = 1.f;          ///< importance weight (1 unless filter importance sampling)
 };
 
+/// The sample store's allocator: huge pages, and construction without arguments leaves a FilmSample (an
+/// implicit-lifetime aggregate) as the memory holds it, so that SampleBuffer decides who first writes it.
+template <class T>
+struct SampleAllocator : HugePageAllocator<T> {
+  using value_type = T;
+  template <class U>
+  struct rebind {
+    using other = SampleAllocator<U>;
+  };
+  SampleAllocator() = default;
+  template <class U>
+  SampleAllocator(const SampleAllocator<U>&) noexcept {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) > 0 || !std::is_same_v<U, FilmSample>) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
 class SampleBuffer {
  public:
+  using Storage = std::vector<FilmSample, SampleAllocator<FilmSample>>;
+  /// Marks a buffer whose every field of every sample the caller writes before reading (traceSamples does):
+  /// nothing is initialised, so the first touch of its pages happens in the caller's parallel loop.
+  struct Unwritten {};
+
   SampleBuffer() = default;
-  /// Fixed count: spp samples in every pixel.
-  SampleBuffer(int width, int height, int spp)
+  /// Fixed count: spp samples in every pixel, each FilmSample{}.
+  SampleBuffer(int width, int height, int spp) : SampleBuffer(width, height, spp, Unwritten{}) {
+    std::fill(samples_.begin(), samples_.end(), FilmSample{});
+  }
+  SampleBuffer(int width, int height, int spp, Unwritten)
       : width_(width), height_(height), spp_(spp), samples_(static_cast<size_t>(width) * height * spp) {}
   /// Variable count (adaptive sampling): counts[j * width + i] samples in pixel (i, j), stored pixel after
   /// pixel in the same row-major order, so each row's samples are still contiguous.
@@ -81,8 +109,8 @@ class SampleBuffer {
   }
   FilmSample* pixel(int i, int j) { return samples_.data() + start(i, j); }
   const FilmSample* pixel(int i, int j) const { return samples_.data() + start(i, j); }
-  LargeVector<FilmSample>& samples() { return samples_; }
-  const LargeVector<FilmSample>& samples() const { return samples_; }
+  Storage& samples() { return samples_; }
+  const Storage& samples() const { return samples_; }
 
  private:
   size_t start(int i, int j) const {
@@ -90,7 +118,7 @@ class SampleBuffer {
     return variable() ? offsets_[p] : p * spp_;
   }
   int width_ = 0, height_ = 0, spp_ = 0;
-  LargeVector<FilmSample> samples_;
+  Storage samples_;
   bool areaWeighted_ = false;
   std::vector<size_t> offsets_;  ///< variable count only: pixel p's samples at [offsets_[p], offsets_[p + 1])
 };

@@ -53,7 +53,7 @@ SampleBuffer traceWith(const Tracer& tracer, const Sampler& sampler, int width, 
                        const Progress& progress, Place&& place) {
   requireCamera(tracer);
   const int spp = sampler.spp();
-  SampleBuffer buffer(width, height, spp);
+  SampleBuffer buffer(width, height, spp, SampleBuffer::Unwritten{});  // every field of every sample set below
   forEachTile(width, height, threads, progress, [&](int i, int j) {
     thread_local std::vector<Vec2> u;  // one per worker thread, reused pixel after pixel
     u.resize(spp);

@@ -190,36 +190,39 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
   set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
   set.images.resize(specs.size());
 
-  // Load what the cache holds.
-  std::vector<FilterSpec> missing;
-  std::vector<size_t> missingIndex;
-  for (size_t i = 0; i < specs.size(); ++i) {
+  // Load what the cache holds: one task per entry (each reads two files and writes only its own slot).
+  std::vector<char> cached(specs.size(), 0);
+  parallelFor(int(specs.size()), o.threads, [&](int i) {
     const std::string describe = makeFilter(specs[i].first, static_cast<float>(specs[i].second))->describe();
     const std::string key = referenceKey(scene, describe, o);
     const fs::path exr = fs::path(cacheDir) / (key + ".exr"), json = fs::path(cacheDir) / (key + ".json");
-    if (fs::exists(exr) && fs::exists(json)) {
-      try {
-        ReferenceImage& r = set.images[i];
-        const std::string manifest = readFileBytes(json.string());
-        const std::string stored = jsonText(manifest, "image_hash"), actual = imageContentHash(exr.string());
-        if (stored != actual) {
-          std::fprintf(stderr, "note: cached reference %s does not match its manifest %s (%s); rendering it again\n",
-                       exr.string().c_str(), json.string().c_str(),
-                       stored.empty() ? "no content hash" : "content hash differs");
-          throw FileError(exr.string(), "content hash mismatch");
-        }
-        r.image = readImage(exr.string());
-        r.error = jsonField(manifest, "ref_error");
-        if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
-          r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
-          continue;
-        }
-      } catch (const InputError&) {
-      }  // unreadable entry: render it again
-    }
-    missing.push_back(specs[i]);
-    missingIndex.push_back(i);
-  }
+    if (!fs::exists(exr) || !fs::exists(json)) return;
+    try {
+      ReferenceImage& r = set.images[i];
+      const std::string manifest = readFileBytes(json.string());
+      const std::string stored = jsonText(manifest, "image_hash"), actual = imageContentHash(exr.string());
+      if (stored != actual) {
+        std::fprintf(stderr, "note: cached reference %s does not match its manifest %s (%s); rendering it again\n",
+                     exr.string().c_str(), json.string().c_str(),
+                     stored.empty() ? "no content hash" : "content hash differs");
+        return;
+      }
+      r.image = readImage(exr.string());
+      r.error = jsonField(manifest, "ref_error");
+      if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
+        r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
+        cached[i] = 1;
+      } else {
+        r = ReferenceImage();
+      }
+    } catch (const InputError&) {
+      set.images[i] = ReferenceImage();
+    }  // unreadable entry: render it again
+  });
+  std::vector<FilterSpec> missing;
+  std::vector<size_t> missingIndex;
+  for (size_t i = 0; i < specs.size(); ++i)
+    if (!cached[i]) missing.push_back(specs[i]), missingIndex.push_back(i);
   if (missing.empty()) return set;
 
   // Render the missing ones together and store each with its manifest.

@@ -27,7 +27,7 @@ constexpr double kPi = 3.14159265358979323846;
 /// The unnormalised 2-D DFT of channel c of `image` (minus `subtract` when given), row-major v * W + u.
 std::vector<Complex> dft2(const Image& image, const Image* subtract, int c) {
   const int w = image.width(), h = image.height();
-  Eigen::FFT<double> fft;
+  thread_local Eigen::FFT<double> fft;  // keeps its plans (twiddles) per length between calls
   std::vector<Complex> out(static_cast<size_t>(w) * h), line(w), col(h), colOut(h), lineOut(w);
   const float* a = image.data();
   const float* b = subtract ? subtract->data() : nullptr;
@@ -93,6 +93,8 @@ SpectrumAccumulator::SpectrumAccumulator(const Image& reference)
   radius_.resize(n);
   for (int v = 0; v < height_; ++v)
     for (int u = 0; u < width_; ++u) radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
+  gain_.resize(n);
+  for (size_t i = 0; i < n; ++i) gain_[i] = blurGain(radius_[i]);
   sum_.assign(3 * n, Complex(0, 0));
   sumSquares_.assign(n, 0.0);
 }
@@ -112,7 +114,7 @@ void SpectrumAccumulator::add(const Image& image) {
       sumSquares_[i] += p;
       total += p;
       if (radius_[i] < kLowFrequencyCutoff) low += p;
-      blurred += p * blurGain(radius_[i]);
+      blurred += p * gain_[i];
     }
   }
   lowFractions_.push_back(total > 0 ? low / total : 0.0);
@@ -214,28 +216,50 @@ void appendSpectrumCsv(const std::string& path,
 void canonicaliseSpectrumCsv(const std::string& path) {
   bool any = false;
   const auto lines = readSpectrumLines(path, any);
-  // key: every field before power (scene .. frequency); the last copy wins; numbers sort as numbers
-  const auto less = [](const std::string& x, const std::string& y) {
-    std::istringstream a(x), b(y);
-    std::string fa, fb;
-    while (std::getline(a, fa, ',') && std::getline(b, fb, ',')) {
-      if (fa == fb) continue;
-      char* ea = nullptr;
-      char* eb = nullptr;
-      const double na = std::strtod(fa.c_str(), &ea), nb = std::strtod(fb.c_str(), &eb);
-      if (!fa.empty() && !fb.empty() && *ea == 0 && *eb == 0 && na != nb) return na < nb;
-      return fa < fb;
-    }
-    return x.size() < y.size();
+  // key: every field before power (scene .. frequency); the last copy wins; fields compare as numbers when
+  // both are numbers that differ, else as text; a key that is a prefix of another (in fields) sorts first.
+  // Each key is split and parsed once (a comparison then costs no allocation).
+  struct Field {
+    std::string text;
+    bool number;
+    double value;
   };
-  std::map<std::string, std::string, decltype(less)> byKey(less);
-  for (const std::string& l : lines) {
+  struct Key {
+    std::vector<Field> fields;
+    size_t size;   ///< length of the key text
+    size_t index;  ///< line number: the last copy of a key wins
+  };
+  std::vector<Key> keys(lines.size());
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string& l = lines[i];
     size_t cut = l.size();
     for (int commas = 0; commas < 2 && cut != std::string::npos; ++commas) cut = l.rfind(',', cut - 1);
-    byKey[l.substr(0, cut)] = l;
+    const std::string key = l.substr(0, cut);
+    Key& k = keys[i];
+    k.size = key.size(), k.index = i;
+    for (size_t start = 0; start < key.size();) {  // the fields std::getline(.., ',') yields
+      const size_t comma = std::min(key.find(',', start), key.size());
+      Field f{key.substr(start, comma - start), false, 0.0};
+      char* end = nullptr;
+      f.value = std::strtod(f.text.c_str(), &end);
+      f.number = !f.text.empty() && *end == 0;
+      k.fields.push_back(std::move(f));
+      start = comma + 1;
+    }
   }
+  const auto less = [](const Key& x, const Key& y) {
+    for (size_t i = 0; i < x.fields.size() && i < y.fields.size(); ++i) {
+      const Field &a = x.fields[i], &b = y.fields[i];
+      if (a.text == b.text) continue;
+      if (a.number && b.number && a.value != b.value) return a.value < b.value;
+      return a.text < b.text;
+    }
+    return x.size < y.size;
+  };
+  std::stable_sort(keys.begin(), keys.end(), less);  // equal keys stay in file order
   std::string text = spectrumCsvHeader() + '\n';
-  for (const auto& [key, line] : byKey) text += line + '\n';
+  for (size_t i = 0; i < keys.size(); ++i)
+    if (i + 1 == keys.size() || less(keys[i], keys[i + 1])) text += lines[keys[i].index] + '\n';  // last copy
   writeTextFile(path, text);
 }
 

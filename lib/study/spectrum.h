@@ -87,6 +87,7 @@ class SpectrumAccumulator {
   Image reference_;  ///< a copy (a temporary may be passed)
   int width_, height_;
   std::vector<double> radius_;                      ///< rho per frequency
+  std::vector<double> gain_;                        ///< blurGain(rho) per frequency (computed once)
   std::vector<std::complex<double>> sum_;           ///< per channel and frequency: sum_k E_k / (W H)
   std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
   std::vector<double> lowFractions_;                ///< f_k

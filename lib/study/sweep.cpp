@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -15,6 +16,7 @@
 #include <atomic>
 
 #include "core/format.h"
+#include "core/huge_pages.h"
 #include "core/files.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
@@ -347,11 +349,12 @@ void finishRow(Pending& p, const fs::path& imageDir, bool images, const GroupSpe
 
 // A finished group's rows, in row order: spectra first (a row in the study CSV always has its spectra; a
 // repeat is dropped at the end), then the CSV rows, each file with one write (the CSV with one fsync).
-void writeRows(const StudyConfig& config, const std::vector<Pending>& rows, const std::vector<SpectrumMetrics>& spectra,
+// Runs on the GroupWriter's thread: it gets copies and touches only the files, `out` and `spectraWritten`.
+void writeRows(const StudyConfig& config, const std::vector<CsvRow>& rows, const std::vector<SpectrumMetrics>& spectra,
                CsvAppender& out, std::set<std::string>& spectraWritten) {
   std::map<std::string, std::vector<std::pair<std::string, const SpectrumMetrics*>>> byFile;
   for (size_t i = 0; i < rows.size(); ++i) {
-    const CsvRow& r = rows[i].row;
+    const CsvRow& r = rows[i];
     byFile[spectrumPath(config, r.scene)].emplace_back(
         r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
             formatNumber(r.radius, "%.9g") + ',' + r.reconstruction + ',' + r.prefilter,
@@ -362,10 +365,41 @@ void writeRows(const StudyConfig& config, const std::vector<Pending>& rows, cons
     appendSpectrumCsv(path, lines);
     spectraWritten.insert(path);
   }
-  std::vector<CsvRow> csvRows;
-  for (const Pending& p : rows) csvRows.push_back(p.row);
-  out.append(csvRows);
+  out.append(rows);
 }
+
+// Writes finished groups on one background thread while the next group computes, in submission order. At
+// most one group is in the writer: submit() first waits for the previous one (and rethrows its error), so
+// an interrupted run loses at most the group being written besides the one computing; both are recomputed
+// on resume (a torn CSV tail is cut). Declared after what its jobs touch, so it is joined before they go.
+class GroupWriter {
+ public:
+  ~GroupWriter() {
+    if (job_.valid()) job_.wait();
+  }
+  /// Waits for the write in progress; returns the main thread's seconds spent waiting. Rethrows its error.
+  double wait() {
+    if (!job_.valid()) return 0;
+    const auto t0 = Clock::now();
+    job_.get();
+    return std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  double submit(std::function<void()> job) {
+    const double waited = wait();
+    job_ = std::async(std::launch::async, [job = std::move(job), this] {
+      const auto t0 = Clock::now();
+      job();
+      seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();  // read only after wait()
+    });
+    return waited;
+  }
+  /// Seconds the writer spent writing (off the critical path); read after wait().
+  double seconds() const { return seconds_; }
+
+ private:
+  std::future<void> job_;
+  double seconds_ = 0;
+};
 
 // Resume: the rows of groups [gi, gend) (one scene) still missing from the CSV; adds the (filter, radius) of
 // each to `specs` (the references to render).
@@ -432,6 +466,7 @@ size_t sweepMemoryBound(int threads, int width, int height, int spp, size_t rows
 }
 
 SweepSummary runSweep(const StudyConfig& config) {
+  keepMediumBlocks();  // core/huge_pages.h: a row's image freed per window is not returned to the kernel
   validateStudy(config);
   validateReferenceOptions(referenceOptions(config));
   const auto start = Clock::now();
@@ -473,6 +508,7 @@ SweepSummary runSweep(const StudyConfig& config) {
   ProgressBar progress(units, "sweep", config.progress && !config.refsOnly);
 
   std::set<std::string> spectraWritten;  // spectrum CSVs to put in canonical order at the end
+  GroupWriter writer;                    // after `out` and `spectraWritten`: joined before they are destroyed
   for (size_t gi = 0; gi < groups.size();) {
     // One scene at a time: load it and its references once.
     auto t0 = Clock::now();
@@ -484,6 +520,7 @@ SweepSummary runSweep(const StudyConfig& config) {
 
     std::vector<FilterSpec> specs{kArea};
     if (targetSpec != kArea) specs.push_back(targetSpec);
+    sum.phases.io += writer.wait();  // `out`'s keys are read by planScene and added to by the writer
     auto pending = planScene(config, *scene, groups, gi, gend, out.get(), specs, sum);
     bool any = config.refsOnly;
     for (const auto& p : pending) any = any || !p.empty();
@@ -558,10 +595,13 @@ SweepSummary runSweep(const StudyConfig& config) {
       double work = 0;
       for (double b : busy) work += b;
       sum.phases.finish += work, sum.phases.waiting += std::max(0.0, wallFinish * threads - work);
-      t0 = Clock::now();
-      writeRows(config, rows, spectra, *out, spectraWritten);
+      std::vector<CsvRow> csvRows;
+      for (const Pending& p : rows) csvRows.push_back(p.row);
+      sum.phases.io += writer.submit([&config, csvRows = std::move(csvRows), spectra = std::move(spectra),
+                                      out = out.get(), &spectraWritten] {
+        writeRows(config, csvRows, spectra, *out, spectraWritten);
+      });
       sum.rowsWritten += rows.size();
-      sum.phases.io += secondsSince(t0);
     }
     gi = gend;
   }
@@ -569,6 +609,8 @@ SweepSummary runSweep(const StudyConfig& config) {
 
   // Canonical order, then contact sheets from the finished rows.
   const auto t0 = Clock::now();
+  writer.wait();
+  sum.phases.writer = writer.seconds();
   if (out) {
     out.reset();
     canonicaliseCsv(csv);

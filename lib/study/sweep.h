@@ -45,7 +45,8 @@ namespace aliaslab {
 /// order, contact sheets) are wall seconds of the serial steps.
 struct SweepPhases {
   double setup = 0, trace = 0, splat = 0, resolve = 0, metrics = 0, flip = 0, finish = 0, waiting = 0;
-  double references = 0, io = 0;
+  double references = 0, io = 0;  ///< wall seconds on the main thread (io: waiting for the writer, canonical order)
+  double writer = 0;               ///< seconds the writer thread spent on CSV/spectrum lines, overlapped with work
 };
 
 struct SweepSummary {

@@ -5,7 +5,8 @@
 //     speedup      wall(1 thread) / wall(n), both measured in this run
 //     setup, trace, splat, resolve, metrics, flip, finish   thread-seconds of work in the parallel phases
 //     waiting      thread-seconds idle inside the parallel phases
-//     io, refs     wall seconds of the serial steps (CSV/spectra lines, canonical order; scene + cached refs)
+//     io, refs     wall seconds of the serial steps (waiting for the writer, canonical order; scene + cached refs)
+//     writer       seconds the writer thread spent on CSV/spectrum lines, overlapped with the next group
 //     serial_frac  (io + refs + wall outside the phases) / wall, at this thread count
 //     peak_MB      in-flight task state counted by the scheduler
 // Size: ALIASLAB_SCALING_SIZE (default 64) square, samplers random, jittered,
@@ -79,6 +80,7 @@ void sweepThreads(benchmark::State& state) {
   state.counters["flip"] = p.flip, state.counters["setup"] = p.setup;
   state.counters["finish"] = p.finish;
   state.counters["waiting"] = p.waiting, state.counters["io"] = p.io, state.counters["refs"] = p.references;
+  state.counters["writer"] = p.writer;
   state.counters["serial_frac"] = std::max(0.0, wall - inPhases) / wall;
   state.counters["peak_MB"] = s.peakInFlightBytes / 1e6;
   state.counters["rows"] = double(s.rowsWritten);
