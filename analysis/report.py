@@ -37,6 +37,7 @@ every scene by the error against the target, and the stability counts).
 """
 import argparse
 import base64
+import io
 import html
 import os
 import re
@@ -69,10 +70,29 @@ td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
 
 
+def chart_png_bytes(path):
+    """A chart's PNG with a 256-colour palette (no dithering): about a third of the bytes, and a chart has
+    far fewer colours than that. Renders are never passed here (their pixels are data). Falls back to the
+    file's bytes where Pillow (a dependency of Debian's matplotlib) is missing."""
+    try:
+        from PIL import Image
+    except ImportError:
+        with open(path, "rb") as f:
+            return f.read()
+    out = io.BytesIO()
+    with Image.open(path) as im:
+        im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)
+    return out.getvalue()
+
+
 def image_src(page_dir, path, embed):
     if embed:
-        with open(path, "rb") as f:
-            return "data:image/png;base64," + base64.b64encode(f.read()).decode("ascii")
+        if os.path.basename(os.path.dirname(path)) == "charts":
+            data = chart_png_bytes(path)
+        else:
+            with open(path, "rb") as f:
+                data = f.read()
+        return "data:image/png;base64," + base64.b64encode(data).decode("ascii")
     return html.escape(os.path.relpath(path, page_dir).replace(os.sep, "/"))
 
 

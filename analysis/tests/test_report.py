@@ -114,6 +114,28 @@ class Report(unittest.TestCase):
         self.assertNotIn("http://", self.embedded)
         self.assertNotIn("https://", self.embedded)
 
+    def test_embedded_charts_keep_their_size_and_renders_their_pixels(self):
+        # Every embedded image decodes to a PNG of its file's size; a chart (from charts/) is palette-coded
+        # and smaller than its file, any other image (a render) is embedded byte for byte.
+        import base64
+        from PIL import Image
+        charts_dir = os.path.join(self.results, "charts")
+        chart = sorted(f for f in os.listdir(charts_dir) if f.endswith(".png"))[0]
+        path = os.path.join(charts_dir, chart)
+        data = report.chart_png_bytes(path)
+        with Image.open(io.BytesIO(data)) as small, Image.open(path) as full:
+            self.assertEqual(small.size, full.size)
+            self.assertEqual(small.mode, "P")
+        self.assertLess(len(data), os.path.getsize(path))
+        render = os.path.join(self.tmp.name, "render.png")
+        Image.new("RGB", (5, 3), (10, 200, 30)).save(render)
+        src = report.image_src(self.tmp.name, render, True)
+        with open(render, "rb") as f:
+            self.assertEqual(base64.b64decode(src.split(",", 1)[1]), f.read())
+        for link in re.findall(r"src='data:image/png;base64,([^']*)'", self.embedded):
+            with Image.open(io.BytesIO(base64.b64decode(link))) as im:
+                im.verify()
+
     def test_no_engineering_log_opens_the_page(self):
         for text in ("before the fused pass", "fuzz_scene", "Study speed"):
             self.assertNotIn(text, self.linked)
