@@ -35,6 +35,7 @@ import os
 import sys
 
 import matplotlib.patches
+import matplotlib.patheffects
 import matplotlib.ticker
 import numpy as np
 import pandas as pd
@@ -89,6 +90,40 @@ def label_log_axis(ax):
         ax.yaxis.set_minor_formatter(matplotlib.ticker.LogFormatterSciNotation(labelOnlyBase=False,
                                                                                minor_thresholds=(2, 0.4)))
         ax.tick_params(axis="y", which="minor", labelsize=7)
+
+
+def number_points(ax, xs, ys, fontsize=8):
+    """Numbers the points (xs[k], ys[k]) 1, 2, ... on the axes without two numbers overlapping: each label
+    takes the first free spot of a ring of offsets around its point (nearest first), further rings once the
+    near ones are taken, with a thin leader line when it sits away from its point. Call it after the axes'
+    limits are final (it works in display space)."""
+    fig = ax.figure
+    fig.canvas.draw()  # settles the layout so that data -> display is final
+    to_points = 72.0 / fig.dpi
+    placed = []  # centres (in points) of the labels placed so far
+    w, h = 0.62 * fontsize, 1.0 * fontsize  # one digit's box, in points
+    rings = [(dx * r, dy * r) for r in (1, 2, 3, 4, 5) for dx, dy in
+             ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4), (1.4, 0), (-1.4, 0))]
+    for k, (x, y) in enumerate(zip(xs, ys), 1):
+        px, py = (v * to_points for v in ax.transData.transform((x, y)))
+        text = str(k)
+        tw = w * len(text)
+        choice = None
+        for dx, dy in rings:
+            ox, oy = dx * (tw / 2 + 4), dy * (h / 2 + 3)
+            cx, cy = px + ox, py + oy
+            if all(abs(cx - qx) >= (tw + qw) / 2 + 1 or abs(cy - qy) >= h + 1 for qx, qy, qw in placed):
+                choice = (ox, oy)
+                break
+        if choice is None:
+            choice = (rings[-1][0] * (tw / 2 + 4), rings[-1][1] * (h / 2 + 3))
+        ox, oy = choice
+        far = abs(ox) > tw + 6 or abs(oy) > 1.5 * h + 4
+        ax.annotate(text, (x, y), textcoords="offset points", xytext=(ox, oy), fontsize=fontsize, weight="bold",
+                    ha="center", va="center", zorder=6,
+                    path_effects=[matplotlib.patheffects.withStroke(linewidth=2.5, foreground="white")],
+                    arrowprops=dict(arrowstyle="-", lw=0.5, color="0.4", shrinkA=0, shrinkB=2) if far else None)
+        placed.append((px + ox, py + oy, tw))
 
 
 def plain_log_x(ax):
@@ -167,8 +202,6 @@ def speed_accuracy(df, out_dir):
             front = ok.iloc[common.pareto_front(ok["time_ms"], ok["error"])]
             ax.plot(front["time_ms"], front["error"], "k--", lw=1, zorder=3)
             for k, (_, r) in enumerate(front.iterrows(), 1):
-                ax.annotate(str(k), (r["time_ms"], r["error"]), textcoords="offset points", xytext=(4, 4),
-                            fontsize=8, weight="bold")
                 lines.append(f"{k}. {method_label(r, show_recon)}, {int(r['spp'])} spp: "
                              f"{r['error']:.2e}, {r['time_ms']:.3g} ms")
             fronts.append(front.assign(scene=scene))
@@ -178,6 +211,8 @@ def speed_accuracy(df, out_dir):
         ymin = float(sd["error"].min())
         ax.set_ylim(bottom=ymin / 1.6)
         clipped = clip_outliers(ax, sd["time_ms"], sd["error"])
+        if len(ok):
+            number_points(ax, list(front["time_ms"]), list(front["error"]))
         if clipped:
             ax.set_title(title + ("\n" if "\n" not in title else "; ") + clipped, fontsize=10)
         ax.set_xlabel("time per image (ms) = trace + reconstruction")

@@ -249,8 +249,6 @@ def summary_chart(df, out_dir):
     ax.plot(front["time_ms"], front["ratio"], "k--", lw=1)
     lines = []
     for k, (_, r) in enumerate(front.iterrows(), 1):
-        ax.annotate(str(k), (r["time_ms"], r["ratio"]), textcoords="offset points", xytext=(4, 4), fontsize=8,
-                    weight="bold")
         lines.append(f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['ratio']:.3g}, {r['time_ms']:.3g} ms")
     ax.set_xscale("log")
     ax.set_yscale("log")
@@ -278,6 +276,7 @@ def summary_chart(df, out_dir):
                 transform=ax.transAxes, fontsize=7, va="top", family="monospace")
     ax.set_title("Error against the target vs time, every method at every spp level, all scenes"
                  + (f"\n{clipped}" if clipped else ""), fontsize=10)
+    charts.number_points(ax, list(front["time_ms"]), list(front["ratio"]))
     common.save_figure(fig, out_dir, name)
     return os.path.join(out_dir, name + ".png"), lines
 
