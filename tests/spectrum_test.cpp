@@ -146,6 +146,18 @@ TEST(Spectrum, LowFrequencyShareAndBlurOfSinusoids) {
   EXPECT_NEAR(mix.result().lowfreqError, 0.5, 1e-9);
 }
 
+// A spectrum CSV's data lines after canonicaliseSpectrumCsv, its header checked.
+std::vector<std::string> canonicalLines(const std::string& path) {
+  canonicaliseSpectrumCsv(path);
+  std::ifstream in(path);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line, spectrumCsvHeader());
+  std::vector<std::string> lines;
+  while (std::getline(in, line)) lines.push_back(line);
+  return lines;
+}
+
 TEST(Spectrum, CsvAppendsAndCanonicalises) {
   const std::string path = (std::filesystem::temp_directory_path() / "aliaslab_spectrum_test.csv").string();
   std::filesystem::remove(path);
@@ -157,13 +169,7 @@ TEST(Spectrum, CsvAppendsAndCanonicalises) {
   appendSpectrumCsv(path, "s,random,4,box,0.5,weighted,none", m);
   { std::ofstream torn(path, std::ios::app); torn << "s,random,4,box,0.5,weighted,none,error,3,0.0"; }
   appendSpectrumCsv(path, "s,zsobol,16,box,0.5,weighted,none", m);  // re-measured after an interruption
-  canonicaliseSpectrumCsv(path);
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, spectrumCsvHeader());
-  std::vector<std::string> lines;
-  while (std::getline(in, line)) lines.push_back(line);
+  const std::vector<std::string> lines = canonicalLines(path);
   // bins with frequencies: 16x16 reaches rho = 0.707 -> bins 0 .. 45, all non-empty? count them
   int bins = 0;
   for (int b = 0; b < kSpectrumBins; ++b) bins += m.error.count[b] > 0;
@@ -188,13 +194,7 @@ TEST(Spectrum, CanonicalOrderIsNumericAndKeepsTheLastCopy) {
         << "r,b,64,tent,2,weighted,none,error,0,0,3,30\n"
         << "s,a,16,box,1.5,weighted,none,error,2,0.1,9,90\n";  // re-measured: replaces the first line
   }
-  canonicaliseSpectrumCsv(path);
-  std::ifstream in(path);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, spectrumCsvHeader());
-  std::vector<std::string> lines;
-  while (std::getline(in, line)) lines.push_back(line);
+  const std::vector<std::string> lines = canonicalLines(path);
   const std::vector<std::string> expected = {
       "r,b,64,tent,2,weighted,none,error,0,0,3,30",      "s,a,4,box,1.5,weighted,none,error,2,0.1,8,80",
       "s,a,4,box,1.5,weighted,none,error,10,0.5,7,70",   "s,a,4,box,1.5,weighted,none,noise,10,0.5,1,10",

@@ -20,6 +20,7 @@
 namespace aliaslab {
 
 void* allocateLarge(size_t bytes);
+void freeLarge(void* p, size_t bytes) noexcept;  ///< bytes: as given to allocateLarge
 
 /// Keeps medium blocks (below 32 MB: a row's image, FLIP's planes, per-row sums) in the C heap once freed,
 /// instead of glibc's default of returning each one to the kernel (munmap, or a heap trim) and faulting it in
@@ -27,7 +28,6 @@ void* allocateLarge(size_t bytes);
 /// study, all of it serial; results/study_speed.md). Process-wide, idempotent; the heap then stays at its
 /// peak size. A no-op under AddressSanitizer (its allocator ignores it).
 void keepMediumBlocks();
-void freeLarge(void* p, size_t bytes) noexcept;  ///< bytes: as given to allocateLarge
 
 /// std::allocator with allocateLarge/freeLarge underneath.
 template <class T>

@@ -212,12 +212,9 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
       if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
         r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
         cached[i] = 1;
-      } else {
-        r = ReferenceImage();
       }
     } catch (const InputError&) {
-      set.images[i] = ReferenceImage();
-    }  // unreadable entry: render it again
+    }  // unreadable entry: render it again (its slot is overwritten below)
   });
   std::vector<FilterSpec> missing;
   std::vector<size_t> missingIndex;

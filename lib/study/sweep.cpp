@@ -382,14 +382,14 @@ class GroupWriter {
     if (!job_.valid()) return 0;
     const auto t0 = Clock::now();
     job_.get();
-    return std::chrono::duration<double>(Clock::now() - t0).count();
+    return secondsSince(t0);
   }
   double submit(std::function<void()> job) {
     const double waited = wait();
     job_ = std::async(std::launch::async, [job = std::move(job), this] {
       const auto t0 = Clock::now();
       job();
-      seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();  // read only after wait()
+      seconds_ += secondsSince(t0);  // read only after wait()
     });
     return waited;
   }
