@@ -216,6 +216,34 @@ TEST(Film, AccumulatorOverBatchesEqualsReconstructionOfUnion) {
   EXPECT_LT(maxDiff(acc.resolve(1).image, reconstruct(all, *lanczos, ReconMode::WeightedAverage).image), 1e-6);
 }
 
+TEST(Film, BandAfterBandAndBatchAfterBatchMatchTheDefinition) {
+  // A tall film is splatted band by band (32 rows each, the last one short); one thread reuses one band buffer
+  // for all of them, so each band must hand its buffer back cleared, padding included (a radius of 2.3 reaches
+  // 5 rows and columns past a band). The Accumulator's first batch overwrites sums it never zeroed; the second
+  // adds to them. Both against the definition, in double.
+  auto mitchell = makeFilter("mitchell", 2.3f), tent = makeFilter("tent", 1.5f);
+  const int w = 9, h = 101;
+  const SampleBuffer first = makeSamples(w, h, 3, 41, noisy), second = makeSamples(w, h, 3, 42, noisy);
+  SampleBuffer both(w, h, 6);
+  for (int j = 0; j < h; ++j)
+    for (int i = 0; i < w; ++i)
+      for (int k = 0; k < 3; ++k) both.pixel(i, j)[k] = first.pixel(i, j)[k], both.pixel(i, j)[3 + k] = second.pixel(i, j)[k];
+  for (int threads : {1, 3}) {
+    Accumulator acc(w, h, {mitchell.get(), tent.get()});
+    acc.add(first, threads);
+    EXPECT_LT(maxDiff(acc.resolve(0).image, naiveWeighted(first, *mitchell)), 1e-5) << "threads " << threads;
+    EXPECT_LT(maxDiff(acc.resolve(1).image, naiveWeighted(first, *tent)), 1e-5) << "threads " << threads;
+    acc.add(second, threads);
+    EXPECT_LT(maxDiff(acc.resolve(0).image, naiveWeighted(both, *mitchell)), 1e-5) << "threads " << threads;
+    EXPECT_LT(maxDiff(acc.resolve(1).image, naiveWeighted(both, *tent)), 1e-5) << "threads " << threads;
+  }
+  // nothing added: every pixel undefined with the mean of no samples, 0
+  Accumulator empty(w, h, {tent.get()});
+  const Reconstruction none = empty.resolve(0);
+  EXPECT_EQ(none.stats.undefinedPixels, static_cast<size_t>(w) * h);
+  EXPECT_EQ(maxDiff(none.image, Image(w, h)), 0.0);
+}
+
 TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
   // filters of equal radius share one pass (footprints once, then each filter's weights): the result must be
   // exactly each filter's own reconstruct(), including a unit-weight box, a radius wider than a block

@@ -3,12 +3,15 @@
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "core/image.h"
 #include "study/flip.h"
@@ -95,6 +98,59 @@ TEST(Imgdiff, RefusesImagesOfDifferentSizes) {
   const int status = std::system(cmd.c_str());
   EXPECT_EQ(WEXITSTATUS(status), 1);
   EXPECT_NE(slurp(kDir / "err.txt").find("differs"), std::string::npos);
+}
+
+// FLIP's filters are separable convolutions with clamped edges, vectorised (2 or 4 lanes, registers across the
+// taps, rows padded with their edge values). Every output must be the textbook sum, bit for bit: k = -r .. r in
+// order from 0, indices clamped, first along x, then along y. Planes narrower and shorter than the kernels
+// included, so the padding covers whole rows.
+TEST(Flip, ConvolutionIsTheTextbookSumBitForBit) {
+  unsigned state = 12345;
+  auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<double>(state >> 8) / 16777216.0;
+  };
+  auto textbook = [](const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                     const std::vector<double>& ky) {
+    const int rx = static_cast<int>(kx.size()) / 2, ry = static_cast<int>(ky.size()) / 2;
+    std::vector<double> mid(in.size()), out(in.size());
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        double s = 0;
+        for (int k = -rx; k <= rx; ++k) s += kx[k + rx] * in[y * w + std::clamp(x + k, 0, w - 1)];
+        mid[y * w + x] = s;
+      }
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        double s = 0;
+        for (int k = -ry; k <= ry; ++k) s += ky[k + ry] * mid[std::clamp(y + k, 0, h - 1) * w + x];
+        out[y * w + x] = s;
+      }
+    return out;
+  };
+  const int before = convolutionLanes().load();
+  int compared = 0;
+  for (const auto& [w, h] : std::vector<std::pair<int, int>>{{1, 1}, {3, 2}, {7, 5}, {16, 3}, {33, 17}, {64, 9}, {130, 4}})
+    for (int rx : {0, 1, 4, 10})
+      for (int ry : {0, 3, 9}) {
+        std::vector<double> in(static_cast<size_t>(w) * h), kx(2 * rx + 1), ky(2 * ry + 1);
+        for (double& v : in) v = 4 * next() - 1;
+        for (double& v : kx) v = next() - 0.3;  // negative taps too, as the derivative kernels have
+        for (double& v : ky) v = next() - 0.3;
+        const std::vector<double> want = textbook(in, w, h, kx, ky);
+        for (int lanes : {2, 4}) {
+          convolutionLanes() = lanes;
+          const std::vector<double> got = convolveClamped(in, w, h, kx, ky);
+          ASSERT_EQ(got.size(), want.size());
+          for (size_t i = 0; i < want.size(); ++i, ++compared)
+            ASSERT_EQ(got[i], want[i]) << w << " x " << h << ", rx " << rx << ", ry " << ry << ", lanes " << lanes
+                                       << ", pixel " << i;
+        }
+      }
+  convolutionLanes() = before;
+  EXPECT_GT(compared, 10000);
+  EXPECT_THROW(convolveClamped(std::vector<double>(6), 3, 2, std::vector<double>(2), std::vector<double>(1)),
+               std::invalid_argument);
 }
 
 TEST(Flip, IdenticalImagesGiveZero) {

@@ -149,7 +149,13 @@ int main(int argc, char** argv) {
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",
                   s.rowsWritten, s.rowsSkipped, s.sampleSetsTraced + s.importanceTraces,
                   static_cast<unsigned long long>(s.primaryRays), s.seconds, csvPath(c).c_str());
-    else
+    if (!c.refsOnly && s.sampleSetsTraced + s.importanceTraces > 0) {  // where the time went (work of this run)
+      const SweepPhases& p = s.phases;
+      std::printf("thread-seconds: trace %.1f, splat %.1f, resolve %.1f, flip %.1f, metrics and spectra %.1f, "
+                  "set-up %.1f, finish %.1f, idle %.1f; main thread: references %.1f s, output %.1f s\n",
+                  p.trace, p.splat, p.resolve, p.flip, p.metrics, p.setup, p.finish, p.waiting, p.references, p.io);
+    }
+    if (c.refsOnly)
       std::printf("references ready in %s (%.1f s)\n", c.cache.c_str(), s.seconds);
     return 0;
   } catch (const InputError& e) {

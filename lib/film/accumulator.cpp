@@ -13,7 +13,7 @@ Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filte
     : width_(width), height_(height), filters_(std::move(filters)) {
   const size_t n = 4 * static_cast<size_t>(width) * height;
   sums_.resize(filters_.size());
-  for (auto& s : sums_) s.assign(n, 0.0);  // zero-filled in place (not copied from a zero vector)
+  for (auto& s : sums_) s.resize(n);  // uninitialised: the first add() overwrites every value (0.0 + its sum)
   plain_.assign(n, 0.0);
 }
 
@@ -28,7 +28,8 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
   std::vector<double*> sums;
   for (auto& s : sums_) sums.push_back(s.data());
   std::vector<double> own(filters_.size(), 0.0);
-  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr);
+  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr, true, fresh_);
+  fresh_ = false;
   samplesAdded_ += batch.samples().size();
   if (filterSeconds && !filters_.empty()) {
     // own CPU time over the threads the bands could use approximates wall time; the rest is shared equally
@@ -44,6 +45,11 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
 }
 
 Reconstruction Accumulator::resolve(size_t k) const {
+  if (fresh_) {  // nothing added: the sums are zero
+    const std::vector<double> zero(plain_.size(), 0.0);
+    return filmimpl::resolveSums(width_, height_, zero.data(), plain_.data(), filmimpl::weightTolerance(*filters_.at(k)),
+                                 nonFinite_);
+  }
   return filmimpl::resolveSums(width_, height_, sums_.at(k).data(), plain_.data(),
                                filmimpl::weightTolerance(*filters_.at(k)), nonFinite_);
 }

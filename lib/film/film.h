@@ -54,27 +54,28 @@ struct FilmSample {
   float weight = 1.f;          ///< importance weight (1 unless filter importance sampling)
 };
 
-/// The sample store's allocator: huge pages, and construction without arguments leaves a FilmSample (an
-/// implicit-lifetime aggregate) as the memory holds it, so that SampleBuffer decides who first writes it.
+/// Huge pages, and construction without arguments leaves a T (an implicit-lifetime type: FilmSample, double)
+/// as the memory holds it, for storage whose owner writes every element before reading it: the sample store
+/// (SampleBuffer decides who first writes each sample) and the Accumulator's sums (its first batch sets them).
 template <class T>
-struct SampleAllocator : HugePageAllocator<T> {
+struct UninitializedAllocator : HugePageAllocator<T> {
   using value_type = T;
   template <class U>
   struct rebind {
-    using other = SampleAllocator<U>;
+    using other = UninitializedAllocator<U>;
   };
-  SampleAllocator() = default;
+  UninitializedAllocator() = default;
   template <class U>
-  SampleAllocator(const SampleAllocator<U>&) noexcept {}
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
   template <class U, class... Args>
   void construct(U* p, Args&&... args) {
-    if constexpr (sizeof...(Args) > 0 || !std::is_same_v<U, FilmSample>) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    if constexpr (sizeof...(Args) > 0 || !std::is_same_v<U, T>) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
 
 class SampleBuffer {
  public:
-  using Storage = std::vector<FilmSample, SampleAllocator<FilmSample>>;
+  using Storage = std::vector<FilmSample, UninitializedAllocator<FilmSample>>;
   /// Marks a buffer whose every field of every sample the caller writes before reading (traceSamples does):
   /// nothing is initialised, so the first touch of its pages happens in the caller's parallel loop.
   struct Unwritten {};
@@ -189,7 +190,9 @@ class Accumulator {
  private:
   int width_, height_;
   std::vector<const Filter*> filters_;
-  std::vector<LargeVector<double>> sums_;  ///< per filter: r, g, b, weight per pixel
+  /// per filter: r, g, b, weight per pixel; not initialised until the first add() sets them (overwrite)
+  std::vector<std::vector<double, UninitializedAllocator<double>>> sums_;
+  bool fresh_ = true;  ///< no add() yet: sums_ hold no values
   std::vector<double> plain_;              ///< r, g, b, count of each pixel's own finite samples (fallback)
   size_t samplesAdded_ = 0;
   size_t nonFinite_ = 0;

@@ -34,9 +34,10 @@ void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* su
 /// sample's finiteness test and footprint are computed once per radius and
 /// each filter adds only its weights and accumulation. ownSeconds (if not
 /// null, K entries, added to): each filter's own part of that work, in
-/// seconds summed over the threads.
+/// seconds summed over the threads. overwrite: the sums need not be initialised; every value is set to
+/// 0.0 + this pass's sum, bit for bit what adding into zeroed sums gives (an Accumulator's first batch).
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true);
+              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true, bool overwrite = false);
 
 /// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel); returns the
 /// number of samples skipped as non-finite.

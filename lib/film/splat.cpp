@@ -77,7 +77,7 @@ inline void centresWithin(float p, float r, int& lo, int& hi) {
 /// glibc kept the freed blocks (results/study_speed.md).
 class SumPages {
  public:
-  explicit SumPages(size_t n) : n_(n), bytes_(std::max<size_t>(n * sizeof(Sum), 1)) {
+  explicit SumPages(size_t n) : bytes_(std::max<size_t>(n * sizeof(Sum), 1)) {
     void* p = ::mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
     data_ = static_cast<Sum*>(p);
@@ -87,10 +87,9 @@ class SumPages {
   SumPages& operator=(const SumPages&) = delete;
   ~SumPages() { ::munmap(data_, bytes_); }
   Sum* data() { return data_; }
-  void clear() { std::fill(data_, data_ + n_, Sum{}); }
 
  private:
-  size_t n_, bytes_;
+  size_t bytes_;
   Sum* data_ = nullptr;
 };
 
@@ -318,9 +317,9 @@ class WorkspacePool {
       if (!free_.empty()) space = std::move(free_.back()), free_.pop_back();
     }
     if (!space) return std::make_unique<Workspace>(sums_, weights_);
-    space->buffer.clear();
     return space;
   }
+  /// Returns a work space whose sums are zero again (the band that used it cleared them as it read them).
   void give(std::unique_ptr<Workspace> space) {
     std::lock_guard lock(mutex_);
     free_.push_back(std::move(space));
@@ -339,7 +338,8 @@ struct RowSpans {
 
 /// The fused pass for filters that share one radius (see splatAll).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds) {
+                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
+                     bool overwrite) {
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
@@ -428,15 +428,24 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       }
     }
     flush();
-    for (int f = 0; f < K; ++f)
-      for (int j = j0; j < j1; ++j)
+    // the band's sums into the image's, each band buffer left zero for the next band (read and cleared in one
+    // pass, then the padding the blocks reached beyond the band's rows and columns)
+    for (int f = 0; f < K; ++f) {
+      Sum* band = buffer(f);
+      for (int j = j0; j < j1; ++j) {
+        Sum* line = band + static_cast<size_t>(j - j0) * width;
         for (int i = 0; i < W; ++i) {  // (sums need not be aligned for V4)
           double* sum = sums[f] + 4 * (static_cast<size_t>(j) * W + i);
-          V4 v;
-          std::memcpy(&v, sum, sizeof v);
-          v += buffer(f)[(j - j0) * width + i].v;
+          V4 v = {};  // overwrite: 0.0 + the band's sum, as if sum had been zeroed (it is not read)
+          if (!overwrite) std::memcpy(&v, sum, sizeof v);
+          v += line[i].v;
           std::memcpy(sum, &v, sizeof v);
+          line[i] = Sum{};
         }
+        std::fill(line + W, line + width, Sum{});
+      }
+      std::fill(band + static_cast<size_t>(j1 - j0) * width, band + bandSize, Sum{});
+    }
     pool.give(std::move(space));
   });
   if (ownSeconds)
@@ -447,7 +456,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
 }  // namespace
 
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds, bool allowAvx2) {
+              int threads, double* ownSeconds, bool allowAvx2, bool overwrite) {
   const int H = samples.height();
   RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
   parallelFor(H, threads, [&](int sj) {
@@ -467,7 +476,8 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
       if (!done[k] && filters[k]->radius() == filters[first]->radius())
         group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
     std::vector<double> own(group.size(), 0.0);
-    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr);
+    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr,
+                    overwrite);
     if (ownSeconds)
       for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
   }

@@ -4,12 +4,14 @@
 // of the luminance), combined per pixel as colour^(1 - feature).
 #include "study/flip.h"
 
-#include <emmintrin.h>
-
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <stdexcept>
+
+// 256-bit vectors are passed only between functions inlined into one built for AVX2 (GCC's -Wpsabi note).
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace aliaslab {
 namespace {
@@ -53,36 +55,65 @@ double hyab(const V3& p, const V3& q) { return std::abs(p[0] - q[0]) + std::hypo
 
 constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95, kQf = 0.5, kFeatureWidth = 0.082;
 
-/// dst[x] += c * src[x] for x in [0, n): two lanes per SSE2 instruction, the same IEEE multiply and add per
-/// element as the scalar loop (which -O2 does not vectorise), so the same bits.
-inline void addScaled(double* dst, const double* src, double c, int n) {
-  const __m128d vc = _mm_set1_pd(c);
+// dst[x] = sum_k c[k] src[k][x] for x in [0, n), each sum started at 0 and taken in the order of k (the
+// textbook loop's operations: a multiply, then an add, per tap). Blocks of 4 vectors of x stay in registers
+// across the taps; 2 lanes per SSE2 vector, 4 per AVX one where the CPU has AVX2 (chosen at run time, built
+// without FMA, so nothing is contracted): the same IEEE operations per element on either path, so the same
+// bits.
+using D2 = double __attribute__((vector_size(16)));
+using D4 = double __attribute__((vector_size(32)));
+template <class V>
+[[gnu::always_inline]] inline void weightedSum(double* dst, const double* const* src, const double* c, int taps,
+                                               int n) {
+  constexpr int L = sizeof(V) / sizeof(double), B = 4 * L;
+  auto load = [](const double* p) {
+    V v;
+    __builtin_memcpy(&v, p, sizeof v);
+    return v;
+  };
   int x = 0;
-  for (; x + 2 <= n; x += 2)
-    _mm_storeu_pd(dst + x, _mm_add_pd(_mm_loadu_pd(dst + x), _mm_mul_pd(vc, _mm_loadu_pd(src + x))));
-  for (; x < n; ++x) dst[x] += c * src[x];
+  for (; x + B <= n; x += B) {
+    V a0 = {}, a1 = {}, a2 = {}, a3 = {};
+    for (int k = 0; k < taps; ++k) {
+      V ck;
+      for (int l = 0; l < L; ++l) ck[l] = c[k];
+      const double* p = src[k] + x;
+      a0 += ck * load(p), a1 += ck * load(p + L), a2 += ck * load(p + 2 * L), a3 += ck * load(p + 3 * L);
+    }
+    __builtin_memcpy(dst + x, &a0, sizeof a0), __builtin_memcpy(dst + x + L, &a1, sizeof a1);
+    __builtin_memcpy(dst + x + 2 * L, &a2, sizeof a2), __builtin_memcpy(dst + x + 3 * L, &a3, sizeof a3);
+  }
+  for (; x < n; ++x) {
+    double sum = 0;
+    for (int k = 0; k < taps; ++k) sum += c[k] * src[k][x];
+    dst[x] = sum;
+  }
+}
+void weightedSumSse2(double* dst, const double* const* src, const double* c, int taps, int n) {
+  weightedSum<D2>(dst, src, c, taps, n);
+}
+[[gnu::target("avx2")]] void weightedSumAvx(double* dst, const double* const* src, const double* c, int taps, int n) {
+  weightedSum<D4>(dst, src, c, taps, n);
+}
+void weightedRows(double* dst, const double* const* src, const double* c, int taps, int n) {
+  static const bool avx2 = __builtin_cpu_supports("avx2");
+  (avx2 && convolutionLanes().load(std::memory_order_relaxed) >= 4 ? weightedSumAvx : weightedSumSse2)(dst, src, c,
+                                                                                                       taps, n);
 }
 
 /// Separable convolution of a w x h plane with kernels kx (along x) and ky (along y), each of odd length,
 /// edges clamped: convolveY(convolveX(in, kx), ky). The same sums, in the same order of k, as the textbook
-/// loop with clamped indices; the interior (no clamping needed) runs without the clamps, k outer and x inner
-/// (vectorised across x; each pixel still sums k = -r .. r in order, starting from 0).
+/// loop with clamped indices: a row is first copied with its edge values repeated r times on either side, so
+/// every pixel (border ones too) is one weightedRows sum over k = -r .. r in order, starting from 0.
 std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx) {
   const int rx = static_cast<int>(kx.size()) / 2;
-  std::vector<double> out(in.size());
-  const int x0 = std::min(rx, w), x1 = std::max(x0, w - rx);  // interior [x0, x1): x - rx >= 0 and x + rx < w
+  std::vector<double> out(in.size()), padded(static_cast<size_t>(w) + 2 * rx);
+  std::vector<const double*> taps(2 * rx + 1);
+  for (int k = 0; k <= 2 * rx; ++k) taps[k] = padded.data() + k;
   for (int y = 0; y < h; ++y) {
     const double* row = in.data() + static_cast<size_t>(y) * w;
-    double* dst = out.data() + static_cast<size_t>(y) * w;
-    for (int x = 0; x < w; ++x) {
-      if (x == x0) x = x1;
-      if (x >= w) break;
-      double s = 0;
-      for (int k = -rx; k <= rx; ++k) s += kx[k + rx] * row[std::clamp(x + k, 0, w - 1)];
-      dst[x] = s;
-    }
-    for (int k = 0; k <= 2 * rx; ++k)  // dst[x0, x1) is 0 (value-initialised)
-      addScaled(dst + x0, row + (k - rx) + x0, kx[k], x1 - x0);
+    for (int i = 0; i < w + 2 * rx; ++i) padded[i] = row[std::clamp(i - rx, 0, w - 1)];
+    weightedRows(out.data() + static_cast<size_t>(y) * w, taps.data(), kx.data(), 2 * rx + 1, w);
   }
   return out;
 }
@@ -93,16 +124,11 @@ std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const
   std::vector<const double*> rows(2 * ry + 1);
   for (int y = 0; y < h; ++y) {
     for (int k = -ry; k <= ry; ++k) rows[k + ry] = in.data() + static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w;
-    double* dst = out.data() + static_cast<size_t>(y) * w;
-    for (int k = 0; k <= 2 * ry; ++k) addScaled(dst, rows[k], ky[k], w);  // dst is 0 (value-initialised)
+    weightedRows(out.data() + static_cast<size_t>(y) * w, rows.data(), ky.data(), 2 * ry + 1, w);
   }
   return out;
 }
 
-std::vector<double> convolve(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
-                             const std::vector<double>& ky) {
-  return convolveY(convolveX(in, w, h, kx), w, h, ky);
-}
 
 /// The three opponent channels of an image (clamped to [0, 1]) after the
 /// contrast sensitivity filters, back in linear RGB clamped to [0, 1], as Hunt-adjusted Lab.
@@ -133,9 +159,9 @@ std::vector<V3> filteredLab(const Image& img, double ppd) {
     // kernel = A1 e1(x) e1(y) + A2 e2(x) e2(y), normalised to sum 1
     const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
     const double total = A1 * s1 * s1 + A2 * s2 * s2;
-    std::vector<double> out = convolve(ycc[c], w, h, e1, e1);
+    std::vector<double> out = convolveClamped(ycc[c], w, h, e1, e1);
     if (A2 > 0) {
-      const std::vector<double> second = convolve(ycc[c], w, h, e2, e2);
+      const std::vector<double> second = convolveClamped(ycc[c], w, h, e2, e2);
       for (size_t i = 0; i < n; ++i) out[i] = A1 * out[i] + A2 * second[i];
     } else {
       for (double& v : out) v *= A1;
@@ -179,8 +205,8 @@ void features(const Image& img, double ppd, std::vector<double>& edge, std::vect
   }
   // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other)
   const std::vector<double> smoothX = convolveX(y, w, h, g);  // shared by the three y-derivative planes
-  const std::vector<double> ex = convolve(y, w, h, d1, g), ey = convolveY(smoothX, w, h, d1);
-  const std::vector<double> pxp = convolve(y, w, h, d2p, g), pxn = convolve(y, w, h, d2n, g);
+  const std::vector<double> ex = convolveClamped(y, w, h, d1, g), ey = convolveY(smoothX, w, h, d1);
+  const std::vector<double> pxp = convolveClamped(y, w, h, d2p, g), pxn = convolveClamped(y, w, h, d2n, g);
   const std::vector<double> pyp = convolveY(smoothX, w, h, d2p), pyn = convolveY(smoothX, w, h, d2n);
   edge.resize(n), point.resize(n);
   for (size_t i = 0; i < n; ++i) {
@@ -191,6 +217,18 @@ void features(const Image& img, double ppd, std::vector<double>& edge, std::vect
 }
 
 }  // namespace
+
+std::atomic<int>& convolutionLanes() {
+  static std::atomic<int> lanes{4};
+  return lanes;
+}
+
+std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                                    const std::vector<double>& ky) {
+  if (kx.size() % 2 == 0 || ky.size() % 2 == 0 || in.size() != static_cast<size_t>(w) * h)
+    throw std::invalid_argument("convolveClamped: kernels of odd length and a w x h plane expected");
+  return convolveY(convolveX(in, w, h, kx), w, h, ky);
+}
 
 FlipReference::FlipReference(const Image& reference, double ppd)
     : width_(reference.width()), height_(reference.height()), ppd_(ppd), lab_(filteredLab(reference, ppd)) {

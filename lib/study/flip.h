@@ -12,6 +12,7 @@
 // arguments and a pure function of them.
 #pragma once
 #include <array>
+#include <atomic>
 #include <vector>
 
 #include "core/image.h"
@@ -46,5 +47,13 @@ class FlipReference {
   std::vector<std::array<double, 3>> lab_;
   std::vector<double> edge_, point_;
 };
+
+/// The separable convolution behind both pipelines, exposed for tests: convolveY(convolveX(in, kx), ky) of a
+/// w x h row-major plane, kernels of odd length centred on the pixel, indices clamped at the edges; every
+/// output is the textbook sum over k = -r .. r in that order, started at 0, bit for bit.
+std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                                    const std::vector<double>& ky);
+/// Widest vector the convolution may use (4: AVX where the CPU has AVX2, else 2); tests set 2 to compare paths.
+std::atomic<int>& convolutionLanes();
 
 }  // namespace aliaslab

@@ -14,6 +14,13 @@
 //           rtcOccluded1; planes tested analytically as ours do), when
 //           built with -DALIASLAB_EMBREE=ON and the scene's bounded
 //           primitives are all triangles
+//   texture the materials' blend weights at every recorded hit point
+//           (MaterialAt: the procedural patterns, e.g. Perlin turbulence)
+//   local   texture plus the local light at every hit: ambient and each
+//           light's Blinn-Phong term (no shadow rays), the course's formulas
+// texture and local are floors: a shaded sample does at least the local work
+// and answers its rays, so (ours + local) / embree bounds shade/embree from
+// below with today's rays, and 1 + local / embree with rays at Embree's cost.
 // Counters: rays_per_sample (and per kind), ns per sample of each, and the
 // ratios shade/embree (target <= 1.5 on mesh scenes), shade/ours and
 // ours/embree, each from interleaved timings of the same iterations.
@@ -45,13 +52,21 @@ struct Query {
   bool closest;
 };
 
+/// A closest hit on a surface with a material: where the tracer shades.
+struct HitRecord {
+  Vec3 p, normal, direction;
+  const Material* material;
+};
+
 /// Forwards to an aggregate and logs every query.
 class Recorder final : public Aggregate {
  public:
   explicit Recorder(const Aggregate& inner) : inner_(inner) {}
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
     queries.push_back({ray, tmin, hit.t, true});
-    return inner_.intersect(ray, tmin, hit);
+    const bool found = inner_.intersect(ray, tmin, hit);
+    if (found && hit.material) hits.push_back({ray.at(hit.t), hit.normal, ray.direction.normalized(), hit.material});
+    return found;
   }
   bool occluded(const Ray& ray, float tmin, float tmax) const override {
     queries.push_back({ray, tmin, tmax, false});
@@ -60,6 +75,7 @@ class Recorder final : public Aggregate {
   AggregateStats stats() const override { return inner_.stats(); }
   std::string describe() const override { return inner_.describe(); }
   mutable std::vector<Query> queries;
+  mutable std::vector<HitRecord> hits;
 
  private:
   const Aggregate& inner_;
@@ -75,6 +91,7 @@ struct Workload {
   std::unique_ptr<StudyScene> scene;
   std::vector<Vec2> film;  ///< sample film positions
   std::vector<Query> queries;
+  std::vector<HitRecord> hits;
   size_t closest = 0, anyHit = 0;
 };
 
@@ -94,6 +111,7 @@ Workload& workload(const std::string& path) {
   const Tracer tracer(w.scene->scene, recorder, w.scene->tracer->options());
   for (const Vec2& f : w.film) tracer.radianceAt(f.x(), f.y(), w.scene->width, w.scene->height);
   w.queries = std::move(recorder.queries);
+  w.hits = std::move(recorder.hits);
   for (const Query& q : w.queries) (q.closest ? w.closest : w.anyHit) += 1;
   return w;
 }
@@ -121,6 +139,31 @@ double oursPass(const Workload& w) {
     }
   }
   benchmark::DoNotOptimize(n);
+  return threadSeconds() - t0;
+}
+
+/// The texture (lights = false) or local (lights = true) floor over the recorded hits.
+double localPass(const Workload& w, bool lights) {
+  const Scene& scene = w.scene->scene;
+  Color sum = Color::Zero();
+  const double t0 = threadSeconds();
+  for (const HitRecord& h : w.hits) {
+    const MaterialAt m(*h.material, SurfacePoint(h.p));
+    if (!lights || scene.lights.empty()) {
+      sum += m.diffuse();
+      continue;
+    }
+    Color c = scene.ambient * m.diffuse();
+    for (const auto& light : scene.lights) {
+      Vec3 toLight;
+      Color lightColor;
+      float distance;
+      light->illuminate(h.p, toLight, lightColor, distance);
+      if (h.normal.dot(toLight) > 0.f) c += m.shade(h.normal, -h.direction, toLight, lightColor);
+    }
+    sum += c;
+  }
+  benchmark::DoNotOptimize(sum);
   return threadSeconds() - t0;
 }
 
@@ -226,10 +269,12 @@ void shade(benchmark::State& state, const std::string& path) {
 #ifdef ALIASLAB_HAVE_EMBREE
   const Embree embree(*w.scene->scene.root);
 #endif
-  double shadeS = 0, oursS = 0, embreeS = 0;
+  double shadeS = 0, oursS = 0, embreeS = 0, textureS = 0, localS = 0;
   for (auto _ : state) {
     shadeS += shadePass(w);
     oursS += oursPass(w);
+    textureS += localPass(w, false);
+    localS += localPass(w, true);
 #ifdef ALIASLAB_HAVE_EMBREE
     if (embree.usable) embreeS += embreePass(w, embree);
 #endif
@@ -243,10 +288,15 @@ void shade(benchmark::State& state, const std::string& path) {
   c["shade_ns"] = 1e9 * shadeS / samples;
   c["ours_ns"] = 1e9 * oursS / samples;
   c["shade/ours"] = shadeS / oursS;
+  c["texture_ns"] = 1e9 * textureS / samples;
+  c["local_ns"] = 1e9 * localS / samples;
   if (embreeS > 0) {
     c["embree_ns"] = 1e9 * embreeS / samples;
     c["shade/embree"] = shadeS / embreeS;
     c["ours/embree"] = oursS / embreeS;
+    c["texture/embree"] = textureS / embreeS;
+    c["local/embree"] = localS / embreeS;
+    c["floor/embree"] = (oursS + localS) / embreeS;  // shade/embree cannot go below this with today's rays
   }
   state.SetLabel(std::to_string(w.scene->width) + "x" + std::to_string(w.scene->height) + " " +
                  std::to_string(kSpp) + " spp, " + w.scene->aggregate->describe());
