@@ -63,14 +63,15 @@ constexpr double kQc = 0.7, kPc = 0.4, kPt = 0.95, kQf = 0.5, kFeatureWidth = 0.
 using D2 = double __attribute__((vector_size(16)));
 using D4 = double __attribute__((vector_size(32)));
 template <class V>
+[[gnu::always_inline]] inline V load(const double* p) {
+  V v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class V>
 [[gnu::always_inline]] inline void weightedSum(double* dst, const double* const* src, const double* c, int taps,
                                                int n) {
   constexpr int L = sizeof(V) / sizeof(double), B = 4 * L;
-  auto load = [](const double* p) {
-    V v;
-    __builtin_memcpy(&v, p, sizeof v);
-    return v;
-  };
   int x = 0;
   for (; x + B <= n; x += B) {
     V a0 = {}, a1 = {}, a2 = {}, a3 = {};
@@ -78,7 +79,7 @@ template <class V>
       V ck;
       for (int l = 0; l < L; ++l) ck[l] = c[k];
       const double* p = src[k] + x;
-      a0 += ck * load(p), a1 += ck * load(p + L), a2 += ck * load(p + 2 * L), a3 += ck * load(p + 3 * L);
+      a0 += ck * load<V>(p), a1 += ck * load<V>(p + L), a2 += ck * load<V>(p + 2 * L), a3 += ck * load<V>(p + 3 * L);
     }
     __builtin_memcpy(dst + x, &a0, sizeof a0), __builtin_memcpy(dst + x + L, &a1, sizeof a1);
     __builtin_memcpy(dst + x + 2 * L, &a2, sizeof a2), __builtin_memcpy(dst + x + 3 * L, &a3, sizeof a3);
