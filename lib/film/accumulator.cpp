@@ -45,13 +45,10 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
 }
 
 Reconstruction Accumulator::resolve(size_t k) const {
-  if (fresh_) {  // nothing added: the sums are zero
-    const std::vector<double> zero(plain_.size(), 0.0);
-    return filmimpl::resolveSums(width_, height_, zero.data(), plain_.data(), filmimpl::weightTolerance(*filters_.at(k)),
-                                 nonFinite_);
-  }
-  return filmimpl::resolveSums(width_, height_, sums_.at(k).data(), plain_.data(),
-                               filmimpl::weightTolerance(*filters_.at(k)), nonFinite_);
+  const Filter& filter = *filters_.at(k);
+  const std::vector<double> zero(fresh_ ? plain_.size() : 0, 0.0);  // nothing added yet: the sums are zero
+  return filmimpl::resolveSums(width_, height_, fresh_ ? zero.data() : sums_[k].data(), plain_.data(),
+                               filmimpl::weightTolerance(filter), nonFinite_);
 }
 
 size_t Accumulator::bytes() const {
