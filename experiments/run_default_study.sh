@@ -3,7 +3,7 @@
 # on every scene in scenes/, then draw its charts and the HTML report.
 # A run writes only into its own folder, runs/default/ (git-ignored; set
 # ALIASLAB_RUN_DIR for another), never into the committed reference study in
-# results/: compare the two with analysis/compare.py. The reference cache
+# results/: compare the two with `python3 -m analysis compare`. The reference cache
 # results/cache/refs (git-ignored) is shared.
 #   bash experiments/run_default_study.sh [extra sweep options]
 set -euo pipefail
@@ -35,6 +35,6 @@ rm -f "$marker"
 echo "study wall time: $(( $(date +%s) - start )) s"
 
 echo "== charts and report"
-$PY analysis/charts.py "$run/study/study.csv" --out "$run/charts"
-$PY analysis/report.py "$run" --study "$run/study/study.csv"
+$PY -m analysis charts "$run/study/study.csv" --out "$run/charts"
+$PY -m analysis report "$run" --study "$run/study/study.csv"
 echo "done: open $run/index.html (the committed reference study: results/index.html)"

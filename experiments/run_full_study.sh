@@ -16,7 +16,7 @@
 # it), reference manifests in results/study_full/references, the reference
 # cache in results/cache/refs. Rerunning the same command resumes every shard
 # where it stopped; nothing finished is lost. Then, e.g.:
-#   /usr/bin/python3 analysis/report.py results --study results/study_full/study.csv
+#   /usr/bin/python3 -m analysis report results --study results/study_full/study.csv
 # Environment: SWEEP (sweep binary, default build/bin/sweep), JOBS (parallel
 # jobs at once, default N).
 set -euo pipefail

@@ -23,10 +23,8 @@ aliasing / 10 and trace_ms * 1.5.
 import math
 import csv
 import os
-import sys
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
-import common  # noqa: E402
+from ..aliaslab_analysis import figures, study_csv
 
 SAMPLERS = {"random": 0.02, "jittered": 0.01, "uniform": 0.0}
 FILTERS = {"box": 0.004, "lanczos": 0.002}
@@ -73,7 +71,7 @@ def rows(scale=1.0, new_columns=False, prefilter=False, scenes=None):
 
 
 def old_rows(scale=1.0, scenes=None):
-    """The rows with the original columns only (common.STUDY_COLUMNS)."""
+    """The rows with the original columns only (study_csv.STUDY_COLUMNS)."""
     for scene in scenes or SCENES:
         for sampler, n0 in SAMPLERS.items():
             for filt, a0 in FILTERS.items():
@@ -100,7 +98,7 @@ def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scene
     """Writes the CSV; `modify(row)` may change a row in place. new_columns=False writes an older CSV
     (without the columns of coord/COLUMNS.md); prefilter=True adds the `prefilter` column and a
     pre-filtered copy of every configuration; `scenes` replaces SCENES (e.g. ["a"] for a smaller CSV)."""
-    fields = list(common.STUDY_COLUMNS) + (NEW_COLUMNS if new_columns else []) + (["prefilter"] if prefilter else [])
+    fields = list(study_csv.STUDY_COLUMNS) + (NEW_COLUMNS if new_columns else []) + (["prefilter"] if prefilter else [])
     with open(path, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=fields)
         w.writeheader()
@@ -114,7 +112,7 @@ def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scene
 def tiny_png(path, value=0.5):
     """A 6 x 4 grey PNG (stands in for a sweep image)."""
     import numpy as np
-    from common import plt
+    from ..aliaslab_analysis.figures import plt
     os.makedirs(os.path.dirname(path), exist_ok=True)
     plt.imsave(path, np.full((4, 6), value), cmap="gray", vmin=0, vmax=1)
     return path
@@ -198,7 +196,7 @@ def make_results(folder, new_columns=True, prefilter=False, shards=True, enginee
                 f.write("\n".join([lines[0]] + part) + "\n")
     images = os.path.join(study, "images")
     for scene in SCENES:
-        stem = common.slug(scene)
+        stem = figures.slug(scene)
         tiny_png(os.path.join(images, f"contact-{stem}.png"), 0.3)
         with open(os.path.join(images, f"contact-{stem}.txt"), "w") as f:
             f.write(f"contact sheet of {stem}: rows top to bottom\n")

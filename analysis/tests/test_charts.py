@@ -6,17 +6,13 @@ import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, ".."))
-sys.path.insert(0, HERE)
-import charts  # noqa: E402
-import convergence_chart  # noqa: E402
-import filter_profiles  # noqa: E402
-import pointset_chart  # noqa: E402
-import report  # noqa: E402
-import synthetic  # noqa: E402
+import pandas as pd
 
-import pandas as pd  # noqa: E402
+from . import synthetic
+from ..aliaslab_analysis import convergence_chart, filter_profiles, pointset_chart
+from ..aliaslab_analysis.charts import cli as charts_cli
+from ..aliaslab_analysis.report import markdown as report_markdown
+from ..aliaslab_analysis.report import page as report_page
 
 
 def is_chart(path):
@@ -33,7 +29,7 @@ class StudyCharts(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.csv = synthetic.write(os.path.join(cls.tmp.name, "study.csv"))
         cls.out = os.path.join(cls.tmp.name, "charts")
-        charts.main([cls.csv, "--out", cls.out])
+        charts_cli.main([cls.csv, "--out", cls.out])
 
     @classmethod
     def tearDownClass(cls):
@@ -69,7 +65,7 @@ class StudyCharts(unittest.TestCase):
         with self.assertRaises(SystemExit) as cm, open(os.devnull, "w") as devnull:
             old, sys.stderr = sys.stderr, devnull
             try:
-                charts.main([bad, "--out", self.out])
+                charts_cli.main([bad, "--out", self.out])
             finally:
                 sys.stderr = old
         self.assertEqual(cm.exception.code, 2)
@@ -100,14 +96,14 @@ class BadInput(unittest.TestCase):
 
     def test_unknown_filter_is_refused_before_anything_is_written(self):
         csv = synthetic.write(self.path("study.csv"))
-        self.assertEqual(exit_code(charts.main, [csv, "--out", self.path("out"), "--filter", "nosuch"]), 2)
+        self.assertEqual(exit_code(charts_cli.main, [csv, "--out", self.path("out"), "--filter", "nosuch"]), 2)
         self.assertFalse(os.path.exists(self.path("out")))
 
     def test_an_unusable_out_folder_exits_2(self):
         csv = synthetic.write(self.path("study.csv"))
         blocker = self.path("a_file")
         open(blocker, "w").close()
-        self.assertEqual(exit_code(charts.main, [csv, "--out", os.path.join(blocker, "sub")]), 2)
+        self.assertEqual(exit_code(charts_cli.main, [csv, "--out", os.path.join(blocker, "sub")]), 2)
         conv = self.path("c.csv")
         pd.DataFrame([("random", "disk", n, 1.0 / n, 4) for n in (1, 2, 4)],
                      columns=convergence_chart.COLUMNS).to_csv(conv, index=False)
@@ -129,7 +125,7 @@ class BadInput(unittest.TestCase):
     def test_every_markdown_table_of_a_file_becomes_its_own_html_table(self):
         text = ("| a | b |\n|---|---|\n| 1 | **2** |\n\nsome text\n\n| c |\n|---|\n| 3 |\n"
                 "| not | a table |\n")
-        page = report.markdown_tables(text)
+        page = report_markdown.markdown_tables(text)
         self.assertEqual(page.count("<table>"), 2)
         self.assertIn("<th>c</th>", page)
         self.assertIn("<td><b>2</b></td>", page)
@@ -169,11 +165,11 @@ class OtherCharts(unittest.TestCase):
                 for ext in ("png", "svg"):
                     self.assertTrue(is_chart(os.path.join(tmp, f"{path}.{ext}")), f"{path}.{ext}")
             # The report's section on samplers and filters shows these charts, by relative path or embedded.
-            section = report.isolation_section(tmp, embed=False)
+            section = report_page.isolation_section(tmp, embed=False)
             for path in ("convergence/convergence.png", "pointsets/spectra.png", "filters/filter_profiles.png"):
                 self.assertIn(f"src='{path}'", section)
             self.assertNotIn("http", section)
-            self.assertIn("data:image/png;base64,", report.isolation_section(tmp, embed=True))
+            self.assertIn("data:image/png;base64,", report_page.isolation_section(tmp, embed=True))
 
 
 if __name__ == "__main__":

@@ -3,15 +3,11 @@ import contextlib
 import io
 import math
 import os
-import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, ".."))
-sys.path.insert(0, HERE)
-import compare  # noqa: E402
-import synthetic  # noqa: E402
+from . import synthetic
+from ..aliaslab_analysis import compare
 
 
 def run(*args):

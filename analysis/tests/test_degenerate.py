@@ -8,20 +8,14 @@ import contextlib
 import io
 import math
 import os
-import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, ".."))
-sys.path.insert(0, HERE)
-import charts  # noqa: E402
-import compare  # noqa: E402
-import convergence_chart  # noqa: E402
-import filter_profiles  # noqa: E402
-import synthetic  # noqa: E402
+import pandas as pd
 
-import pandas as pd  # noqa: E402
+from . import synthetic
+from ..aliaslab_analysis import compare, convergence_chart, filter_profiles
+from ..aliaslab_analysis.charts import cli as charts_cli
 
 METRICS = ["mse", "aliasing", "noise", "mse_area", "mse_target", "blur", "cross", "mse_se", "noise_se",
            "aliasing_se", "mse_target_se"]
@@ -56,7 +50,7 @@ class DegenerateStudies(unittest.TestCase):
         csv = synthetic.write(os.path.join(self.tmp.name, "s.csv"), modify=modify, new_columns=new_columns,
                               scenes=["a"])
         out = os.path.join(self.tmp.name, "charts")
-        code, _, err = run(charts.main, [csv, "--out", out])
+        code, _, err = run(charts_cli.main, [csv, "--out", out])
         self.assertEqual(code, 0, err)
         for name in ("speed_accuracy_a", "convergence_a", "heatmap_a", "stability", "decomposition_a", "radius_a"):
             self.assertTrue(is_png(os.path.join(out, name + ".png")), name)
@@ -118,7 +112,7 @@ class DegenerateStudies(unittest.TestCase):
         csv = synthetic.write(os.path.join(self.tmp.name, "s.csv"), scenes=["a"])
         df = pd.read_csv(csv)
         df[df["spp"] == 4].to_csv(csv, index=False)
-        code, _, err = run(charts.main, [csv, "--out", os.path.join(self.tmp.name, "c")])
+        code, _, err = run(charts_cli.main, [csv, "--out", os.path.join(self.tmp.name, "c")])
         self.assertEqual(code, 0, err)
 
 
@@ -176,7 +170,7 @@ class BrokenFiles(unittest.TestCase):
             if r["spp"] == 16:
                 r["mse_target"] = "oops"
         csv = synthetic.write(self.path("s.csv"), modify=garbage, scenes=["a"])
-        self.assert_refused(charts.main, [csv, "--out", self.path("o")], csv, "mse_target")
+        self.assert_refused(charts_cli.main, [csv, "--out", self.path("o")], csv, "mse_target")
 
 
 class CompareNaN(unittest.TestCase):

@@ -10,19 +10,18 @@ import io
 import math
 import os
 import re
-import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, ".."))
-sys.path.insert(0, HERE)
-import charts  # noqa: E402
-import common  # noqa: E402
-import report  # noqa: E402
-import synthetic  # noqa: E402
+import pandas as pd
 
-import pandas as pd  # noqa: E402
+from . import synthetic
+from ..aliaslab_analysis import fits, study_csv
+from ..aliaslab_analysis.charts import cli as charts_cli
+from ..aliaslab_analysis.report import cli as report_cli
+from ..aliaslab_analysis.report import elements as report_elements
+from ..aliaslab_analysis.report import findings as report_findings
+from ..aliaslab_analysis.report import page as report_page
 
 
 def run(main, args):
@@ -46,11 +45,11 @@ class Report(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "mine")
         cls.csv = synthetic.make_results(cls.results)
-        code, out, err = run(report.main, [cls.results, "--link"])
+        code, out, err = run(report_cli.main, [cls.results, "--link"])
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.linked = f.read()
-        code, out, err = run(report.main, [cls.results, "--reuse-charts"])  # embedded, the default
+        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts"])  # embedded, the default
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.embedded = f.read()
@@ -97,7 +96,7 @@ class Report(unittest.TestCase):
             self.assertFalse(re.match(r"^[a-z]+://", link), link)  # nothing outside the repository
             path = os.path.normpath(os.path.join(self.results, link.split("#")[0]))
             if link.endswith("science.md"):  # the definitions: the repository's own docs/science.md
-                self.assertEqual(path, os.path.normpath(report.SCIENCE))
+                self.assertEqual(path, os.path.normpath(report_page.SCIENCE))
                 continue
             self.assertTrue(os.path.isfile(path), link)
 
@@ -122,14 +121,14 @@ class Report(unittest.TestCase):
         charts_dir = os.path.join(self.results, "charts")
         chart = sorted(f for f in os.listdir(charts_dir) if f.endswith(".png"))[0]
         path = os.path.join(charts_dir, chart)
-        data = report.chart_png_bytes(path)
+        data = report_elements.chart_png_bytes(path)
         with Image.open(io.BytesIO(data)) as small, Image.open(path) as full:
             self.assertEqual(small.size, full.size)
             self.assertEqual(small.mode, "P")
         self.assertLess(len(data), os.path.getsize(path))
         render = os.path.join(self.tmp.name, "render.png")
         Image.new("RGB", (5, 3), (10, 200, 30)).save(render)
-        src = report.image_src(self.tmp.name, render, True)
+        src = report_elements.image_src(self.tmp.name, render, True)
         with open(render, "rb") as f:
             self.assertEqual(base64.b64decode(src.split(",", 1)[1]), f.read())
         for link in re.findall(r"src='data:image/png;base64,([^']*)'", self.embedded):
@@ -146,8 +145,8 @@ class Report(unittest.TestCase):
         self.assertNotIn("reference study", self.linked.lower())
         title = re.search(r"<h1>(.*?)</h1>", self.linked).group(1)
         self.assertIn(os.path.realpath(self.csv), title)
-        self.assertIn("reference study", report.study_label(report.REFERENCE_STUDY, None))
-        self.assertEqual(report.study_label(self.csv, "my zone plates"), "my zone plates")
+        self.assertIn("reference study", report_page.study_label(report_page.REFERENCE_STUDY, None))
+        self.assertEqual(report_page.study_label(self.csv, "my zone plates"), "my zone plates")
 
     def test_shard_csvs_beside_the_merged_one_do_not_duplicate_rows(self):
         self.assertTrue(os.path.isfile(os.path.join(self.results, "study", "study.shard-0-of-2.csv")))
@@ -172,7 +171,7 @@ class ReportVariants(unittest.TestCase):
     def test_an_old_csv_falls_back_and_says_so(self):
         results = os.path.join(self.tmp.name, "old")
         csv = synthetic.make_results(results, new_columns=False, shards=False, engineering=False)
-        with open(report.build_report(results, csv, draw=False), encoding="utf-8") as f:
+        with open(report_page.build_report(results, csv, draw=False), encoding="utf-8") as f:
             page = f.read()
         self.assertIn("no mse_target column", page)
         self.assertIn("mse_area - mse", page)
@@ -180,8 +179,8 @@ class ReportVariants(unittest.TestCase):
 
     def test_prefiltered_rows_are_compared_with_plain_sampling_at_higher_spp(self):
         csv = synthetic.write(os.path.join(self.tmp.name, "p.csv"), prefilter=True)
-        df, notes = common.load_study(csv)
-        text = " ".join(report.findings(df, notes, "area"))
+        df, notes = study_csv.load_study(csv)
+        text = " ".join(report_findings.findings(df, notes, "area"))
         self.assertIn("Pre-filtered at 1 spp", text)
         self.assertIn("plain 64 spp", text)
 
@@ -195,13 +194,13 @@ class ReportVariants(unittest.TestCase):
                 r["cross"] = 0.0
                 r["mse_target"] = r["noise"] + r["aliasing"] + 0.5
         csv = synthetic.write(os.path.join(self.tmp.name, "w.csv"), modify=wide_box)
-        df, notes = common.load_study(csv)
-        for b in report.best_per_spp(df):
+        df, notes = study_csv.load_study(csv)
+        for b in report_findings.best_per_spp(df):
             self.assertNotIn("box r=1", b["method"])
-        name, ratio, scenes, spp = report.own_mse_pick(df)
+        name, ratio, scenes, spp = report_findings.own_mse_pick(df)
         self.assertIn("box r=1", name)
         self.assertGreater(ratio, 10)
-        self.assertIn("would win", " ".join(report.findings(df, notes, "area")))
+        self.assertIn("would win", " ".join(report_findings.findings(df, notes, "area")))
 
     def test_repeated_configurations_are_refused_by_report_and_charts(self):
         csv = synthetic.write(os.path.join(self.tmp.name, "d.csv"), scenes=["a"])
@@ -209,8 +208,8 @@ class ReportVariants(unittest.TestCase):
             lines = f.read().splitlines()
         with open(csv, "a") as f:
             f.write(lines[5] + "\n")  # a second copy of one configuration
-        for main, args in ((report.main, [self.tmp.name, "--study", csv]),
-                           (charts.main, [csv, "--out", os.path.join(self.tmp.name, "c")])):
+        for main, args in ((report_cli.main, [self.tmp.name, "--study", csv]),
+                           (charts_cli.main, [csv, "--out", os.path.join(self.tmp.name, "c")])):
             code, _, err = run(main, args)
             self.assertEqual(code, 2, err)
             self.assertIn("repeat a configuration", err)
@@ -223,7 +222,7 @@ class Loader(unittest.TestCase):
     def test_load_study_renames_filter_and_adds_the_error_columns(self):
         with tempfile.TemporaryDirectory() as tmp:
             csv = synthetic.write(os.path.join(tmp, "s.csv"))
-            df, notes = common.load_study(csv)
+            df, notes = study_csv.load_study(csv)
             self.assertNotIn("filter", df.columns)
             self.assertEqual(set(df["filter_name"]), {"box", "lanczos"})
             self.assertTrue(callable(df.filter))  # DataFrame.filter is no longer shadowed
@@ -238,26 +237,26 @@ class Loader(unittest.TestCase):
     def test_old_csv_error_is_mse_area(self):
         with tempfile.TemporaryDirectory() as tmp:
             csv = synthetic.write(os.path.join(tmp, "s.csv"), new_columns=False)
-            df, notes = common.load_study(csv)
+            df, notes = study_csv.load_study(csv)
             self.assertEqual(list(df["error"]), list(pd.read_csv(csv)["mse_area"]))
             self.assertTrue(any("mse_area" in n for n in notes))
             self.assertTrue(df["error_se"].isna().all())
 
     def test_zero_within_error(self):
-        z = common.zero_within_error([0.0, 1.0, -1.0, 1.0, 3.0, 1.0], [0.0, 0.5, 0.5, 0.49, 1.0, math.nan])
+        z = study_csv.zero_within_error([0.0, 1.0, -1.0, 1.0, 3.0, 1.0], [0.0, 0.5, 0.5, 0.49, 1.0, math.nan])
         self.assertEqual(list(z), [True, True, True, False, False, False])
 
     def test_slopes_need_three_spp_levels(self):
-        self.assertIsNone(common.slope_or_none([4, 16], [1.0, 0.25]))
-        self.assertIsNone(common.slope_or_none([4, 16, 64], [1.0, 0.25, 0.0]))  # only two usable
-        self.assertAlmostEqual(common.slope_or_none([4, 16, 64], [1.0, 0.25, 1 / 16]), -1.0)
+        self.assertIsNone(fits.slope_or_none([4, 16], [1.0, 0.25]))
+        self.assertIsNone(fits.slope_or_none([4, 16, 64], [1.0, 0.25, 0.0]))  # only two usable
+        self.assertAlmostEqual(fits.slope_or_none([4, 16, 64], [1.0, 0.25, 1 / 16]), -1.0)
 
     def test_prefilter_is_part_of_the_key(self):
         with tempfile.TemporaryDirectory() as tmp:
             csv = synthetic.write(os.path.join(tmp, "s.csv"), prefilter=True)
-            df, _ = common.load_study(csv)  # no repeated configuration: prefilter tells them apart
+            df, _ = study_csv.load_study(csv)  # no repeated configuration: prefilter tells them apart
             self.assertEqual(len(df), 192)
-            self.assertIn("prefilter", common.config_key(df))
+            self.assertIn("prefilter", study_csv.config_key(df))
 
 
 if __name__ == "__main__":

@@ -6,24 +6,18 @@ exists; without spectra files (older studies) the section says so and nothing fa
 and chart are checked against the synthetic law (synthetic.spectrum_power).
 """
 import os
-import re
-import sys
 import tempfile
 import unittest
 
-HERE = os.path.dirname(os.path.abspath(__file__))
-sys.path.insert(0, os.path.join(HERE, ".."))
-sys.path.insert(0, HERE)
-import common  # noqa: E402
-import report  # noqa: E402
-import spectra  # noqa: E402
-import synthetic  # noqa: E402
-from test_report import links, run  # noqa: E402
+from . import synthetic
+from ..aliaslab_analysis import figures, spectra, study_csv
+from ..aliaslab_analysis.report import cli as report_cli
+from .test_report import links, run
 
 
 def section(page, scene):
     """The HTML of one scene's section (from its heading to the next scene or the next h2)."""
-    start = page.index(f"<h3 id='scene-{common.slug(scene)}'>")
+    start = page.index(f"<h3 id='scene-{figures.slug(scene)}'>")
     end = min([i for i in (page.find("<h3 ", start + 1), page.find("<h2", start + 1)) if i > 0])
     return page[start:end]
 
@@ -34,7 +28,7 @@ class WithSpectra(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "r")
         cls.csv = synthetic.make_results(cls.results, spectra=True)
-        code, out, err = run(report.main, [cls.results, "--link"])
+        code, out, err = run(report_cli.main, [cls.results, "--link"])
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.page = f.read()
@@ -64,7 +58,7 @@ class WithSpectra(unittest.TestCase):
             s = section(self.page, scene)
             self.assertIn("Where the error sits on screen", s)
             self.assertNotIn("No error spectra", s)
-            slug = common.slug(scene)
+            slug = figures.slug(scene)
             self.assertIn(f"spectrum_{slug}_spp16.png", s)
             for spp in (4, 16):
                 self.assertIn(f"spectrum_pair_{slug}_spp{spp}.png", s)
@@ -76,7 +70,7 @@ class WithSpectra(unittest.TestCase):
             self.assertIn("low-frequency share", s)
 
     def test_blurred_mse_shown_beside_mse_with_values(self):
-        df, _ = common.load_study(self.csv)
+        df, _ = study_csv.load_study(self.csv)
         r = df[(df["scene"] == "a") & (df["sampler"] == "zsobol") & (df["spp"] == 4)
                & (df["filter_name"] == "box") & (df["radius"] == 0.5)].iloc[0]
         s = section(self.page, "a")
@@ -105,7 +99,7 @@ class WithoutSpectra(unittest.TestCase):
             results = os.path.join(tmp, "r")
             csv_path = synthetic.make_results(results, new_columns=new_columns)
             self.assertIsNone(spectra.load(csv_path))
-            code, out, err = run(report.main, [results, "--link"])
+            code, out, err = run(report_cli.main, [results, "--link"])
             self.assertEqual(code, 0, err)
             with open(os.path.join(results, "index.html"), encoding="utf-8") as f:
                 page = f.read()
@@ -126,7 +120,7 @@ class WithoutSpectra(unittest.TestCase):
             results = os.path.join(tmp, "r")
             csv_path = synthetic.make_results(results)
             synthetic.write_spectra(os.path.dirname(csv_path), list(synthetic.SAMPLERS))
-            code, out, err = run(report.main, [results, "--link"])
+            code, out, err = run(report_cli.main, [results, "--link"])
             self.assertEqual(code, 0, err)
             with open(os.path.join(results, "index.html"), encoding="utf-8") as f:
                 page = f.read()

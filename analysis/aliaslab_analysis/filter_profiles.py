@@ -1,7 +1,6 @@
-#!/usr/bin/python3
 """Each filter's 1-D profile and the magnitude of its frequency response.
 
-Usage: /usr/bin/python3 analysis/filter_profiles.py --out DIR
+Usage: /usr/bin/python3 -m analysis filters --out DIR
            [--csv profiles.csv | --bin build/bin/filterprofile]
 
 The numbers come from the C++ experiment `filterprofile` (the library's own
@@ -18,13 +17,11 @@ import argparse
 import io
 import os
 import subprocess
-import sys
 
 import pandas as pd
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
-from common import plt  # noqa: E402
+from . import csv_tables, errors, figures
+from .figures import plt
 
 COLUMNS = ["filter", "radius", "describe", "kind", "x", "value"]
 NUMERIC = ["radius", "x", "value"]
@@ -36,8 +33,8 @@ def chart(df, out_dir):
         label = g["describe"].iloc[0]
         p = g[g["kind"] == "profile"]
         r = g[g["kind"] == "response"]
-        a.plot(p["x"], p["value"], color=common.colour(i), lw=1.2, label=label)
-        b.plot(r["x"], r["value"], color=common.colour(i), lw=1.2, label=label)
+        a.plot(p["x"], p["value"], color=figures.colour(i), lw=1.2, label=label)
+        b.plot(r["x"], r["value"], color=figures.colour(i), lw=1.2, label=label)
     a.axhline(0, color="k", lw=0.6)
     a.set_xlabel("offset x (pixels)")
     a.set_ylabel("1-D profile g(x)")
@@ -51,32 +48,28 @@ def chart(df, out_dir):
     for ax in (a, b):
         ax.grid(True, which="major", alpha=0.3)
     b.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
-    return common.save_figure(fig, out_dir, "filter_profiles")
+    return figures.save_figure(fig, out_dir, "filter_profiles")
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description="Filter profiles and frequency responses")
+def main(argv=None, prog=None):
+    ap = argparse.ArgumentParser(prog=prog, description="Filter profiles and frequency responses")
     ap.add_argument("--out", required=True)
     src = ap.add_mutually_exclusive_group(required=True)
     src.add_argument("--csv", help="CSV written by filterprofile")
     src.add_argument("--bin", help="the filterprofile executable, run here")
     args = ap.parse_args(argv)
-    common.prepare_out(args.out)
+    errors.prepare_out(args.out)
     try:
         if args.csv:
-            df = common.read_table(args.csv, COLUMNS, NUMERIC)
+            df = csv_tables.read_table(args.csv, COLUMNS, NUMERIC)
         else:
             text = subprocess.run([args.bin], check=True, capture_output=True, text=True).stdout
-            df = common.check_table(pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False),
+            df = csv_tables.check_table(pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False),
                                     f"output of {args.bin}", COLUMNS, NUMERIC)
             df.to_csv(os.path.join(args.out, "filter_profiles.csv"), index=False)
-    except common.InputError as e:
-        common.fail(str(e))
+    except errors.InputError as e:
+        errors.fail(str(e))
     except (OSError, subprocess.CalledProcessError, pd.errors.ParserError, pd.errors.EmptyDataError) as e:
-        common.fail(f"{args.csv or args.bin}: {e}")
+        errors.fail(f"{args.csv or args.bin}: {e}")
     chart(df, args.out)
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -13,8 +13,8 @@ import numpy as np
 import pandas as pd
 from matplotlib import ticker
 
-import common
-from common import plt
+from . import figures
+from .figures import plt
 
 CUTOFF = 0.125  # cycles per pixel: lib/study/spectrum.h kLowFrequencyCutoff
 NYQUIST = 0.5
@@ -132,7 +132,7 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
 
 
 def chart_path(charts_dir, scene, spp, tag="spectrum"):
-    return os.path.join(charts_dir, f"{tag}_{common.slug(scene)}_spp{int(spp)}.png")
+    return os.path.join(charts_dir, f"{tag}_{figures.slug(scene)}_spp{int(spp)}.png")
 
 
 def pick_spp(levels, wanted=16):

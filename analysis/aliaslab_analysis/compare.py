@@ -1,7 +1,6 @@
-#!/usr/bin/python3
 """Compares two sweep CSVs (before / after a change, or two machines).
 
-Usage: /usr/bin/python3 analysis/compare.py BEFORE.csv AFTER.csv
+Usage: /usr/bin/python3 -m analysis compare BEFORE.csv AFTER.csv
            [--z 3] [--time-ratio 2] [--min-ms 1] [--rel-tol 1e-6] [--independent-pixels]
 
 Configurations are matched on (scene, width, height, sampler, spp, filter,
@@ -38,13 +37,11 @@ the relative tolerance absorbs printing precision for deterministic patterns
 """
 import argparse
 import math
-import os
 import sys
 
 import pandas as pd
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import common  # noqa: E402
+from . import errors, study_csv
 
 METRICS = ["mse", "aliasing", "noise", "mse_area"]
 TIMES = ["trace_ms", "reconstruct_ms", "time_ms"]
@@ -85,7 +82,7 @@ def is_worse(before, after):
 
 
 def unique_rows(df, path):
-    dup = df.duplicated(common.config_key(df), keep="last")
+    dup = df.duplicated(study_csv.config_key(df), keep="last")
     if dup.any():
         print(f"note: {path}: {int(dup.sum())} repeated configuration(s); the last row of each is used",
               file=sys.stderr)
@@ -100,7 +97,7 @@ def label(row):
 
 def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, independent_pixels=False):
     """Returns (metric changes, time changes, only-before keys, only-after keys) as DataFrames/lists."""
-    key = common.CONFIG_KEY + (["prefilter"] if "prefilter" in before and "prefilter" in after else [])
+    key = study_csv.CONFIG_KEY + (["prefilter"] if "prefilter" in before and "prefilter" in after else [])
     m = before.merge(after, on=key, how="outer", suffixes=("_b", "_a"), indicator=True)
     only_b = m[m["_merge"] == "left_only"]
     only_a = m[m["_merge"] == "right_only"]
@@ -134,8 +131,9 @@ def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, inde
             [label(r) for _, r in only_b.iterrows()], [label(r) for _, r in only_a.iterrows()])
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description="Compare two aliaslab study CSVs; exit 1 on an mse regression")
+def main(argv=None, prog=None):
+    ap = argparse.ArgumentParser(prog=prog,
+                                 description="Compare two aliaslab study CSVs; exit 1 on an mse regression")
     ap.add_argument("before")
     ap.add_argument("after")
     ap.add_argument("--z", type=float, default=3.0, help="significance in standard errors (default 3)")
@@ -146,20 +144,20 @@ def main(argv=None):
                     help="divide standard errors by sqrt(width height / (2 r + 1)^2) (more sensitive)")
     args = ap.parse_args(argv)
     if args.z <= 0:
-        common.fail(f"--z: must be > 0, got {args.z}")
+        errors.fail(f"--z: must be > 0, got {args.z}")
     if args.time_ratio <= 1:
-        common.fail(f"--time-ratio: must be > 1, got {args.time_ratio}")
+        errors.fail(f"--time-ratio: must be > 1, got {args.time_ratio}")
     try:
-        before = unique_rows(common.read_study_csv(args.before), args.before)
-        after = unique_rows(common.read_study_csv(args.after), args.after)
-    except common.InputError as e:
-        common.fail(str(e))
+        before = unique_rows(study_csv.read_study_csv(args.before), args.before)
+        after = unique_rows(study_csv.read_study_csv(args.after), args.after)
+    except errors.InputError as e:
+        errors.fail(str(e))
 
     metrics, times, only_b, only_a = compare(before, after, args.z, args.time_ratio, args.min_ms, args.rel_tol,
                                              args.independent_pixels)
     matched = len(before) - len(only_b)
     if matched == 0:
-        common.fail(f"no configuration is in both {args.before} and {args.after}: they match on "
+        errors.fail(f"no configuration is in both {args.before} and {args.after}: they match on "
                     f"(scene, width, height, sampler, spp, filter, radius, filter_params, reconstruction); "
                     f"compare two runs of the same study (e.g. sweep --preset default before and after a change)")
     print(f"matched {matched} configuration(s); {len(only_b)} only in {args.before}, "
@@ -186,7 +184,3 @@ def main(argv=None):
         return 1
     print("\nno significant accuracy regression")
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

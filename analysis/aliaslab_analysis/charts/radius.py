@@ -1,0 +1,61 @@
+"""radius_<scene>: the radius trade-off. Error, noise and blur against radius, one panel per filter, one
+colour per spp level, for the sampler of the scene's best method."""
+from .. import figures
+from ..figures import plt
+from .axes import ERROR_LABEL, best_row, empty_panel, has_target, label_log_axis, usable, yerr_log
+
+
+def radius_tradeoff(df, out_dir):
+    """Error, noise and blur against radius per filter, one colour per spp, for one sampler per scene
+    (the sampler of the scene's best method, named in the title)."""
+    levels = sorted(df["spp"].unique())
+    spp_colours = {s: plt.cm.viridis(i / max(1, len(levels) - 1) * 0.85) for i, s in enumerate(levels)}
+    blur_col = "blur" if "blur" in df.columns else "blur_cross"
+    for scene, sd in df.groupby("scene", sort=True):
+        best = best_row(sd)
+        sampler = best["sampler"] if best is not None else sorted(sd["sampler"].unique())[0]
+        recon = best["reconstruction"] if best is not None else sd["reconstruction"].iloc[0]
+        sub = sd[(sd["sampler"] == sampler) & (sd["reconstruction"] == recon) & (sd["prefilter"] == "none")]
+        filters = sorted(sub["filter_name"].unique())
+        cols = min(3, max(1, len(filters)))
+        nrows = (max(1, len(filters)) + cols - 1) // cols
+        fig, axes = plt.subplots(nrows, cols, figsize=(3.9 * cols + 1.6, 3.4 * nrows + 0.6), squeeze=False)
+        for ax in axes.flat[len(filters):]:
+            ax.axis("off")
+        for ax, filt in zip(axes.flat, filters):
+            fd = sub[sub["filter_name"] == filt]
+            drawn = False
+            for spp in levels:
+                g = usable(fd[fd["spp"] == spp].sort_values("radius"))
+                if g.empty:
+                    continue
+                drawn = True
+                c = spp_colours[spp]
+                ax.errorbar(g["radius"], g["error"], yerr=yerr_log(g["error"], g["error_se"]), color=c,
+                            marker="o", ms=4, lw=1.2, capsize=2, label=f"error, {int(spp)} spp")
+                n = usable(g, "noise")
+                ax.plot(n["radius"], n["noise"], color=c, ls="--", lw=0.9)
+            b = usable(fd.drop_duplicates("radius").sort_values("radius"), blur_col)
+            if len(b):
+                drawn = True
+                ax.plot(b["radius"], b[blur_col], color="black", ls=":", marker="x", lw=1.2)
+            ax.set_title(filt, fontsize=10)
+            ax.set_xlabel("radius (pixels)")
+            if drawn:
+                ax.set_yscale("log")
+                ax.grid(True, which="major", alpha=0.3)
+                label_log_axis(ax)
+            else:
+                empty_panel(ax, "no finite value > 0")
+        for row in axes:
+            row[0].set_ylabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
+        handles = [plt.Line2D([], [], color=spp_colours[s], marker="o", label=f"error, {int(s)} spp")
+                   for s in levels]
+        handles += [plt.Line2D([], [], color="grey", ls="--", label="noise (same colour: spp)"),
+                    plt.Line2D([], [], color="black", ls=":", marker="x",
+                               label="blur" if blur_col == "blur" else "blur + cross (mse_area - mse)")]
+        fig.legend(handles=handles, loc="center left", bbox_to_anchor=(1.0, 0.5), fontsize=8, frameon=False)
+        fig.suptitle(f"Radius trade-off: {scene}, sampler {sampler} (that of the best method), {recon}: "
+                     "a wider filter lowers noise and adds blur", fontsize=10)
+        fig.tight_layout()
+        figures.save_figure(fig, out_dir, f"radius_{figures.slug(scene)}")

@@ -1,0 +1,34 @@
+"""The single entry point: `/usr/bin/python3 -m analysis COMMAND [options]` from the repository root.
+
+A command is one module's main(argv, prog), which keeps its own options; unknown commands exit 2.
+"""
+import sys
+
+from . import compare, convergence_chart, filter_profiles, pointset_chart
+from .charts import cli as charts_cli
+from .report import cli as report_cli
+
+COMMANDS = {"report": report_cli.main, "charts": charts_cli.main, "compare": compare.main,
+            "convergence": convergence_chart.main, "pointsets": pointset_chart.main,
+            "filters": filter_profiles.main}
+USAGE = """usage: {prog} COMMAND [options]      (COMMAND -h lists its options)
+
+  report       the HTML report of a study, findings first
+  charts       every chart and table of a study CSV
+  compare      two study CSVs, before and after a change (exit 1 on an accuracy regression)
+  convergence  RMSE against N from the `convergence` experiment's CSV
+  pointsets    the spectra and discrepancy charts of the `pointsets` experiment
+  filters      filter profiles and frequency responses from `filterprofile`
+"""
+
+
+def main(argv=None, prog="python3 -m analysis"):
+    argv = sys.argv[1:] if argv is None else list(argv)
+    if not argv or argv[0] in ("-h", "--help"):
+        print(USAGE.format(prog=prog), end="", file=sys.stdout if argv else sys.stderr)
+        return 0 if argv else 2
+    command = COMMANDS.get(argv[0])
+    if command is None:
+        print(f"error: unknown command '{argv[0]}' (one of {', '.join(COMMANDS)})", file=sys.stderr)
+        return 2
+    return command(argv[1:], prog=f"{prog} {argv[0]}")

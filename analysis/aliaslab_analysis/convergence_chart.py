@@ -1,0 +1,74 @@
+"""Log-log chart of RMSE against N from the `convergence` experiment.
+
+Usage: /usr/bin/python3 -m analysis convergence convergence.csv --out DIR
+           [--fit-min 16] [--fit-max 4096]
+
+One panel per integrand, one line per sampler; the legend gives the slope
+fitted by least squares on log-log over the powers of two in
+[fit-min, fit-max] (the same fit as lib/study/convergence.h). Counts that are
+not powers of two are drawn as crosses. Writes DIR/convergence.png and .svg.
+"""
+import argparse
+
+import numpy as np
+
+from . import csv_tables, errors, figures, fits
+from .figures import plt
+
+COLUMNS = ["sampler", "integrand", "n", "rmse", "realisations"]
+
+
+def read(path):
+    """The convergence CSV, checked (columns, rows, numbers); raises errors.InputError naming file and column."""
+    return csv_tables.read_table(path, COLUMNS, ["n", "rmse", "realisations"])
+
+
+def chart(df, out_dir, fit_min, fit_max):
+    integrands = list(dict.fromkeys(df["integrand"]))
+    samplers = list(dict.fromkeys(df["sampler"]))
+    cols = min(3, len(integrands))
+    rows = (len(integrands) + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(6 * cols, 4.8 * rows), squeeze=False)
+    for ax in axes.flat[len(integrands):]:
+        ax.axis("off")
+    for ax, integrand in zip(axes.flat, integrands):
+        for i, sampler in enumerate(samplers):
+            g = df[(df["integrand"] == integrand) & (df["sampler"] == sampler)].sort_values("n")
+            g = g[(g["rmse"] > 0) & np.isfinite(g["rmse"]) & (g["n"] > 0)]
+            if g.empty:
+                continue
+            pow2 = np.abs(np.log2(g["n"]) - np.round(np.log2(g["n"]))) < 1e-9
+            try:
+                slope = fits.fit_loglog_slope(g["n"], g["rmse"], fit_min, fit_max, True)[0]
+                label = f"{sampler} ({slope:+.2f})"
+            except ValueError:
+                label = f"{sampler} (no fit)"
+            c = figures.colour(i)
+            ax.plot(g["n"][pow2], g["rmse"][pow2], "-o", ms=3, color=c, label=label, lw=1)
+            ax.plot(g["n"][~pow2], g["rmse"][~pow2], "x", ms=5, color=c)
+        ax.set_xscale("log", base=2)
+        ax.set_yscale("log")
+        ax.set_xlabel("N (points per estimate)")
+        ax.set_ylabel("RMSE of the estimate")
+        ax.set_title(integrand)
+        ax.grid(True, which="major", alpha=0.3)
+        ax.legend(fontsize=6, ncol=2, title="sampler (fitted slope)", title_fontsize=6)
+    fig.suptitle(f"Convergence on analytic integrands (slopes: least squares on log-log, powers of two, "
+                 f"{fit_min:g} <= N <= {fit_max:g}; x: non-powers of two)")
+    return figures.save_figure(fig, out_dir, "convergence")
+
+
+def main(argv=None, prog=None):
+    ap = argparse.ArgumentParser(prog=prog, description="RMSE against N chart with fitted slopes")
+    ap.add_argument("csv")
+    ap.add_argument("--out", required=True)
+    ap.add_argument("--fit-min", type=float, default=16)
+    ap.add_argument("--fit-max", type=float, default=4096)
+    args = ap.parse_args(argv)
+    try:
+        df = read(args.csv)
+    except errors.InputError as e:
+        errors.fail(str(e))
+    errors.prepare_out(args.out)
+    chart(df, args.out, args.fit_min, args.fit_max)
+    return 0

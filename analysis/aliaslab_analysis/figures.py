@@ -1,0 +1,37 @@
+"""Matplotlib set up once (the Agg backend, no display needed), the series colours, file-name-safe names
+and the saving of a figure as PNG and SVG. Import plt from here, never matplotlib.pyplot directly (the
+backend must be chosen before pyplot is imported).
+"""
+import os
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+# Distinct colours for up to 14 series (tab10, then four more).
+PALETTE = [plt.cm.tab10(i) for i in range(10)] + ["black", "gold", "navy", "lime"]
+
+
+def colour(i):
+    """The i-th series colour."""
+    return PALETTE[i % len(PALETTE)]
+
+
+def slug(text):
+    """A file-name-safe version of a scene or method name."""
+    base = os.path.splitext(os.path.basename(str(text)))[0]
+    return re.sub(r"[^A-Za-z0-9_.-]+", "_", base) or "unnamed"
+
+
+def save_figure(fig, out_dir, name):
+    """Writes name.png and name.svg into out_dir; returns the two paths."""
+    os.makedirs(out_dir, exist_ok=True)
+    paths = []
+    for ext in ("png", "svg"):
+        path = os.path.join(out_dir, f"{name}.{ext}")
+        fig.savefig(path, dpi=120, bbox_inches="tight")
+        paths.append(path)
+    plt.close(fig)
+    return paths

@@ -1,0 +1,52 @@
+"""The `report` command (options in report/__init__.py's doc)."""
+import argparse
+import os
+import sys
+
+from .. import errors
+from .page import build_report
+from .tables import tables
+
+
+def default_study(results):
+    for p in (os.path.join(results, "study", "study.csv"), os.path.join(results, "study.csv")):
+        if os.path.isfile(p):
+            return p
+    return None
+
+
+def main(argv=None, prog=None):
+    ap = argparse.ArgumentParser(prog=prog, description="The HTML report of an aliaslab study (findings first); "
+                                 "definitions in docs/science.md")
+    ap.add_argument("results", help="folder the report is written into (index.html, engineering.html)")
+    ap.add_argument("--study", help="study CSV (default RESULTS/study/study.csv, else RESULTS/study.csv)")
+    ap.add_argument("--charts", help="folder of the charts, drawn there from the study (default RESULTS/charts)")
+    ap.add_argument("--images", help="folder of the sweep's images (default: the study CSV's folder/images)")
+    ap.add_argument("--label", help="how the page names the study (default: the reference study for "
+                    "results/study/study.csv, else the CSV's path)")
+    ap.add_argument("--link", action="store_true", help="refer to images by relative path instead of embedding")
+    ap.add_argument("--embed", action="store_true", help="embed images (the default; kept for old scripts)")
+    ap.add_argument("--reuse-charts", action="store_true", help="do not redraw the charts already in --charts")
+    ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
+    args = ap.parse_args(argv)
+    if not os.path.isdir(args.results):
+        errors.fail(f"{args.results}: not a folder")
+    if args.link and args.embed:
+        errors.fail("--link and --embed: choose one")
+    study = args.study or default_study(args.results)
+    if args.study is not None and not os.path.isfile(args.study):
+        errors.fail(f"--study: {args.study}: no such file")
+    try:
+        if args.tables:
+            if study is None:
+                print(f"note: no study CSV in {args.results}: only the convergence table", file=sys.stderr)
+            tables(args.results, study)
+            return 0
+        if study is None:
+            errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
+        path = build_report(args.results, study, args.charts, args.images, args.label, embed=not args.link,
+                            draw=not args.reuse_charts)
+    except errors.InputError as e:
+        errors.fail(str(e))
+    print(f"wrote {path}")
+    return 0

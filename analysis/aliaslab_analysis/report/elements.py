@@ -1,0 +1,71 @@
+"""The HTML building blocks of the report's pages: the style sheet, figures (images embedded as data URIs,
+charts palette-reduced, or linked by relative path) and the writing of a whole page."""
+import base64
+import html
+import io
+import os
+
+from .. import errors
+
+CSS = """body{font-family:sans-serif;margin:0 auto;max-width:1250px;padding:1em 1.5em;background:#fafafa;
+color:#222;line-height:1.45}h1{font-size:1.55em;margin-bottom:.2em}h2{border-bottom:1px solid #ccc;margin-top:2em}
+h3{margin-top:1.6em}.facts{color:#555;font-size:.9em}.answer{background:#fff;border-left:4px solid #2a6;
+padding:.6em 1em;margin:1em 0}.note{background:#fff8e0;border-left:4px solid #e0a800;padding:.4em 1em;
+font-size:.9em}figure{margin:.8em 0;background:#fff;border:1px solid #ddd;padding:6px;display:inline-block;
+max-width:100%;box-sizing:border-box;vertical-align:top}figure img{max-width:100%;height:auto}
+figcaption{font-size:.85em;color:#444;max-width:60em}table{border-collapse:collapse;font-size:.82em;margin:.5em 0}
+td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}td:first-child{text-align:left}
+.pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}
+.pair{display:flex;flex-wrap:wrap;gap:8px;align-items:flex-start}.pair figure{margin:0}
+.pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
+details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
+
+
+def chart_png_bytes(path):
+    """A chart's PNG with a 256-colour palette (no dithering): about a third of the bytes, and a chart has
+    far fewer colours than that. Renders are never passed here (their pixels are data). Falls back to the
+    file's bytes where Pillow (a dependency of Debian's matplotlib) is missing."""
+    try:
+        from PIL import Image
+    except ImportError:
+        with open(path, "rb") as f:
+            return f.read()
+    out = io.BytesIO()
+    with Image.open(path) as im:
+        im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)
+    return out.getvalue()
+
+
+def image_src(page_dir, path, embed):
+    if embed:
+        if os.path.basename(os.path.dirname(path)) == "charts":
+            data = chart_png_bytes(path)
+        else:
+            with open(path, "rb") as f:
+                data = f.read()
+        return "data:image/png;base64," + base64.b64encode(data).decode("ascii")
+    return html.escape(os.path.relpath(path, page_dir).replace(os.sep, "/"))
+
+
+def figure(page_dir, path, caption, embed, cls=""):
+    """<figure> of an existing PNG (or '' when the file is missing)."""
+    if not os.path.isfile(path):
+        return ""
+    return (f"<figure class='{cls}'><img src='{image_src(page_dir, path, embed)}' alt='{html.escape(caption)}'>"
+            f"<figcaption>{caption}</figcaption></figure>")
+
+
+def write_page(path, title, body):
+    page = ("<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>"
+            f"<meta name='viewport' content='width=device-width'><title>{html.escape(title)}</title>"
+            f"<style>{CSS}</style></head><body>{body}</body></html>\n")
+    tmp = path + ".partial"
+    try:
+        with open(tmp, "w", encoding="utf-8") as f:
+            f.write(page)
+        os.replace(tmp, path)
+    except OSError as e:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        errors.fail(f"{os.path.dirname(path) or '.'}: cannot write {os.path.basename(path)}: {e.strerror or e}")
+    return path

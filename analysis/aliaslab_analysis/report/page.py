@@ -1,0 +1,125 @@
+"""The assembly of the report: index.html (findings first, then the scenes, stability and the samplers
+and filters in isolation) and engineering.html (the benchmark and fuzzing records)."""
+import html
+import os
+import re
+
+import numpy as np
+
+from .. import charts, errors, figures, spectra, study_csv
+from .elements import figure, write_page
+from .findings import findings
+from .markdown import markdown_blocks, markdown_tables
+from .scene import scene_section
+from .summary_chart import summary_chart
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+REFERENCE_STUDY = os.path.join(REPO, "results", "study", "study.csv")
+SCIENCE = os.path.join(REPO, "docs", "science.md")
+
+
+def study_label(study, label):
+    if label:
+        return label
+    if os.path.realpath(study) == os.path.realpath(REFERENCE_STUDY):
+        return "the reference study (results/study/study.csv)"
+    return f"the study {shown_path(study)}"
+
+
+def shown_path(path):
+    """path relative to the repository when inside it, else absolute."""
+    full = os.path.realpath(path)
+    rel = os.path.relpath(full, os.path.realpath(REPO))
+    return full if rel.startswith("..") else rel
+
+
+ENGINEERING = re.compile(r"(_speed|^fuzzing)\.md$")
+
+
+def engineering_page(results, science_href):
+    files = sorted(f for f in os.listdir(results) if ENGINEERING.search(f))
+    if not files:
+        return None
+    body = ["<h1>aliaslab: engineering records</h1>",
+            "<p><a href='index.html'>Back to the report</a>. Measured benchmarks and fuzzing counts, as recorded "
+            f"in the results folder (definitions: <a href='{science_href}'>docs/science.md</a>).</p>"]
+    for f in files:
+        with open(os.path.join(results, f), encoding="utf-8", errors="replace") as fh:
+            body.append(f"<h2>{html.escape(f)}</h2>" + "\n".join(b for _, b in markdown_blocks(fh.read())))
+    return write_page(os.path.join(results, "engineering.html"), "aliaslab engineering records", "\n".join(body))
+
+
+def isolation_section(results, embed):
+    """Samplers and filters on their own (convergence on integrands, point sets, filter profiles)."""
+    parts = []
+    for rel, caption in (("convergence/convergence.png", "RMSE against N on analytic integrands, fitted slopes."),
+                         ("pointsets/discrepancy.png", "Point sets: discrepancy and minimum distance."),
+                         ("pointsets/spectra.png", "Point sets: radial power spectra."),
+                         ("filters/filter_profiles.png", "Filter profiles and frequency responses.")):
+        parts.append(figure(results, os.path.join(results, rel), caption, embed))
+    slopes = os.path.join(results, "convergence", "slopes.md")
+    if os.path.isfile(slopes):
+        with open(slopes, encoding="utf-8") as f:
+            table = markdown_tables(f.read())
+        if table:
+            parts.append(f"<details><summary>Convergence slopes against theory</summary>{table}</details>")
+    parts = [p for p in parts if p]
+    return ("<h2 id='isolation'>Samplers and filters in isolation</h2>" + "\n".join(parts)) if parts else ""
+
+
+def build_report(results, study, charts_dir=None, images=None, label=None, embed=True, draw=True):
+    """Writes RESULTS/index.html (and engineering.html); returns the index path. Raises errors.InputError."""
+    df, notes = study_csv.load_study(study)
+    spec = spectra.load(study)
+    charts_dir = charts_dir or os.path.join(results, "charts")
+    images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
+    if draw:
+        charts.draw_all(df, charts_dir)
+    errors.prepare_out(charts_dir, "--charts")
+    summary_png, _ = summary_chart(df, charts_dir)
+    name = study_label(study, label)
+    targets = sorted(df["target"].astype(str).unique())
+    target = ", ".join(study_csv.describe_target(t) for t in targets)
+    science = html.escape(os.path.relpath(SCIENCE, results).replace(os.sep, "/"))
+    scenes = sorted(df["scene"].unique())
+    levels = sorted(int(s) for s in df["spp"].unique())
+    facts = (f"{len(scenes)} scene(s); samplers {', '.join(sorted(df['sampler'].unique()))}; filters "
+             f"{', '.join(sorted(df['filter_name'].unique()))}; radii "
+             f"{', '.join(f'{r:g}' for r in sorted(df['radius'].unique()))}; spp {', '.join(map(str, levels))}; "
+             f"seeds {', '.join(str(int(k)) for k in sorted(df['seeds'].unique()))}; target {target}. "
+             f"Read from <code>{html.escape(shown_path(study))}</code>.")
+    body = [f"<h1>aliaslab report: {html.escape(name)}</h1>", f"<p class='facts'>{facts}</p>",
+            "<nav><a href='#findings'>Findings</a><a href='#scenes'>Scenes</a><a href='#stability'>Stability</a>"
+            + ("<a href='#isolation'>Samplers and filters</a>" if os.path.isdir(os.path.join(results, "pointsets"))
+               else "") + f"<a href='{science}'>Definitions (docs/science.md)</a></nav>",
+            "<h2 id='findings'>Findings</h2>",
+            "<p><b>Question.</b> Which sampler, filter and radius give the lowest error against the common target "
+            f"(<code>{html.escape(target)}</code>) for the time they take? The error of a configuration is its mean "
+            "squared difference from the target over seeds, pixels and channels; it splits into noise (changes "
+            "with the seed), aliasing (structured error that stays), blur (the filter's own reference against "
+            f"the target) and a cross term. Definitions: <a href='{science}'>docs/science.md</a>.</p>",
+            "<div class='answer'><b>Answer for this study.</b>" + "".join(findings(df, notes, target)) + "</div>"]
+    if notes:
+        body.append("<div class='note'><b>About this CSV.</b> " + " ".join(html.escape(n) for n in notes) + "</div>")
+    body.append(figure(results, summary_png, "Every method at every spp level: its error relative to each scene's "
+                       "lowest error at any spp level (geometric mean over scenes) against its time; the Pareto "
+                       "front is numbered and listed.", embed))
+    body.append("<h2 id='scenes'>Per scene</h2><p>" + " ".join(
+        f"<a href='#scene-{html.escape(figures.slug(s))}'>{html.escape(s)}</a>" for s in scenes) + "</p>")
+    for scene in scenes:
+        body.append(scene_section(results, scene, df[df["scene"] == scene], charts_dir, images, embed,
+                                  spec))
+    body.append("<h2 id='stability'>Stability</h2>")
+    counts = {c: int(np.nansum(df[c].to_numpy(dtype=float))) for c in
+              ("undefined_pixels", "negative_pixels", "nan_pixels")}
+    body.append(f"<p>Over all rows: {counts['undefined_pixels']} undefined, {counts['negative_pixels']} negative "
+                f"and {counts['nan_pixels']} NaN/Inf pixels; {int((df['flagged'] == 1).sum())} flagged row(s) "
+                "(listed in charts/flagged.csv).</p>")
+    body.append(figure(results, os.path.join(charts_dir, "stability.png"), "Pixel failure counts per method and "
+                       "sampler, summed over scenes and spp; empty panels: no such pixel.", embed))
+    body.append(isolation_section(results, embed))
+    eng = engineering_page(results, science)
+    if eng:
+        body.append("<h2>Engineering</h2><p>Benchmarks and fuzzing records are on their own page: "
+                    "<a href='engineering.html'>engineering.html</a>.</p>")
+    return write_page(os.path.join(results, "index.html"), f"aliaslab report: {name}", "\n".join(body))

@@ -1,0 +1,171 @@
+"""One scene's section of the report: its table of the lowest errors, its charts, the contact sheet, the
+images of the best and the worst method, and where the error sits on screen (error spectra, issue 22)."""
+import html
+import os
+
+import numpy as np
+
+from .. import figures, spectra
+from ..charts.decomposition import components
+from .elements import figure
+from .findings import method_name
+
+
+def method_image(images, scene, r):
+    """Paths (image, error image) of a row's seed-0 reconstruction, or None when the sweep wrote none."""
+    folder = os.path.join(images, figures.slug(scene))
+    stem = f"{r['sampler']}-spp{int(r['spp'])}-{r['filter_name']}-r{r['radius']:g}-{r['reconstruction']}"
+    candidates = [stem]
+    if r["prefilter"] not in ("none", ""):
+        candidates = [f"{stem}-{r['prefilter']}", f"{stem}-prefilter-{r['prefilter']}"]
+    for c in candidates:
+        p = os.path.join(folder, c + ".png")
+        if os.path.isfile(p):
+            return p, os.path.join(folder, c + "-error.png")
+    return None
+
+
+def scene_table(sd):
+    """HTML table of the scene's three lowest errors at each spp level, with their terms."""
+    terms = components(sd)
+    extra = [(c, l) for c, l in (("blurred_mse", "blurred mse"), ("flip", "FLIP"),
+                                 ("lowfreq_error", "low-frequency share &plusmn; se"),
+                                 ("mean_spp", "mean spp spent")) if c in sd.columns]
+    ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
+    rows = []
+    for spp, g in ok.groupby("spp", sort=True):
+        for _, r in g.nsmallest(3, "error").iterrows():
+            se = r["error_se"]
+            err = f"{r['error']:.3g}" + (f" &plusmn; {se:.1g}" if np.isfinite(se) else "")
+            cells = [html.escape(method_name(r)), str(int(spp)), err]
+            for c, _ in terms:
+                v = f"{r[c]:.2g}"
+                if c == "aliasing" and r["aliasing_zero"]:
+                    v += " (0 within error)"
+                cells.append(v)
+            for c, _ in extra:
+                v = f"{r[c]:.3g}"
+                se = r.get(c + "_se", np.nan)
+                if c == "lowfreq_error" and np.isfinite(se):
+                    v += f" &plusmn; {se:.1g}"
+                cells.append(v)
+            cells.append(f"{r['time_ms']:.3g}")
+            rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
+    head = (["method", "spp", "error &plusmn; se"] + [html.escape(l) for _, l in terms]
+            + [l for _, l in extra] + ["time (ms)"])
+    return ("<table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(rows) + "</table>")
+
+
+def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
+    """Issue 22: where the error sits on screen. An overview chart of every sampler's error spectrum at one
+    spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
+    spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
+    head = "<h4>Where the error sits on screen</h4>"
+    if spec is None or not (spec["scene"] == str(scene)).any():
+        return (head + "<p class='note'>No error spectra for this scene (the study CSV has no "
+                "<code>spectra/</code> files beside it: written by sweeps since issue 22).</p>")
+    spec = spec[spec["scene"] == str(scene)]
+    levels = sorted(int(x) for x in spec["spp"].unique())
+    parts = [head, f"<p>Radially averaged power spectra of the per-seed error images (I<sub>k</sub> &minus; G), "
+             f"frequency in cycles per pixel; the dotted line is a quarter of Nyquist "
+             f"({spectra.CUTOFF:g} cycles/pixel), below which <code>lowfreq_error</code> counts the error's "
+             "energy. White error is flat; error moved to high frequencies (what the correlated samplers aim "
+             "for) rises to the right. "
+             "Definitions: docs/spectrum.md.</p>"]
+    spp0 = spectra.pick_spp(levels, 16)
+    overview = spectra.chart(spec, scene, spp0, spectra.chart_path(charts_dir, scene, spp0))
+    if overview:
+        parts.append(figure(page_dir, overview, f"Error spectra of every sampler at {spp0} spp.", embed))
+    ind, corr = spectra.pick_samplers(spec["sampler"].unique())
+    if ind is None or not corr:
+        parts.append("<p class='note'>Side-by-side comparison omitted: the study needs an independent and a "
+                     "correlated sampler (<code>zsobol</code> or <code>bluenoise-dither:BASE</code>).</p>")
+        return "\n".join(p for p in parts if p)
+    pair = [ind, corr[0]]
+    has_flip = "flip" in sd.columns and np.isfinite(sd["flip"].to_numpy(dtype=float)).any()
+    has_blur = "blurred_mse" in sd.columns
+    if not has_flip:
+        parts.append("<p class='note'>FLIP is not shown: this study CSV has no <code>flip</code> column.</p>")
+    shown = [s for s in (4, 16) if s in levels] or levels[:2]
+    filt, radius, recon = spectra.common_method(spec)
+    for spp in shown:
+        rows = sd[(sd["spp"] == spp) & (sd["filter_name"] == filt) & (sd["radius"] == float(radius))
+                  & (sd["reconstruction"] == recon) & (sd["prefilter"].astype(str) == "none")]
+        cells, pics = [], []
+        for sampler in pair:
+            r = rows[rows["sampler"] == sampler]
+            if not len(r):
+                continue
+            r = r.iloc[0]
+            vals = [f"mse {r['mse']:.3g}" + (f" &plusmn; {r['mse_se']:.1g}" if "mse_se" in r and
+                                             np.isfinite(r["mse_se"]) else "")]
+            if has_blur:
+                vals.append(f"blurred mse {r['blurred_mse']:.3g}")
+            if "lowfreq_error" in r:
+                se = r.get("lowfreq_error_se", np.nan)
+                vals.append(f"low-frequency share {r['lowfreq_error']:.3g}"
+                            + (f" &plusmn; {se:.1g}" if np.isfinite(se) else ""))
+            if has_flip:
+                vals.append(f"FLIP {r['flip']:.3g}")
+            cells.append(f"<tr><td>{html.escape(sampler)}</td>" + "".join(f"<td>{v}</td>" for v in vals) + "</tr>")
+            found = method_image(images, scene, r)
+            if found:
+                pics.append(figure(page_dir, found[1], f"{html.escape(sampler)}, {spp} spp: signed error of "
+                                   "seed 0 (red too bright, blue too dark)", embed))
+        png = spectra.chart(spec, scene, spp, spectra.chart_path(charts_dir, scene, spp, "spectrum_pair"),
+                            samplers=pair, title=f"{scene}: {pair[0]} vs {pair[1]} at {spp} spp")
+        if png:
+            pics.append(figure(page_dir, png, f"Their error spectra at {spp} spp.", embed, cls="spec"))
+        pics = [p for p in pics if p]
+        parts.append(f"<h5>{spp} spp: {html.escape(pair[0])} (independent) vs {html.escape(pair[1])} "
+                     f"(correlated), {html.escape(filt)} r={float(radius):g}</h5>")
+        if cells:
+            parts.append("<table>" + "".join(cells) + "</table>")
+        if pics:
+            parts.append("<div class='pair'>" + "".join(pics) + "</div>")
+        else:
+            parts.append("<p class='note'>No images for these rows (run the sweep with <code>--images</code>).</p>")
+    return "\n".join(p for p in parts if p)
+
+
+def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None):
+    s = figures.slug(scene)
+    parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd)]
+    chart = lambda kind, caption: figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed)
+    parts.append(chart("decomposition", "Where the error comes from: noise, aliasing and blur stacked, the cross "
+                       "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors."))
+    parts.append(chart("radius", "The radius trade-off per filter: a wider filter lowers noise (dashed) and "
+                       "adds blur (dotted)."))
+    parts.append(chart("convergence", "Convergence with spp (slopes only over at least three spp levels)."))
+    parts.append(chart("speed_accuracy", "Error against the target vs time per image; the Pareto front is "
+                       "numbered and listed."))
+    heat = chart("heatmap", "Error over filter x radius, one row per spp level.")
+    if heat:
+        parts.append(f"<details><summary>Error over filter x radius (heatmap)</summary>{heat}</details>")
+    sheet = os.path.join(images, f"contact-{s}.png")
+    if os.path.isfile(sheet):
+        caption = "Contact sheet: zoomed crops of the hardest region."
+        txt = os.path.join(images, f"contact-{s}.txt")
+        if os.path.isfile(txt):
+            with open(txt, encoding="utf-8", errors="replace") as f:
+                caption = "Contact sheet: " + html.escape(f.readline().strip())
+        parts.append(figure(page_dir, sheet, caption, embed, cls="sheet"))
+    ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
+    if len(ok):
+        top = ok[ok["spp"] == ok["spp"].max()]
+        pics = []
+        target = os.path.join(images, s, "reference-area.png")
+        pics.append(figure(page_dir, target, "pixel-area reference" + (" (the target)" if set(
+            sd["target"].astype(str)) <= {"box:0.5", "area"} else ""), embed))
+        for what, r in (("best", top.loc[top["error"].idxmin()]), ("worst", top.loc[top["error"].idxmax()])):
+            found = method_image(images, scene, r)
+            if found:
+                label = f"{what}: {html.escape(method_name(r))}, {int(r['spp'])} spp, error {r['error']:.2g}"
+                pics.append(figure(page_dir, found[0], label, embed))
+                pics.append(figure(page_dir, found[1], f"{what}: signed error (red too bright, blue too dark)",
+                                   embed))
+        pics = [p for p in pics if p]
+        if len(pics) > 1:
+            parts.append("<div class='pix'>" + "".join(pics) + "</div>")
+    parts.append(spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
+    return "\n".join(p for p in parts if p)

@@ -1,0 +1,59 @@
+"""The analysis is a package (issue 28 item 7): one entry point, no sys.path edits, a concept a module.
+
+`python3 -m analysis COMMAND` runs from the repository root, the two scripts the C++ experiments run
+by path (convergence_chart.py, pointset_chart.py) run from any folder, and no file edits the import
+path."""
+import glob
+import os
+import re
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from ..aliaslab_analysis import cli
+
+ANALYSIS = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REPO = os.path.dirname(ANALYSIS)
+SOURCES = sorted(glob.glob(os.path.join(ANALYSIS, "**", "*.py"), recursive=True))
+
+
+def python(args, cwd):
+    env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
+    env.pop("PYTHONPATH", None)
+    return subprocess.run([sys.executable] + args, cwd=cwd, env=env, capture_output=True, text=True)
+
+
+class Package(unittest.TestCase):
+    def test_no_file_edits_the_import_path(self):
+        edit = re.compile(r"sys\.path\.(insert|append|extend)|sys\.path\s*[+]?=|site\.addsitedir")
+        for path in SOURCES:
+            with open(path, encoding="utf-8") as f:
+                self.assertIsNone(edit.search(f.read()), path)
+
+    def test_modules_stay_short(self):
+        for path in SOURCES:
+            with open(path, encoding="utf-8") as f:
+                self.assertLessEqual(len(f.readlines()), 300, path)
+
+    def test_one_entry_point_lists_every_command(self):
+        r = python(["-m", "analysis", "-h"], REPO)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        for command in cli.COMMANDS:
+            self.assertIn(f"  {command} ", r.stdout)
+            r2 = python(["-m", "analysis", command, "-h"], REPO)
+            self.assertEqual(r2.returncode, 0, r2.stderr)
+            self.assertIn(f"usage: python3 -m analysis {command}", r2.stdout)
+        self.assertEqual(python(["-m", "analysis", "nosuch"], REPO).returncode, 2)
+        self.assertEqual(python(["-m", "analysis"], REPO).returncode, 2)
+
+    def test_the_scripts_the_experiments_run_work_from_any_folder(self):
+        with tempfile.TemporaryDirectory() as elsewhere:
+            for script in ("convergence_chart.py", "pointset_chart.py"):
+                r = python([os.path.join(ANALYSIS, script), "-h"], elsewhere)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertIn("--out", r.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main()
