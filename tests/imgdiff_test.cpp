@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "study/flip.h"
+#include "measure/flip.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;

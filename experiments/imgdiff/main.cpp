@@ -20,7 +20,7 @@
 #include "core/format.h"
 #include "core/image.h"
 #include "film/visualize.h"
-#include "study/flip.h"
+#include "measure/flip.h"
 
 using namespace aliaslab;
 
