@@ -1,5 +1,5 @@
 // imgdiff's numbers against numpy on constructed images, and LDR-FLIP
-// (lib/study/flip.h) against properties from Andersson et al. 2020.
+// (lib/measure/flip.h) against properties from Andersson et al. 2020.
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
