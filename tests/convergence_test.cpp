@@ -6,7 +6,7 @@
 
 #include "core/hash.h"
 #include "sampling/sampler.h"
-#include "study/convergence.h"
+#include "measure/convergence.h"
 
 namespace aliaslab {
 namespace {

@@ -1,5 +1,5 @@
 // imgdiff's numbers against numpy on constructed images, and LDR-FLIP
-// (lib/study/flip.h) against properties from Andersson et al. 2020.
+// (lib/measure/flip.h) against properties from Andersson et al. 2020.
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "study/flip.h"
+#include "measure/flip.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/hash.h"
-#include "study/metrics.h"
+#include "measure/metrics.h"
 
 using namespace aliaslab;
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/hash.h"
-#include "study/pointset.h"
+#include "measure/pointset.h"
 
 namespace aliaslab {
 namespace {

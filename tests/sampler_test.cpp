@@ -530,7 +530,7 @@ TEST(SamplerCorrelation, DitherShiftsAreTheMaskRanks) {
 }
 
 /// Fraction of the power of a kMaskSize^2 mask (mean removed) at radial frequency below 1/8 cycle per
-/// pixel (a quarter of Nyquist), by a direct 2-D DFT (an independent computation, not lib/study).
+/// pixel (a quarter of Nyquist), by a direct 2-D DFT (an independent computation, not lib/measure).
 double maskLowFrequencyFraction(const std::vector<double>& v) {
   const int n = sampling::kMaskSize;
   double mean = 0;

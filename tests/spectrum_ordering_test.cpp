@@ -25,7 +25,7 @@
 #include "aliaslab_paths.h"
 #include "scratch_dir.h"
 #include "study/csv.h"
-#include "study/spectrum.h"
+#include "measure/spectrum.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;

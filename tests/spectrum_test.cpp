@@ -1,4 +1,4 @@
-// The error spectrum measure (study/spectrum.h) against mathematics: white
+// The error spectrum measure (measure/spectrum.h) against mathematics: white
 // noise is flat, a sinusoid puts its power at its frequency, Parseval, and
 // the accumulator's totals equal the independently computed mse and noise.
 #include <gtest/gtest.h>
@@ -9,8 +9,9 @@
 #include <sstream>
 
 #include "core/hash.h"
-#include "study/metrics.h"
-#include "study/spectrum.h"
+#include "measure/metrics.h"
+#include "measure/spectrum.h"
+#include "study/spectrum_files.h"
 
 using namespace aliaslab;
 

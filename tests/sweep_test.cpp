@@ -24,7 +24,7 @@
 #include "study/reference.h"
 #include "study/config.h"
 #include "study/csv.h"
-#include "study/metrics.h"
+#include "measure/metrics.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;

@@ -6,7 +6,7 @@
 //   psnr_db        10 log10(1 / mse) (peak 1; inf for identical images)
 //   bias, spread   the difference D = A - B split as mse = bias^2 + spread^2:
 //                  bias = mean D, spread = its standard deviation (population)
-//   flip           mean LDR-FLIP (lib/study/flip.h), 67 pixels per degree
+//   flip           mean LDR-FLIP (lib/measure/flip.h), 67 pixels per degree
 //   max_abs        largest |D|
 // With --output, a false-colour picture of the channel-mean difference
 // (red A brighter, blue darker, saturated at --scale, default max |D|)
@@ -20,7 +20,7 @@
 #include "core/format.h"
 #include "core/image.h"
 #include "film/visualize.h"
-#include "study/flip.h"
+#include "measure/flip.h"
 
 using namespace aliaslab;
 

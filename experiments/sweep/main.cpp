@@ -25,7 +25,7 @@
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/lock.h"
-#include "study/spectrum.h"
+#include "study/spectrum_files.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;

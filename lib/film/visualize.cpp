@@ -179,24 +179,6 @@ Image renderFilter(const Filter& filter, int width, int height, int zoom) {
   return img;
 }
 
-Image plotSamplerPoints(const Sampler& sampler, int blocksX, int blocksY, int zoom) {
-  Image img(blocksX * zoom + 1, blocksY * zoom + 1, Color::Constant(0.05f));
-  for (int y = 0; y < img.height(); ++y)
-    for (int x = 0; x < img.width(); ++x)
-      if (x % zoom == 0 || y % zoom == 0) img.set(x, y, Color::Constant(0.3f));
-  std::vector<Vec2> pts(sampler.spp());
-  for (int py = 0; py < blocksY; ++py)
-    for (int px = 0; px < blocksX; ++px) {
-      sampler.generate(px, py, pts.data());
-      for (const Vec2& p : pts) {
-        const int x = std::clamp(int(std::floor((px + p.x()) * zoom)), 0, img.width() - 1);
-        const int y = std::clamp(int(std::floor((py + p.y()) * zoom)), 0, img.height() - 1);
-        img.set(x, y, Color::Ones());
-      }
-    }
-  return img;
-}
-
 Image plotFilter(const Filter& filter, int size) {
   const int panel = size / 2;
   Image img(size, size + panel, Color::Zero());

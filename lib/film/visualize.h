@@ -6,7 +6,6 @@
 #include "core/image.h"
 #include "film/film.h"
 #include "filter/filter.h"
-#include "sampling/sampler.h"
 
 namespace aliaslab {
 
@@ -68,10 +67,6 @@ inline constexpr int kColorBarHeight = 34, kColorBarMinWidth = 200;
 /// (counted from the top of the picture) and its left at column x, at
 /// `size` pixels. False when no font is found.
 bool drawText(Image& img, int x, int yTop, const std::string& text, int size = 11);
-
-/// A sampler's points over blocksX x blocksY pixels: white dots on a dark
-/// background with grey pixel grid lines; (blocksX*zoom+1) x (blocksY*zoom+1).
-Image plotSamplerPoints(const Sampler& sampler, int blocksX, int blocksY, int zoom);
 
 /// The 2-D kernel over [-r, r]^2 as a diverging false colour (positive red,
 /// negative blue, scaled by max |f|) in a size x size square, above a

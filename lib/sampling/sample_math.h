@@ -1,8 +1,9 @@
 // Integer building blocks shared by the samplers: conversion of 32-bit
 // fixed-point coordinates to floats in [0,1), Kensler's hashed permutation
-// and float (Correlated Multi-Jittered Sampling, 2013), bit reversal, and
-// the hash-based Owen scramble (Laine-Karras 2011, Burley 2020, with
-// Vegdahl's improved constants). Internal to lib/sampling.
+// and float (Correlated Multi-Jittered Sampling, 2013), bit reversal, the
+// second Sobol' dimension (sobol, zsobol), and the hash behind the Owen
+// scramble (Laine-Karras 2011, Burley 2020, with Vegdahl's improved
+// constants). Internal to lib/sampling.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,14 @@ constexpr uint32_t reverseBits(uint32_t v) {
   return (v >> 16) | (v << 16);
 }
 
+/// Second Sobol' dimension of index i as 32-bit fixed point.
+constexpr uint32_t sobolDim1(uint32_t i) {
+  uint32_t r = 0;
+  for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
+    if (i & 1) r ^= v;
+  return r;
+}
+
 /// Laine-Karras style hash in which output bit k depends only on input bits
 /// 0..k: applied to bit-reversed values it is a nested uniform (Owen) scramble.
 constexpr uint32_t laineKarrasPermute(uint32_t x, uint32_t seed) {
@@ -115,12 +124,6 @@ constexpr uint32_t laineKarrasPermute(uint32_t x, uint32_t seed) {
   x ^= x * 0x05526c56u;
   x ^= x * 0x53a22864u;
   return x;
-}
-
-/// Owen scramble of a 32-bit fixed-point coordinate: every digit is flipped
-/// by a hash of the digits above it (seed selects the scramble).
-constexpr uint32_t owenScramble(uint32_t x, uint32_t seed) {
-  return reverseBits(laineKarrasPermute(reverseBits(x), seed));
 }
 
 }  // namespace aliaslab::sampling

@@ -27,14 +27,6 @@
 namespace aliaslab::sampling {
 namespace {
 
-/// Second Sobol' dimension of index i as 32-bit fixed point.
-constexpr uint32_t sobolDim1(uint32_t i) {
-  uint32_t r = 0;
-  for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
-    if (i & 1) r ^= v;
-  return r;
-}
-
 class SobolSampler final : public Sampler {
  public:
   SobolSampler(int spp, uint64_t seed) : Sampler(spp, seed), dim1Reversed_(spp) {

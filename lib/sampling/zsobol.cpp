@@ -44,14 +44,6 @@
 namespace aliaslab::sampling {
 namespace {
 
-/// Second Sobol' dimension of index i as 32-bit fixed point.
-constexpr uint32_t sobolDim1(uint32_t i) {
-  uint32_t r = 0;
-  for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
-    if (i & 1) r ^= v;
-  return r;
-}
-
 /// sobolDim1 is linear over GF(2) in the bits of i: kDim1Bytes[b][v] = sobolDim1(v << 8b), XORed byte by byte.
 constexpr std::array<std::array<uint32_t, 256>, 4> kDim1Bytes = [] {
   std::array<std::array<uint32_t, 256>, 4> t{};

@@ -6,12 +6,12 @@
 //   seeds,mse,aliasing,noise,mse_area,psnr,ref_spp,ref_error,flagged,
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
 //   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
-//   lowfreq_error,lowfreq_error_se,blurred_mse (study/spectrum.h),
+//   lowfreq_error,lowfreq_error_se,blurred_mse (measure/spectrum.h),
 //   mean_spp,max_spp,prefilter,flip
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
 // fixed sampler and differ for adaptive ones, render/adaptive.h.
-// flip: mean LDR-FLIP of the K images against the target, study/flip.h.)
+// flip: mean LDR-FLIP of the K images against the target, measure/flip.h.)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -51,7 +51,7 @@ struct CsvRow {
   std::string target;  ///< the study's target T as "filter:radius" (default "box:0.5", the pixel area)
   double mseTarget = 0, blur = 0, cross = 0;
   double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;
-  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< study/spectrum.h
+  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< measure/spectrum.h
   double meanSpp = 0;  ///< mean samples per pixel actually spent (over pixels and seeds)
   int maxSpp = 0;      ///< most samples in one pixel (over seeds)
   std::string prefilter = "none";  ///< none | footprint (texture pre-filtering, docs/prefiltering.md)

@@ -15,11 +15,11 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/format.h"
+#include "core/progress.h"
 #include "filter/filter.h"
+#include "measure/metrics.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
-#include "study/metrics.h"
-#include "study/progress.h"
 
 namespace aliaslab {
 

@@ -1,7 +1,5 @@
 #include "study/sweep.h"
 
-#include "study/flip.h"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,21 +13,23 @@
 #include <set>
 #include <atomic>
 
+#include "core/files.h"
 #include "core/format.h"
 #include "core/huge_pages.h"
-#include "core/files.h"
 #include "core/parallel.h"
+#include "core/progress.h"
 #include "filter/filter.h"
+#include "measure/flip.h"
+#include "measure/metrics.h"
+#include "measure/spectrum.h"
 #include "render/adaptive.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/lock.h"
-#include "study/metrics.h"
-#include "study/progress.h"
 #include "study/reference.h"
-#include "study/spectrum.h"
+#include "study/spectrum_files.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {

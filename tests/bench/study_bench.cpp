@@ -36,7 +36,7 @@
 #include "render/render.h"
 #include "sampling/sampler.h"
 #include "study/config.h"
-#include "study/metrics.h"
+#include "measure/metrics.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {

@@ -1,4 +1,4 @@
-#include "study/progress.h"
+#include "core/progress.h"
 
 #include <unistd.h>
 

@@ -37,10 +37,10 @@
 //                      exp(-4 pi^2 sigma^2 rho^2)
 // White noise has lowfreq_error = pi 0.125^2 = 0.049 (the disc's share of
 // the frequency square); error pushed to high frequencies has less.
+//
+// The study writes these spectra to per-scene CSV files: study/spectrum_files.h.
 #pragma once
 #include <complex>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "core/image.h"
@@ -94,26 +94,5 @@ class SpectrumAccumulator {
   double blurred_ = 0;
   int count_ = 0;
 };
-
-/// Appends the spectra of one configuration to a long-format CSV with the header
-///   scene,sampler,spp,filter,radius,reconstruction,prefilter,kind,bin,frequency,power,energy
-/// (kind = error or noise; one line per bin), creating it with the header when missing. One write per
-/// call; a torn last line from a killed run is cut first. Throws FileError.
-void appendSpectrumCsv(const std::string& path, const std::string& keyFields, const SpectrumMetrics& m);
-/// The same for several configurations (key fields, spectra) in one write (the sweep: one per group).
-void appendSpectrumCsv(const std::string& path,
-                       const std::vector<std::pair<std::string, const SpectrumMetrics*>>& configurations);
-/// Rewrites a spectrum CSV sorted by its key columns, keeping the last copy of a repeated
-/// (configuration, kind, bin) line (a configuration re-measured after an interruption).
-void canonicaliseSpectrumCsv(const std::string& path);
-/// The header of the spectrum CSV (no newline).
-const std::string& spectrumCsvHeader();
-/// Where the sweep writes a scene's spectra for the study CSV `studyCsv`: <its folder>/spectra/<scene>.csv,
-/// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one.
-std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene);
-/// The spectra of the shard CSVs `inputs` (each shard's spectrumCsvPath files) joined per scene into
-/// spectrumCsvPath(out, scene), in canonical order (sweep --merge). Inputs without spectra add nothing.
-/// Returns the files written.
-std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs);
 
 }  // namespace aliaslab

@@ -1,4 +1,4 @@
-#include "study/convergence.h"
+#include "measure/convergence.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -2,7 +2,7 @@
 // filters in the opponent space YCxCz, then the Hunt-adjusted HyAB
 // distance, compressed and remapped) and feature pipeline (edges and points
 // of the luminance), combined per pixel as colour^(1 - feature).
-#include "study/flip.h"
+#include "measure/flip.h"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,9 @@
 // row-major strip, which the sampler decorrelates by its pixel hash) and
 // returns the root mean square error of those estimates against the exact
 // value. fitLogLogSlope() turns (N, RMSE) pairs into a convergence rate by
-// least squares on log-log axes over a stated range of N.
+// least squares on log-log axes over a stated range of N. The experiment's
+// tables made of these (every sampler, the slopes against theory) are in
+// convergence_study.h.
 #pragma once
 #include <optional>
 #include <string>

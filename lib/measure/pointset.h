@@ -6,7 +6,8 @@
 // Protocol: every function takes the points of one set (e.g. one pixel's
 // Sampler::generate output) and is a pure function of them. Averages over
 // many independent sets are made by the caller: accumulate periodograms with
-// Periodogram::add, then read the mean with radialSpectrum.
+// Periodogram::add, then read the mean with radialSpectrum (pointset_study.h
+// does so for every sampler and count, and makes the experiment's tables).
 #pragma once
 #include <string>
 #include <vector>
@@ -49,7 +50,6 @@ class Periodogram {
 
   int half() const { return half_; }
   int size() const { return 2 * half_ + 1; }
-  int sets() const { return sets_; }
   /// Mean power at frequency (kx, ky), |kx|, |ky| <= half.
   double at(int kx, int ky) const { return sets_ ? sum_[index(kx, ky)] / sets_ : 0.0; }
 

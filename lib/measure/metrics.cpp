@@ -1,4 +1,4 @@
-#include "study/metrics.h"
+#include "measure/metrics.h"
 
 #include <cmath>
 #include <algorithm>

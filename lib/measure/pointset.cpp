@@ -1,4 +1,4 @@
-#include "study/pointset.h"
+#include "measure/pointset.h"
 
 #include <Eigen/Dense>
 #include <algorithm>
