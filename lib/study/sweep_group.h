@@ -9,7 +9,7 @@
 //   C  foldSeeds       one task per row: the window's images added to its metrics IN SEED ORDER
 // Every task writes only its own slot; slots are folded in (seed, row) order, so nothing depends on which thread
 // ran what or when it finished (tests/sweep_parallel_test.cpp runs the tasks in a shuffled order). Time goes into
-// the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep.h), as thread-seconds.
+// the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep_summary.h), as thread-seconds.
 #pragma once
 #include <functional>
 #include <vector>
@@ -17,9 +17,9 @@
 #include "render/tracer.h"
 #include "study/config.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
 #include "study/sweep_memory.h"
 #include "study/sweep_rows.h"
+#include "study/sweep_summary.h"
 
 namespace aliaslab {
 
