@@ -16,6 +16,7 @@
 
 #include "scratch_dir.h"
 #include "core/parallel.h"
+#include "core/stopwatch.h"
 #include "study/config.h"
 #include "study/csv.h"
 #include "study/reference.h"
@@ -144,6 +145,22 @@ TEST(SweepParallel, ShuffleHookReallyReordersItems) {  // so the test above can 
   std::sort(sorted.begin(), sorted.end());
   EXPECT_NE(order, sorted);
   for (int i = 0; i < 20; ++i) EXPECT_EQ(sorted[i], i);
+}
+
+// The one timing helper of the sweep's phases: every item runs once; work counts each task x its inner threads,
+// idle = wall x threads - work, never negative.
+TEST(SweepParallel, TimedParallelForRunsEveryItemAndAccountsWorkAndIdle) {
+  for (int inner : {1, 3}) {
+    std::vector<int> ran(7, 0);
+    const Stopwatch wall;
+    const PhaseTime t = timedParallelFor(7, 2, inner, [&](int i) { ++ran[i]; });
+    for (int r : ran) EXPECT_EQ(r, 1);
+    EXPECT_GE(t.work, 0.0);
+    EXPECT_GE(t.idle, 0.0);
+    EXPECT_LE(t.work + t.idle, std::max(wall.seconds() * 2, t.work) + 1e-9);
+  }
+  const PhaseTime none = timedParallelFor(0, 2, 1, [](int) { FAIL() << "no items"; });
+  EXPECT_EQ(none.work, 0.0);
 }
 
 TEST(SweepParallel, InFlightStateStaysWithinTheDocumentedBound) {

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "scratch_dir.h"
@@ -404,4 +405,51 @@ TEST(ReferenceManifest, ScenePathIsRelativeToTheRepository) {
   EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt"), "scenes/zoneplate.txt");
   EXPECT_EQ(manifestScenePath(std::string(ALIASLAB_SOURCE_DIR) + "/tests/../scenes/fence.txt"), "scenes/fence.txt");
   EXPECT_EQ(manifestScenePath("/elsewhere/mine.txt"), "/elsewhere/mine.txt");  // outside: as given
+}
+
+// Issue 28: objects built once. Every configuration of one (filter, radius) shares one Filter, made by
+// expandStudy; the target is parsed once with its CSV label; validation returns the plan with each scene's size
+// read from its render line.
+TEST(StudyPlan, EachFilterIsBuiltOnceAndSharedByItsConfigurations) {
+  StudyConfig c;
+  c.scenes = {kScene};
+  c.samplers = {"uniform", "jittered"};
+  c.spp = {4, 16};
+  c.filters = {"box", "gaussian"};
+  c.radii = {1.0, 2.0};
+  c.reconstruction = {"weighted", "classic", "supersample"};
+  std::map<FilterSpec, std::set<const Filter*>> made;
+  for (const SampleSetGroup& g : expandStudy(c))
+    for (const Configuration& cfg : g.configs) {
+      ASSERT_TRUE(cfg.filter.filter);
+      EXPECT_FLOAT_EQ(cfg.filter.filter->radius(), static_cast<float>(cfg.filter.spec.second));
+      made[cfg.filter.spec].insert(cfg.filter.filter.get());
+    }
+  EXPECT_EQ(made.size(), 5u);  // box 0.5 (classic box), box 1, box 2, gaussian 1, gaussian 2
+  for (const auto& [spec, filters] : made) EXPECT_EQ(filters.size(), 1u) << spec.first << " " << spec.second;
+}
+
+TEST(StudyPlan, TargetParsedOnceWithItsLabel) {
+  const Target area = parseTarget("area");
+  EXPECT_EQ(area.spec, (FilterSpec{"box", 0.5}));
+  EXPECT_EQ(area.label, "box:0.5");
+  const Target g = parseTarget("gaussian:1.5");
+  EXPECT_EQ(g.spec, (FilterSpec{"gaussian", 1.5}));
+  EXPECT_EQ(g.label, "gaussian:1.5");
+}
+
+TEST(StudyPlan, ValidationReadsSceneSizesFromTheRenderLine) {
+  StudyConfig c;
+  c.scenes = {kScene};
+  c.maxSize = 48;
+  c.out = (workDir() / "plan").string();
+  c.cache = (workDir() / "cache").string();
+  const StudyPlan plan = validateStudy(c);
+  const SceneSize s = plan.sceneSizes.at(kScene);
+  const auto scene = loadStudyScene(kScene, 0, 0, 48);  // the full load (BVH, tracer) agrees
+  EXPECT_EQ(s.width, scene->width);
+  EXPECT_EQ(s.height, scene->height);
+  EXPECT_EQ(s.width, 48);
+  EXPECT_EQ(plan.target.label, "box:0.5");
+  EXPECT_EQ(plan.groups.size(), expandStudy(c).size());
 }

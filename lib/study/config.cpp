@@ -17,8 +17,8 @@
 #include "render/adaptive.h"
 #include "sampling/sampler.h"
 #include "study/csv.h"
-#include "study/sweep.h"
 #include "study/study_scene.h"
+#include "study/sweep_memory.h"
 
 namespace aliaslab {
 
@@ -67,8 +67,8 @@ std::vector<std::string> expandSceneList(const std::vector<std::string>& scenes)
 }
 }  // namespace
 
-std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config) {
-  std::vector<std::pair<std::string, double>> out;
+std::vector<FilterSpec> studyFilters(const StudyConfig& config) {
+  std::vector<FilterSpec> out;
   for (const std::string& f : config.filters) {
     std::vector<double> radii = config.radii;
     if (f == "box" && config.classicBox && std::find(radii.begin(), radii.end(), 0.5) == radii.end())
@@ -78,9 +78,26 @@ std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& conf
   return out;
 }
 
+namespace {
+// Each (filter, radius) made once (makeFilter) and shared by every configuration that uses it.
+class FilterCache {
+ public:
+  StudyFilter get(const FilterSpec& spec) {
+    auto& f = built_[spec];
+    if (!f) f = makeFilter(spec.first, static_cast<float>(spec.second));
+    return {spec, f};
+  }
+
+ private:
+  std::map<FilterSpec, std::shared_ptr<const Filter>> built_;
+};
+}  // namespace
+
 std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes) {
   std::vector<SampleSetGroup> groups;
-  const auto filters = studyFilters(config);
+  FilterCache cache;
+  std::vector<StudyFilter> filters;
+  for (const FilterSpec& spec : studyFilters(config)) filters.push_back(cache.get(spec));
   std::set<std::string> noted;
   auto note = [&](const std::string& text) {
     if (notes && noted.insert(text).second) notes->push_back(text);
@@ -96,7 +113,7 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
           const ReconMode mode = parseReconMode(modeName);
           if (mode == ReconMode::Supersample) {
             const int k = static_cast<int>(std::lround(std::sqrt(spp)));
-            if (sampler == "uniform" && k * k == spp) g.configs.push_back({"box", 0.5, mode});
+            if (sampler == "uniform" && k * k == spp) g.configs.push_back({cache.get({"box", 0.5}), mode});
             else note("supersample: only the uniform sampler at square spp; skipped " + sampler + " spp " +
                       std::to_string(spp));
             continue;
@@ -105,7 +122,7 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
             note("importance: adaptive samplers place their own samples (no filter importance); skipped " + sampler);
             continue;
           }
-          for (const auto& [f, r] : filters) g.configs.push_back({f, r, mode});
+          for (const StudyFilter& f : filters) g.configs.push_back({f, mode});
         }
         groups.push_back(std::move(g));
       }
@@ -125,8 +142,8 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
   return out;
 }
 
-std::pair<std::string, double> parseTarget(const std::string& text) {
-  if (text == "area") return {"box", 0.5};
+Target parseTarget(const std::string& text) {
+  if (text == "area") return {{"box", 0.5}, "box:" + formatNumber(0.5)};
   const size_t colon = text.find(':');
   const std::string usage = "expected 'area' or filter:radius (e.g. gaussian:1.5, lanczos:2), found '" + text + "'";
   if (colon == std::string::npos || colon == 0) throw OptionError("--target", usage);
@@ -143,12 +160,7 @@ std::pair<std::string, double> parseTarget(const std::string& text) {
   relabelOption("--filter", "--target", [&] {
     relabelOption("--radius", "--target", [&] { makeFilter(name, static_cast<float>(r)); });
   });
-  return {name, r};
-}
-
-std::string targetLabel(const std::string& text) {
-  const auto [name, r] = parseTarget(text);
-  return name + ":" + formatNumber(r);
+  return {{name, r}, name + ":" + formatNumber(r)};
 }
 
 void parseShard(const std::string& text, int& index, int& count) {
@@ -236,7 +248,15 @@ class NewFolders {
 };
 }  // namespace
 
-void validateStudy(const StudyConfig& c) {
+ReferenceOptions referenceOptions(const StudyConfig& c) {
+  ReferenceOptions o;
+  o.spp = c.refSpp, o.sampler = c.refSampler, o.batchSpp = c.refBatch, o.threads = c.threads;
+  o.progress = c.progress;
+  return o;
+}
+
+StudyPlan validateStudy(const StudyConfig& c) {
+  StudyPlan plan;
   // Lists and numbers.
   if (c.samplers.empty()) throw OptionError("--samplers", "needs at least one sampler");
   if (c.filters.empty()) throw OptionError("--filters", "needs at least one filter");
@@ -251,13 +271,14 @@ void validateStudy(const StudyConfig& c) {
   if (c.scenes.empty()) throw OptionError("--scenes", "needs at least one scene file or folder");
   if (c.seeds < 2) throw OptionError("--seeds", "needs K >= 2 (noise is a variance over seeds), found " +
                                                     std::to_string(c.seeds));
-  if (c.refSpp < 2) throw OptionError("--ref-spp", "must be at least 2, found " + std::to_string(c.refSpp));
+  // The reference options: one check (study/reference.h), the same as the reference front end's.
+  relabelOption("--sampler", "--ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
   if (c.threads < 0) throw OptionError("--threads", "must be >= 0");
   if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
     throw OptionError("--size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("--max-size", "must be >= 0");
   if (c.longSide < 0) throw OptionError("--long-side", "must be >= 0");
-  parseTarget(c.target);
+  plan.target = parseTarget(c.target);
   // A name or number listed twice would make every configuration of it twice (the CSV keeps one).
   auto once = [](const auto& list, const char* option) {
     for (size_t i = 0; i < list.size(); ++i)
@@ -279,17 +300,16 @@ void validateStudy(const StudyConfig& c) {
         if (isAdaptiveSamplerName(s)) makeAdaptiveSampler(s, spp, 0);
         else makeSampler(s, spp, 0);
       });
-  relabelOption("--sampler", "--ref-sampler", [&] { makeSampler(c.refSampler, 2, 0); });
-  for (const auto& [f, r] : studyFilters(c))
-    relabelOption("--filter", "--filters", [&] {
-      relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
-    });
+  // The groups, every (filter, radius) built here once (the factory names the valid filters).
+  relabelOption("--filter", "--filters", [&] {
+    relabelOption("--radius", "--radii", [&] { plan.groups = expandStudy(c, &plan.notes); });
+  });
 
   // Scenes: present and parseable, with a known size; never the CSV this run writes.
-  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep.h sweepMemoryBound),
+  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep_memory.h sweepMemoryBound),
   // plus the scene's reference images and the reference pass's sums: the largest group decides.
   size_t rowsPerGroup = 0, weightedRows = 0;
-  for (const SampleSetGroup& g : expandStudy(c)) {
+  for (const SampleSetGroup& g : plan.groups) {
     rowsPerGroup = std::max(rowsPerGroup, g.configs.size());
     weightedRows = std::max<size_t>(weightedRows, std::count_if(g.configs.begin(), g.configs.end(), [](const Configuration& x) {
                                       return x.mode == ReconMode::WeightedAverage;
@@ -299,21 +319,22 @@ void validateStudy(const StudyConfig& c) {
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     refuseOutputOverInput("--csv", csvPath(c), {path});
-    const auto scene = loadStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
+    const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
     // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
     // the references (an image and a pass's 4 sums per (filter, radius), the area and the target).
     const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
-    const double pixels = double(scene->width) * scene->height;
-    requireMemory(double(sweepMemoryBound(c.threads, scene->width, scene->height, maxSpp, rowsPerGroup, weightedRows,
+    const double pixels = double(size.width) * size.height;
+    requireMemory(double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup, weightedRows,
                                           c.seeds)) +
                       pixels * references,
                   "--size",
-                  scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) +
-                      " and " + std::to_string(maxSpp) + " spp");
+                  fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
+                      std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp");
   }
 
   // Output folders: all or none (a failed check removes the folders made before it).
   requireOutputFolders({{c.out, "--out"}, {fs::path(csvPath(c)).parent_path().string(), "--csv"}, {c.cache, "--cache"}});
+  return plan;
 }
 
 void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders) {

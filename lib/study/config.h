@@ -9,14 +9,22 @@
 // (--shard i/N: groups g with g mod N == i) is deterministic and keeps the
 // reuse of traced samples. validateStudy() checks every name, number, scene
 // and the output folder before any work and throws InputError
-// (OptionError naming the option, FileError naming the file).
+// (OptionError naming the option, FileError naming the file); it returns the
+// StudyPlan it checked, so the sweep does not expand or parse anything again.
+//
+// Built once, passed down: every distinct (filter, radius) of a study is made
+// (makeFilter) once by expandStudy and shared by its configurations
+// (StudyFilter); the target is parsed once (Target) with its CSV label.
 #pragma once
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "film/film.h"
 #include "study/reference.h"  // kDefaultReferenceSpp
+#include "study/study_scene.h"
 
 namespace aliaslab {
 
@@ -49,11 +57,23 @@ struct StudyConfig {
   bool progress = true;     ///< progress bar / lines on stderr
 };
 
+/// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns
+/// and the reference cache are keyed by; `filter` is makeFilter(spec), shared (a Filter is immutable).
+struct StudyFilter {
+  FilterSpec spec;                       ///< (factory name, support radius in pixels)
+  std::shared_ptr<const Filter> filter;  ///< built once per study
+};
+
 /// One row of the CSV before it is measured.
 struct Configuration {
-  std::string filter;    ///< filter factory name
-  double radius = 0;     ///< support radius in pixels
+  StudyFilter filter;
   ReconMode mode = ReconMode::WeightedAverage;
+};
+
+/// The common target T of a study, parsed once: its (filter, radius) and the CSV's `target` column.
+struct Target {
+  FilterSpec spec;    ///< "area" is the pixel-area reference (box, r = 0.5)
+  std::string label;  ///< "filter:radius" with the radius in %g ("box:0.5" for "area")
 };
 
 /// The K sample sets of one (scene, sampler, spp, prefilter) and the rows made from them.
@@ -73,8 +93,17 @@ std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes
 
 /// Every group in canonical order (unsharded). Supersample rows exist only
 /// for the uniform sampler at square spp (one row, box r = 0.5); notes about
-/// skipped combinations are appended to `notes`.
+/// skipped combinations are appended to `notes`. Each distinct (filter, radius)
+/// is built once and shared by the configurations that use it.
 std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes = nullptr);
+
+/// A validated study: what validateStudy checked, ready to run.
+struct StudyPlan {
+  Target target;
+  std::vector<SampleSetGroup> groups;  ///< every group in canonical order (unsharded), filters built
+  std::vector<std::string> notes;      ///< skipped combinations
+  std::map<std::string, SceneSize> sceneSizes;  ///< per scene file: its size in this study (render line, overrides)
+};
 
 /// The groups of this shard.
 std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count);
@@ -84,17 +113,13 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
 /// OptionError(option) naming the valid values.
 bool parsePrefilter(const std::string& name, const std::string& option = "--prefilter");
 
-/// Every distinct (filter, radius) of the study, in canonical order.
-std::vector<std::pair<std::string, double>> studyFilters(const StudyConfig& config);
+/// Every distinct (filter, radius) of the study, in canonical order (names only; expandStudy builds them).
+std::vector<FilterSpec> studyFilters(const StudyConfig& config);
 
-/// The target T of a study as (filter, radius): "area" is the pixel-area
-/// reference (box, r = 0.5); otherwise "filter:radius", e.g. "gaussian:1.5".
-/// Throws OptionError("--target") naming the valid forms.
-std::pair<std::string, double> parseTarget(const std::string& text);
-
-/// The target as written in the CSV's `target` column: "filter:radius" with
-/// the radius in %g ("box:0.5" for the default "area").
-std::string targetLabel(const std::string& text);
+/// The target T of a study: "area" is the pixel-area reference (box, r = 0.5);
+/// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("--target")
+/// naming the valid forms.
+Target parseTarget(const std::string& text);
 
 /// Parses "i/N" (0 <= i < N). Throws OptionError("--shard").
 void parseShard(const std::string& text, int& index, int& count);
@@ -108,9 +133,11 @@ void checkShardSet(const std::vector<std::string>& inputs);
 /// created before it are removed again (nothing is left behind) and OptionError(option) is thrown.
 void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders);
 
-/// Checks names, numbers, scenes (existence and parse) and the output
-/// folder (created if missing, must be writable). Throws InputError.
-void validateStudy(const StudyConfig& config);
+/// Checks names, numbers, the reference options, scenes (existence, parse and
+/// size from the render line; no acceleration structure is built), memory and
+/// the output folder (created if missing, must be writable). Throws InputError.
+/// Returns the plan it checked (target parsed, groups expanded, filters built).
+StudyPlan validateStudy(const StudyConfig& config);
 
 /// A CSV holds one study: throws OptionError naming the option (--seeds, --ref-spp) when a row of the
 /// existing CSV `lines` was made with another value than `config` asks for (a rerun would add a second copy).
@@ -118,6 +145,9 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
 /// The same for the image size of one scene (--size / --max-size).
 void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
                         int width, int height);
+
+/// The reference options the study asks for (--ref-spp, --ref-sampler, its batch, threads, progress).
+ReferenceOptions referenceOptions(const StudyConfig& config);
 
 /// The CSV path the config writes.
 std::string csvPath(const StudyConfig& config);

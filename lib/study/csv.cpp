@@ -318,7 +318,6 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
     if (exists) {
       lines_ = readCsvLines(path);
       for (const std::string& l : lines_) keys_.insert(csvKey(splitCsvLine(l)));
-      resumed_ = lines_.size();
     }
   }
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);

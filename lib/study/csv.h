@@ -87,7 +87,6 @@ class CsvAppender {
   CsvAppender& operator=(const CsvAppender&) = delete;
 
   bool has(const std::string& key) const { return keys_.count(key) > 0; }
-  size_t resumedRows() const { return resumed_; }
   /// The rows the file held when it was opened.
   const std::vector<std::string>& resumedLines() const { return lines_; }
   /// Writes the row with one write() and fsync. Throws FileError.
@@ -100,7 +99,6 @@ class CsvAppender {
   int fd_ = -1;
   std::set<std::string> keys_;
   std::vector<std::string> lines_;
-  size_t resumed_ = 0;
 };
 
 /// Reads a CSV's data lines (header checked, partial last line dropped).

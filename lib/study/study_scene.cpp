@@ -82,6 +82,8 @@ RenderLine readRenderLine(const std::string& path) {
         r.options.weight = static_cast<float>(number(k, f));
       } else if (f == "-grid") {
         for (int& g : r.grid) g = static_cast<int>(number(k, f));
+        if (r.grid[0] < 0 || r.grid[1] < 0 || r.grid[2] < 0)
+          throw ParseError(path, lineNo, "render line: -grid resolutions must be >= 0 (0 = automatic)");
       } else {
         throw ParseError(path, lineNo, "render line: unknown flag '" + f +
                                            "' (expected -size, -shadows, -bounces, -weight, -shade_back, -grid)");
@@ -94,23 +96,36 @@ RenderLine readRenderLine(const std::string& path) {
   return r;
 }
 
+SceneSize studySceneSize(const std::string& path, const RenderLine& line, int width, int height, int maxSize,
+                         int longSide) {
+  // Size: override, else the render line, then the optional cap.
+  SceneSize s;
+  if (width > 0 && height > 0) s.width = width, s.height = height;
+  else if (line.found) s.width = line.width, s.height = line.height;
+  else throw FileError(path, "no '# render: -size W H' line and no --size given");
+  if (longSide > 0) maxSize = longSide;
+  if (maxSize > 0 && (std::max(s.width, s.height) > maxSize || longSide > 0)) {
+    const double scale = static_cast<double>(maxSize) / std::max(s.width, s.height);
+    s.width = std::max(1, static_cast<int>(std::lround(s.width * scale)));
+    s.height = std::max(1, static_cast<int>(std::lround(s.height * scale)));
+  }
+  return s;
+}
+
+SceneSize checkStudyScene(const std::string& path, int width, int height, int maxSize, int longSide) {
+  const SceneSize size = studySceneSize(path, readRenderLine(path), width, height, maxSize, longSide);
+  parseScene(path);  // the scene and its meshes parse (no acceleration structure)
+  return size;
+}
+
 std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width, int height, int maxSize,
                                            int longSide) {
   auto s = std::make_unique<StudyScene>();
   s->path = path;
   s->stem = std::filesystem::path(path).stem().string();
   s->line = readRenderLine(path);
-
-  // Size: override, else the render line, then the optional cap.
-  if (width > 0 && height > 0) s->width = width, s->height = height;
-  else if (s->line.found) s->width = s->line.width, s->height = s->line.height;
-  else throw FileError(path, "no '# render: -size W H' line and no --size given");
-  if (longSide > 0) maxSize = longSide;
-  if (maxSize > 0 && (std::max(s->width, s->height) > maxSize || longSide > 0)) {
-    const double scale = static_cast<double>(maxSize) / std::max(s->width, s->height);
-    s->width = std::max(1, static_cast<int>(std::lround(s->width * scale)));
-    s->height = std::max(1, static_cast<int>(std::lround(s->height * scale)));
-  }
+  const SceneSize size = studySceneSize(path, s->line, width, height, maxSize, longSide);
+  s->width = size.width, s->height = size.height;
 
   s->scene = parseScene(path);
   const int* g = s->line.grid;

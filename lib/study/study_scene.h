@@ -1,5 +1,8 @@
 // A scene ready for the study: parsed, accelerated, with its tracer, the
 // image size and tracing flags of its `# render:` line, and a content hash.
+// Validation needs less: checkStudyScene() parses the scene and reads its size
+// from the render line without building an acceleration structure or tracer;
+// the sweep builds them once, in loadStudyScene(), when it reaches the scene.
 //
 // The scenes engineer puts exactly one machine-readable line in every scene:
 //   # render: -size W H [-shadows] [-bounces n] [-weight w] [-shade_back] [-grid nx ny nz]
@@ -49,12 +52,25 @@ class StudyScene {
   uint64_t contentHash = 0;  ///< scene + OBJ bytes, size, tracing flags
 };
 
-/// Parses and prepares a scene. Size: (width, height) when both > 0, else the
-/// render line's size; then scaled down (aspect kept, rounded, >= 1) so the
+struct SceneSize {
+  int width = 0, height = 0;
+};
+
+/// The size a study renders the scene at: (width, height) when both > 0, else
+/// the render line's size; then scaled down (aspect kept, rounded, >= 1) so the
 /// larger side is at most maxSize when maxSize > 0; or, when longSide > 0,
 /// scaled up or down (aspect kept, rounded, >= 1) so the larger side is
-/// exactly longSide (maxSize is then ignored). Throws InputError, also when
-/// no size is known.
+/// exactly longSide (maxSize is then ignored). Throws FileError naming `path`
+/// when no size is known.
+SceneSize studySceneSize(const std::string& path, const RenderLine& line, int width = 0, int height = 0,
+                         int maxSize = 0, int longSide = 0);
+
+/// Checks a scene as loadStudyScene would, without building it: its render line, its size (studySceneSize)
+/// and a parse of the scene file and its meshes. Throws InputError (FileError / ParseError).
+SceneSize checkStudyScene(const std::string& path, int width = 0, int height = 0, int maxSize = 0, int longSide = 0);
+
+/// Parses and prepares a scene at studySceneSize(...), with its acceleration structure and tracer. Throws
+/// InputError, also when no size is known.
 std::unique_ptr<StudyScene> loadStudyScene(const std::string& path, int width = 0, int height = 0,
                                            int maxSize = 0, int longSide = 0);
 

@@ -25,56 +25,25 @@
 // rows' accumulators in seed order, so every number and image is the same
 // for any thread count (steps and memory bound: docs/sweep_scheduling.md).
 //
+// The files of the sweep, in the order runSweep uses them: study/config.h
+// (validateStudy: the StudyPlan), sweep_rows.h (planRows, finishRow,
+// writeRows), sweep_scene.h (the scene's references, startRows),
+// sweep_group.h (runGroup: phases A, B, C), group_writer.h (the background
+// writer), sweep_memory.h (the memory bound and the in-flight count),
+// sweep_summary.h (what the sweep reports).
+//
 // Resuming: configurations whose key is already in the CSV are skipped (a
 // group whose rows are all present is not traced). At the end the CSV is
 // rewritten in canonical order, so an interrupted-and-resumed run, or merged
 // shards, give the same file as one uninterrupted run (timing aside).
 #pragma once
-#include <cstdint>
-#include <string>
-#include <vector>
-
 #include "study/config.h"
+#include "study/sweep_memory.h"   // sweepMemoryBound: the bound of peakInFlightBytes
+#include "study/sweep_summary.h"  // SweepSummary, SweepPhases
 
 namespace aliaslab {
 
-/// Where the sweep's time went (seconds). trace, splat, resolve and metrics are thread-seconds of work summed
-/// over tasks (trace includes importance traces; resolve includes classic/supersample/importance
-/// reconstruction; setup = each row's metric and spectrum accumulators at the start of its group; flip = the flip column's comparisons, one per (seed, row); finish = finishRow: metric and spectrum results, images); waiting is thread-seconds idle inside the parallel phases (threads x wall - work);
-/// references (scene load, reference cache or pass, manifest) and io (CSV and spectrum lines, canonical
-/// order, contact sheets) are wall seconds of the serial steps.
-struct SweepPhases {
-  double setup = 0, trace = 0, splat = 0, resolve = 0, metrics = 0, flip = 0, finish = 0, waiting = 0;
-  double references = 0, io = 0;  ///< wall seconds on the main thread (io: waiting for the writer, canonical order)
-  double writer = 0;               ///< seconds the writer thread spent on CSV/spectrum lines, overlapped with work
-};
-
-struct SweepSummary {
-  size_t groups = 0;            ///< sample-set groups of this shard
-  size_t sampleSetsTraced = 0;  ///< traceSamples calls (one per group and seed, when needed)
-  size_t importanceTraces = 0;  ///< traceImportanceSamples calls
-  uint64_t primaryRays = 0;     ///< primary rays traced for sample sets (references excluded)
-  size_t rowsWritten = 0, rowsSkipped = 0;
-  size_t configurations = 0;    ///< rows this shard is responsible for
-  bool images = false;          ///< whether images were written
-  double seconds = 0;
-  std::vector<std::string> notes;  ///< skipped combinations etc.
-  SweepPhases phases;
-  size_t peakInFlightBytes = 0;    ///< peak task state counted by the scheduler (sample sets, accumulators, images)
-};
-
-/// The documented bound on the sweep's in-flight task state (bytes) for one group: with
-/// W = min(seeds, threads) sample sets in flight, W x (sample buffer + Accumulator + rowsPerGroup images)
-/// plus up to `threads` importance-traced buffers. Sample buffer = width x height x spp x sizeof(FilmSample)
-/// (24 B); Accumulator = width x height x (weightedRows + 1) x 4 doubles; image = width x height x 3 floats.
-/// runSweep's summary.peakInFlightBytes never exceeds it (tests/sweep_parallel_test.cpp).
-size_t sweepMemoryBound(int threads, int width, int height, int spp, size_t rowsPerGroup, size_t weightedRows,
-                        int seeds);
-
 /// Validates (InputError before any work), then runs the sweep.
 SweepSummary runSweep(const StudyConfig& config);
-
-/// Total number of configurations (rows) of the unsharded study.
-size_t countConfigurations(const StudyConfig& config);
 
 }  // namespace aliaslab

@@ -1,0 +1,179 @@
+#include "study/sweep_group.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "core/stopwatch.h"
+#include "film/film.h"
+#include "render/adaptive.h"
+#include "render/render.h"
+#include "sampling/sampler.h"
+
+namespace aliaslab {
+
+namespace {
+
+// A traced sample set of one seed (phase A's slot).
+struct SeedTrace {
+  SampleBuffer samples;
+  std::unique_ptr<Accumulator> weighted;  ///< every weighted-average row of the set in one pass
+  std::vector<double> splatSeconds;       ///< per weighted row, its share of the Accumulator pass
+  double traceMs = 0, splatS = 0;
+  SpentSamples spent;  ///< samples per pixel actually traced (adaptive samplers vary)
+  Image density;       ///< per-pixel sample count (adaptive sampler, seed 0, images on)
+};
+
+// One (seed, row) image (phase B's slot), with the thread-seconds of its parts.
+struct RowImage {
+  Reconstruction r;
+  double flip = 0;  ///< meanFlip(image, target), computed in the (seed, row) task
+  double traceMs = 0, reconMs = 0;
+  double traceS = 0, resolveS = 0, flipS = 0;  ///< this task's share of the phases
+};
+
+size_t bufferBytes(const SampleBuffer& b) { return b.samples().size() * sizeof(FilmSample); }
+
+// The threads one of `tasks` concurrent tasks may use inside itself (results do not depend on it).
+int innerThreads(int threads, size_t tasks) { return std::max(1, threads / int(std::max<size_t>(tasks, 1))); }
+
+// Phase A: trace the sample set of seed k once and, when there are weighted-average rows, splat it into one
+// Accumulator holding all of them. The sample buffer is kept for the classic and supersample rows.
+SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
+  SeedTrace t;
+  const Stopwatch trace;
+  if (isAdaptiveSamplerName(g.group.sampler))  // adaptive samplers (render/adaptive.h) trace their own sample set
+    t.samples = traceAdaptive(g.tracer, *makeAdaptiveSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
+                              g.scene.width, g.scene.height, innerThreads);
+  else
+    t.samples = traceSamples(g.tracer, *makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
+                             g.scene.width, g.scene.height, innerThreads);
+  t.traceMs = trace.ms();
+  t.spent = spentSamples(t.samples);
+  if (k == 0 && g.images && isAdaptiveSamplerName(g.group.sampler)) t.density = sampleDensity(t.samples);
+  g.inFlight.add(bufferBytes(t.samples));
+  std::vector<const Filter*> filters;
+  for (const PendingRow& p : g.rows)
+    if (p.mode == ReconMode::WeightedAverage) filters.push_back(p.filter.filter.get());
+  if (!filters.empty()) {
+    const Stopwatch splat;
+    t.weighted = std::make_unique<Accumulator>(g.scene.width, g.scene.height, filters);
+    g.inFlight.add(t.weighted->bytes());
+    t.weighted->add(t.samples, innerThreads, &t.splatSeconds);
+    t.splatS = splat.seconds();
+  }
+  return t;
+}
+
+// Phase B: row `p`'s image of the set `t` (weighted: resolve from the shared Accumulator; classic and
+// supersample: from the sample buffer; importance: its own trace with the row's filter).
+RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weightedIndex, const PendingRow& p, int k,
+                        int innerThreads) {
+  RowImage out;
+  const Filter& filter = *p.filter.filter;
+  if (p.mode == ReconMode::ImportanceSampled) {
+    const auto sampler = makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
+    const Stopwatch trace;
+    const SampleBuffer samples = traceImportanceSamples(g.tracer, *sampler, filter, g.scene.width, g.scene.height,
+                                                        innerThreads);
+    out.traceMs = trace.ms();
+    out.traceS = out.traceMs / 1000;
+    g.inFlight.add(bufferBytes(samples));
+    const Stopwatch resolve;
+    out.r = reconstruct(samples, filter, p.mode, innerThreads);
+    out.reconMs = resolve.ms();
+    out.resolveS = out.reconMs / 1000;
+    g.inFlight.remove(bufferBytes(samples));
+  } else {
+    const Stopwatch resolve;
+    out.r = p.mode == ReconMode::WeightedAverage ? t.weighted->resolve(weightedIndex)
+                                                 : reconstruct(t.samples, filter, p.mode, innerThreads);
+    out.traceMs = t.traceMs;
+    out.reconMs = resolve.ms();
+    out.resolveS = out.reconMs / 1000;
+    if (p.mode == ReconMode::WeightedAverage) out.reconMs += 1000.0 * t.splatSeconds[weightedIndex];
+  }
+  const Stopwatch flip;
+  out.flip = p.flipTarget->mean(out.r.image);
+  out.flipS = flip.seconds();
+  g.inFlight.add(imageBytes(g.scene.width, g.scene.height));
+  return out;
+}
+
+// Phase C: row p's images of seeds k0, k0+1, ... added in seed order.
+void foldSeeds(const GroupContext& g, PendingRow& p, const std::vector<RowImage*>& seedImages, int k0) {
+  for (size_t i = 0; i < seedImages.size(); ++i) {
+    RowImage& img = *seedImages[i];
+    p.metrics->add(img.r.image);
+    p.spectrum->add(img.r.image);
+    p.flipSum += img.flip;
+    p.stats += img.r.stats;
+    p.traceMs += img.traceMs / g.config.seeds, p.reconMs += img.reconMs / g.config.seeds;
+    if (k0 + int(i) == 0 && g.images) p.seed0 = std::move(img.r.image);
+  }
+}
+
+// What the window's sample sets spent, folded into the group's in seed order.
+void foldSpent(const GroupContext& g, std::vector<SeedTrace>& traces, int k0) {
+  const int K = g.config.seeds;
+  for (size_t i = 0; i < traces.size(); ++i) {
+    const int k = k0 + int(i);
+    g.spent.meanSpp = (k == 0 ? 0.0 : g.spent.meanSpp) + traces[i].spent.mean / K;
+    g.spent.maxSpp = k == 0 ? traces[i].spent.max : std::max(g.spent.maxSpp, traces[i].spent.max);
+    if (k == 0) g.spent.density0 = std::move(traces[i].density);
+  }
+}
+
+}  // namespace
+
+void runGroup(const GroupContext& g, const std::function<void(double)>& advance) {
+  const int K = g.config.seeds;
+  const bool shared = std::any_of(g.rows.begin(), g.rows.end(),
+                                  [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
+  std::vector<size_t> weightedIndex(g.rows.size(), 0);
+  for (size_t i = 0, w = 0; i < g.rows.size(); ++i)
+    if (g.rows[i].mode == ReconMode::WeightedAverage) weightedIndex[i] = w++;
+  const int window = std::max(1, std::min(K, g.threads));
+  const size_t R = g.rows.size();
+  for (int k0 = 0; k0 < K; k0 += window) {
+    const int W = std::min(window, K - k0);
+    // Phase A: one task per seed.
+    std::vector<SeedTrace> traces(W);
+    const int innerA = innerThreads(g.threads, W);
+    const PhaseTime a = timedParallelFor(shared ? W : 0, g.threads, innerA,
+                                         [&](int i) { traces[i] = traceSampleSet(g, k0 + i, innerA); });
+    for (const SeedTrace& t : traces) g.phases.trace += t.traceMs / 1000, g.phases.splat += t.splatS;
+    if (shared) {
+      g.sum.sampleSetsTraced += W;
+      foldSpent(g, traces, k0);
+    }
+    g.phases.waiting += a.idle;
+    // Phase B: one task per (seed, row).
+    std::vector<RowImage> images(size_t(W) * R);
+    const int innerB = innerThreads(g.threads, images.size());
+    const PhaseTime b = timedParallelFor(int(images.size()), g.threads, innerB, [&](int n) {
+      const int i = n / int(R);
+      const size_t r = size_t(n) % R;
+      images[n] = reconstructRow(g, traces[i], weightedIndex[r], g.rows[r], k0 + i, innerB);
+    });
+    for (size_t n = 0; n < images.size(); ++n) {
+      g.phases.trace += images[n].traceS, g.phases.resolve += images[n].resolveS, g.phases.flip += images[n].flipS;
+      if (g.rows[n % R].mode == ReconMode::ImportanceSampled) ++g.sum.importanceTraces;
+    }
+    g.phases.waiting += b.idle;
+    for (SeedTrace& t : traces) {
+      g.inFlight.remove(bufferBytes(t.samples) + (t.weighted ? t.weighted->bytes() : 0));
+      t = SeedTrace();
+    }
+    // Phase C: one task per row, seeds folded in order.
+    const PhaseTime c = timedParallelFor(int(R), g.threads, 1, [&](int r) {
+      std::vector<RowImage*> seedImages;
+      for (int i = 0; i < W; ++i) seedImages.push_back(&images[size_t(i) * R + r]);
+      foldSeeds(g, g.rows[r], seedImages, k0);
+    });
+    g.phases.metrics += c.work, g.phases.waiting += c.idle;
+    g.inFlight.remove(images.size() * imageBytes(g.scene.width, g.scene.height));
+    advance(W);
+  }
+}
+
+}  // namespace aliaslab

@@ -1,0 +1,56 @@
+#include "study/sweep_scene.h"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "core/files.h"
+#include "core/image.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::map<FilterSpec, const ReferenceImage*> byFilter(const ReferenceSet& set, const std::vector<FilterSpec>& specs) {
+  std::map<FilterSpec, const ReferenceImage*> of;
+  for (size_t i = 0; i < specs.size(); ++i) of[specs[i]] = &set.images[i];
+  return of;
+}
+}  // namespace
+
+ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
+                             const ReferenceOptions& options, bool images) {
+  ReferenceSet refs = cachedReferences(scene, specs, options, config.cache);
+  if (config.refsOnly) return refs;
+  // each image as a path from the manifest's folder to the cached EXR
+  const fs::path manifests = fs::path(config.out) / "references";
+  std::vector<std::string> names;
+  for (const auto& r : refs.images)
+    names.push_back((fs::absolute(fs::path(config.cache) / (r.key + ".exr")).lexically_normal())
+                        .lexically_relative(fs::absolute(manifests).lexically_normal())
+                        .string());
+  fs::create_directories(manifests);
+  writeTextFile((manifests / (scene.stem + ".json")).string(), referenceManifest(scene, refs, names));
+  if (images) {
+    const fs::path imageDir = fs::path(config.out) / "images" / scene.stem;
+    fs::create_directories(imageDir);
+    writeImage((imageDir / "reference-area.png").string(), refs.images[0].image);  // specs[0] is the area
+  }
+  return refs;
+}
+
+RowReferences::RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const FilterSpec& target)
+    : of_(byFilter(set, specs)), area_(*of_.at(kAreaSpec)), target_(*of_.at(target)), flip_(target_.image) {}
+
+PhaseTime startRows(std::vector<PendingRow>& rows, const RowReferences& refs, int threads) {
+  return timedParallelFor(int(rows.size()), threads, 1, [&](int i) {
+    PendingRow& p = rows[i];
+    p.reference = p.mode == ReconMode::Supersample ? &refs.area() : &refs.of(p.filter.spec);
+    p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, refs.area().image, refs.target().image);
+    p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
+    p.flipTarget = &refs.flipTarget();
+  });
+}
+
+}  // namespace aliaslab
