@@ -6,8 +6,10 @@
 
 The daemons run in the foreground (munged -F, slurmctld -D, slurmd -D) as children of this process, which makes
 itself a child subreaper so that job steps (slurmstepd double-forks) are reparented here and can be found and
-killed too. Each daemon gets PR_SET_PDEATHSIG, so it dies with the test even when the test is killed outright;
-slurm_test.py also runs the whole test in its own PID namespace when unshare allows it, where the kernel ends
+killed too. Should the test be killed outright (SIGKILL, CTest's timeout), each daemon dies with it
+(PR_SET_PDEATHSIG), and a guard process, detached beforehand, sees its pipe from the test close and kills every
+process whose environment holds this cluster's SLURM_CONF (daemons, job steps, jobs: all inherit it). And
+slurm_test.py runs the whole test in its own PID namespace when unshare allows it, where the kernel ends
 everything once the test ends. Nothing is written outside the folder: munge key, socket, seed, pid files,
 logs, Slurm state, spool, and the job-completion log (jobcomp/filetxt: no accounting daemon, so no sacct; the
 jobs' states come from squeue, which keeps finished jobs for MinJobAge). Ports are free ones picked at start.
@@ -55,6 +57,55 @@ def _descendants(root):
     return out
 
 
+def _tagged(tag):
+    """Pids of live processes (not this one) whose environment holds the entry tag."""
+    out = []
+    for entry in os.listdir("/proc"):
+        if entry.isdigit() and int(entry) != os.getpid():
+            try:
+                with open(f"/proc/{entry}/environ", "rb") as f:
+                    if tag in f.read().split(b"\0"):
+                        out.append(int(entry))
+            except OSError:
+                pass
+    return out
+
+
+def _kill_tagged(tag):
+    for _ in range(5):
+        pids = _tagged(tag)
+        if not pids:
+            return
+        for pid in pids:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        time.sleep(0.2)
+
+
+def _start_guard(tag):
+    """Detaches a process that, once the returned pipe end is closed (by stop(), or by the kernel when this
+    process dies), kills every process tagged with tag, then exits."""
+    r, w = os.pipe()
+    child = os.fork()
+    if child == 0:  # double fork: the guard is nobody's child here, so a kill of this process tree spares it
+        try:
+            os.close(w)
+            os.setsid()
+            for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+                signal.signal(sig, signal.SIG_IGN)
+            if os.fork() == 0:
+                while os.read(r, 64):
+                    pass
+                _kill_tagged(tag)
+        finally:
+            os._exit(0)
+    os.close(r)
+    os.waitpid(child, 0)
+    return w
+
+
 def _reap():
     while True:
         try:
@@ -70,6 +121,8 @@ class Cluster:
         self.procs = {}
         self.env = dict(os.environ, SLURM_CONF=os.path.join(folder, "slurm.conf"))
         self.node = socket.gethostname().split(".")[0]
+        self.tag = ("SLURM_CONF=" + self.env["SLURM_CONF"]).encode()
+        self.guard = None
 
     def path(self, name):
         return os.path.join(self.dir, name)
@@ -160,6 +213,7 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
         raise RuntimeError(f"timed out waiting for {what}\n{self.log_tail()}")
 
     def __enter__(self):
+        self.guard = _start_guard(self.tag)
         _libc.prctl(PR_SET_CHILD_SUBREAPER, 1, 0, 0, 0)
         os.chmod(self.dir, 0o711)  # munged wants its socket's folder searchable
         try:
@@ -210,7 +264,12 @@ PartitionName=test Nodes={self.node} Default=YES MaxTime=INFINITE State=UP
                     pass
             time.sleep(0.2)
             _reap()
+        _kill_tagged(self.tag)
+        _reap()
         self.procs = {}
+        if self.guard is not None:
+            os.close(self.guard)
+            self.guard = None
 
     def leftovers(self):
         """Descriptions of processes still running below this process (none after stop())."""

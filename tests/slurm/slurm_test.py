@@ -217,7 +217,7 @@ def in_namespace():
         print("slurm_test: no PID namespace here (unshare refused): cleaning up by process tree only")
         return
     sys.stdout.flush()
-    os.execvpe("unshare", ["unshare", "--pid", "--fork", "--kill-child", "--mount-proc", sys.executable,
+    os.execvpe("unshare", ["unshare", "--pid", "--fork", "--kill-child=SIGTERM", "--mount-proc", sys.executable,
                            os.path.abspath(__file__)] + sys.argv[1:], dict(os.environ, ALIASLAB_SLURM_TEST_NS="1"))
 
 
