@@ -10,7 +10,9 @@ process and as a 3-task job array, whose merge must equal it in every non-timing
      resumes all of its rows and writes none; the merge job is held until then, and its result is exact;
   2. the faults: task 1 fails (its shard CSV path is a folder), task 2 is cancelled (scancel) mid-run, after
      its first rows: the merge job is refused, naming shards 1 and 2; once the folder is gone, resubmitting
-     TASKS=1,2 runs them, task 2 resumes its rows, and the merge is exact.
+     TASKS=1,2 runs them, task 2 resumes its rows, and the merge is exact;
+  3. the references job fails (its cache path is a file): the array is cancelled, never started
+     (--kill-on-invalid-dep), and the merge job is refused, naming every shard.
 The whole test runs in its own PID namespace when unshare allows it (the kernel then ends every process it
 started, whatever happens to it), and checks that nothing it started is left running.
 """
@@ -209,6 +211,25 @@ def case_faults(s):
     return f" (task 2 cancelled at {partial} of 9 rows; its rerun resumed {runs[0][1]}, wrote {runs[0][0]})"
 
 
+def case_refs_fail(s):
+    out = os.path.join(s.tmp, "refs_fail")
+    os.makedirs(out)
+    cache = os.path.join(out, "cache")
+    open(cache, "w").close()  # a file where the cache folder should be: the references job fails
+    args = s.args
+    s.args = args[:args.index("--cache")] + ["--cache", cache]
+    try:
+        refs, array, merge = s.submit(out)
+    finally:
+        s.args = args
+    expect(s.wait_ended(refs) == {None: "FAILED"}, f"references job {refs}: {s.states(refs)}")
+    states = s.wait_ended(array, SHARDS)
+    expect(set(states.values()) == {"CANCELLED"}, f"array {array} should be cancelled (dependency never met): {states}")
+    expect(s.wait_ended(merge) == {None: "FAILED"}, f"merge job {merge} should have been refused: {s.states(merge)}")
+    log = text(os.path.join(out, "slurm", f"merge-{merge}.log"))
+    expect("shard(s) 0 1 2 of 3 did not finish" in log, f"the merge log names no shards: {log}")
+
+
 def in_namespace():
     """Re-runs this test as PID 1 of a new PID namespace when unshare allows it (returns only when it does not)."""
     if os.environ.get("ALIASLAB_SLURM_TEST_NS") == "1" or not shutil.which("unshare"):
@@ -248,7 +269,7 @@ def main():
         with c:
             print(f"slurm_test: cluster up in {time.monotonic() - t0:.1f} s ({tmp})", flush=True)
             s = Study(c, args, tmp)
-            for case in (case_array, case_faults):
+            for case in (case_array, case_faults, case_refs_fail):
                 t = time.monotonic()
                 note = case(s)
                 print(f"slurm_test: {case.__name__} passed in {time.monotonic() - t:.1f} s{note or ''}", flush=True)
