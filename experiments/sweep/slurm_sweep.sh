@@ -25,6 +25,7 @@
 # ...), CPUS_PER_TASK (cores of the references job, and of each shard when
 # the options give no --threads N > 0; default 2), TASKS (array indices to
 # submit, sbatch --array syntax; default 0-(N-1)).
+# shellcheck disable=SC2086,SC2016  # SBATCH_EXTRA splits into options; ${SLURM_...} expand in the job
 set -euo pipefail
 source "$(dirname "$0")/shard_args.sh" "$@"
 # --wrap commands run under /bin/sh (dash on Debian): keep them POSIX, quote every path.
