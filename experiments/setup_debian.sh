@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages aliaslab needs, skipping those already
 # present. Run as root (or with sudo available). Nothing else is downloaded.
+# munge and Slurm are for tests/slurm (slurm_test), which starts its own
+# single-node cluster from a temporary folder: installing them configures no
+# cluster (their services stay down without /etc/slurm/slurm.conf).
 set -euo pipefail
 
 packages=(
@@ -9,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pandas python3-matplotlib
   parallel clang libclang-rt-14-dev
+  munge slurmctld slurmd slurm-client
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -3,32 +3,64 @@
 #
 #   experiments/sweep/slurm_sweep.sh N [sweep options...]
 # e.g.
-#   experiments/sweep/slurm_sweep.sh 16 --preset default --out results/study
+#   SBATCH_EXTRA="--partition=short --time=2:00:00 --mem=4G" \
+#     experiments/sweep/slurm_sweep.sh 16 --preset default --out results/study
 #
 # Submits three jobs: (1) the references, rendered once into the shared
-# cache (--refs-only), (2) an array --array=0-(N-1) whose task i runs
-# `sweep --shard i/N` into OUT/study.shard-i-of-N.csv, after (1), and (3) the
-# merge into OUT/study.csv, after every array task succeeded. A failed or
-# pre-empted task can be resubmitted as is: the sweep resumes its own CSV.
-# Environment: SWEEP (path of the sweep binary, default build/bin/sweep),
-# SBATCH_EXTRA (extra sbatch options: partition, account, time, ...).
+# cache (--refs-only), (2) an array whose task i runs `sweep --shard i/N` into
+# OUT/study.shard-i-of-N.csv, after (1) succeeded, and (3) the merge into
+# OUT/study.csv, after every array task ended, whatever its state. A task
+# that ends well leaves OUT/slurm/shard-i-of-N.done; the merge job refuses
+# (exit 1) naming the shards without one (a task failed, was cancelled or
+# ran out of time), so a partial shard CSV is never merged. Resubmit those
+# shards with TASKS (the sweep resumes each shard's own CSV), e.g.
+#   TASKS=3,7 experiments/sweep/slurm_sweep.sh 16 --preset default --out results/study
+# A requeued task (scontrol requeue, pre-emption) resumes the same way.
+# Jobs run in the submit directory (--chdir), so relative paths (OUT, the
+# scenes, the cache) and SWEEP must be visible at the same path on the
+# compute nodes: a shared filesystem. Logs: OUT/slurm/{refs-J,shard-i,merge-J}.log
+# (shard logs are appended to, so a requeued or resubmitted task keeps both runs).
+# Environment: SWEEP (sweep binary, default build/bin/sweep), SBATCH_EXTRA
+# (extra sbatch options for all three jobs: partition, account, time, mem,
+# ...), CPUS_PER_TASK (cores of the references job, and of each shard when
+# the options give no --threads N > 0; default 2), TASKS (array indices to
+# submit, sbatch --array syntax; default 0-(N-1)).
+# shellcheck disable=SC2086,SC2016  # SBATCH_EXTRA splits into options; ${SLURM_...} expand in the job
 set -euo pipefail
 source "$(dirname "$0")/shard_args.sh" "$@"
-# shellcheck disable=SC2086
-quoted=$(printf '%q ' "${SWEEP_ARGS[@]}")
-refQuoted=$(printf '%q ' "${REF_ARGS[@]}")
+# --wrap commands run under /bin/sh (dash on Debian): keep them POSIX, quote every path.
+[[ -x $SWEEP ]] || { echo "$0: no sweep binary at '$SWEEP' (set SWEEP)" >&2; exit 2; }
+SWEEP=$(realpath "$SWEEP")
+q() { printf '%q ' "$@"; }  # words, each followed by a space
+p() { printf '%q' "$1"; }   # one path, nothing after it
+sweepArgs=$(q "${SWEEP_ARGS[@]}")
+refArgs=$(q "${REF_ARGS[@]}")
 mkdir -p "$OUT/slurm"
-# Each task uses the cores Slurm gives it, unless the options say otherwise.
+cpus=${CPUS_PER_TASK:-2}
+# Each task uses the cores Slurm gives it, unless the options say how many.
 threads='--threads ${SLURM_CPUS_PER_TASK:-0}'
 [[ -n $THREADS_GIVEN ]] && threads=
+[[ $THREADS =~ ^[1-9][0-9]*$ ]] && cpus=$THREADS
+tasks=${TASKS:-0-$((N - 1))}
+common=(--parsable --chdir="$PWD")
+jobId() { echo "${1%%;*}"; }  # --parsable prints "id" or "id;cluster"
 
-refs=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep-refs --cpus-per-task=2 \
-  --output="$OUT/slurm/refs-%j.log" --wrap="$SWEEP $refQuoted --threads \${SLURM_CPUS_PER_TASK:-0} --refs-only")
+refs=$(jobId "$(sbatch "${common[@]}" ${SBATCH_EXTRA:-} --job-name=sweep-refs --cpus-per-task="${CPUS_PER_TASK:-2}" \
+  --output="$OUT/slurm/refs-%j.log" --wrap="$(p "$SWEEP") $refArgs--threads \${SLURM_CPUS_PER_TASK:-0} --refs-only")")
 
-array=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep --cpus-per-task=2 \
-  --dependency=afterok:$refs --array=0-$((N - 1)) --output="$OUT/slurm/shard-%a.log" \
-  --wrap="$SWEEP $quoted $threads --shard \$SLURM_ARRAY_TASK_ID/$N --csv $OUT/study.shard-\$SLURM_ARRAY_TASK_ID-of-$N.csv")
+# Task i: forget an earlier run's mark, run (resuming the shard's CSV), mark the shard done.
+shard="$(p "$OUT")/study.shard-\$SLURM_ARRAY_TASK_ID-of-$N.csv"
+mark="$(p "$OUT")/slurm/shard-\$SLURM_ARRAY_TASK_ID-of-$N.done"
+array=$(jobId "$(sbatch "${common[@]}" ${SBATCH_EXTRA:-} --job-name=sweep --cpus-per-task="$cpus" \
+  --dependency=afterok:"$refs" --kill-on-invalid-dep=yes --array="$tasks" \
+  --output="$OUT/slurm/shard-%a.log" --open-mode=append \
+  --wrap="rm -f $mark && $(p "$SWEEP") $sweepArgs$threads --shard \$SLURM_ARRAY_TASK_ID/$N --csv $shard && touch $mark")")
 
-merge=$(sbatch --parsable ${SBATCH_EXTRA:-} --job-name=sweep-merge --dependency=afterok:$array \
-  --output="$OUT/slurm/merge-%j.log" --wrap="$SWEEP --merge $OUT/study.csv ${SHARDS[*]}")
-echo "submitted: references $refs, shards $array (0-$((N - 1))), merge $merge -> $OUT/study.csv"
+# The merge: refused, naming the shards, unless every shard has its mark.
+check="missing=; for i in $(seq -s ' ' 0 $((N - 1))); do [ -e $(p "$OUT")/slurm/shard-\$i-of-$N.done ] ||"
+check+=" missing=\"\$missing \$i\"; done; if [ -n \"\$missing\" ]; then echo \"sweep-merge: shard(s)\$missing of $N"
+check+=" did not finish (failed, cancelled or out of time: see $(p "$OUT")/slurm/shard-i.log); resubmit them with"
+check+=" TASKS=\$(echo \$missing | tr ' ' ,) and the same options\" >&2; exit 1; fi"
+merge=$(jobId "$(sbatch "${common[@]}" ${SBATCH_EXTRA:-} --job-name=sweep-merge --dependency=afterany:"$array" \
+  --output="$OUT/slurm/merge-%j.log" --wrap="$check; $(p "$SWEEP") --merge $(q "$OUT/study.csv" "${SHARDS[@]}")")")
+echo "submitted: references $refs, shards $array ($tasks), merge $merge -> $OUT/study.csv"
