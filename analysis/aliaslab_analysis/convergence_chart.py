@@ -5,7 +5,7 @@ Usage: /usr/bin/python3 -m analysis convergence convergence.csv --out DIR
 
 One panel per integrand, one line per sampler; the legend gives the slope
 fitted by least squares on log-log over the powers of two in
-[fit-min, fit-max] (the same fit as lib/study/convergence.h). Counts that are
+[fit-min, fit-max] (the same fit as lib/measure/convergence.h). Counts that are
 not powers of two are drawn as crosses. Writes DIR/convergence.png and .svg.
 """
 import argparse

@@ -21,7 +21,7 @@ def fit_loglog_slope(n, y, n_min=None, n_max=None, powers_of_two_only=False):
     """Least squares of log y on log n over n_min <= n <= n_max (and y > 0).
     Returns (slope, intercept, slope_standard_error, points); raises
     ValueError with fewer than two usable points or a single distinct n.
-    Same definition as fitLogLogSlope in lib/study/convergence.h."""
+    Same definition as fitLogLogSlope in lib/measure/convergence.h."""
     n = np.asarray(n, dtype=float)
     y = np.asarray(y, dtype=float)
     keep = np.isfinite(y) & (y > 0) & (n > 0)

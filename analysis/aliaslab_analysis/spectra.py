@@ -1,7 +1,7 @@
 """Error spectra of the study (issue 22): reading <csv folder>/spectra/*.csv and drawing them.
 
 The sweep writes, per scene, the radially averaged power spectrum of every configuration's error
-(I_k - G) and noise (I_k - m), averaged over seeds (lib/study/spectrum.h, docs/spectrum.md). Frequencies
+(I_k - G) and noise (I_k - m), averaged over seeds (lib/measure/spectrum.h, docs/spectrum.md). Frequencies
 are in cycles per pixel (Nyquist = 0.5); `lowfreq_error` is the share of the error energy below
 CUTOFF = a quarter of Nyquist. Everything here returns None / an empty frame when the files are absent
 (older studies), so the report can say so instead of failing.
@@ -16,7 +16,7 @@ from matplotlib import ticker
 from . import figures
 from .figures import plt
 
-CUTOFF = 0.125  # cycles per pixel: lib/study/spectrum.h kLowFrequencyCutoff
+CUTOFF = 0.125  # cycles per pixel: lib/measure/spectrum.h kLowFrequencyCutoff
 NYQUIST = 0.5
 COLUMNS = ["scene", "sampler", "spp", "filter", "radius", "reconstruction", "kind", "bin", "frequency",
            "power", "energy"]

@@ -149,7 +149,7 @@ def add_correlated(csv_path):
 
 
 def write_spectra(study_dir, samplers, scenes=None):
-    """spectra/<scene>.csv as the sweep writes them (lib/study/spectrum.h): every sampler x spp x filter x
+    """spectra/<scene>.csv as the sweep writes them (lib/measure/spectrum.h): every sampler x spp x filter x
     radius, kinds error and noise, SPECTRUM_BINS bins."""
     folder = os.path.join(study_dir, "spectra")
     os.makedirs(folder, exist_ok=True)

@@ -16,7 +16,7 @@
 // its configuration's MetricAccumulator. When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
 // the seed-0 image, signed error and noise map are written. Each row's
-// radial error and noise spectra (study/spectrum.h) go to
+// radial error and noise spectra (measure/spectrum.h; files: study/spectrum_files.h) go to
 // <csv folder>/spectra/<scene>.csv (<scene>.<csv stem>.csv for shards or a
 // --csv path) just before the row, and are put in canonical order at the end.
 //
