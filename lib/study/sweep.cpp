@@ -97,8 +97,8 @@ void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& 
   phases.setup += setup.work, phases.waiting += setup.idle;
 
   GroupSpent spent{double(group.spp), group.spp, Image()};
-  const GroupContext ctx{run.config, scene,        group,         tracer, rows, run.threads, run.sum.images,
-                         run.inFlight, phases, run.sum, spent};
+  const GroupContext ctx{run.config, scene, group, tracer, rows, run.threads, run.sum.images, run.inFlight, phases,
+                         run.sum, spent};
   const uint64_t rays0 = tracer.counters().total().primary;
   runGroup(ctx, [&](double u) { run.progress.advance(u); });
   run.sum.primaryRays += tracer.counters().total().primary - rays0;
