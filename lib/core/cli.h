@@ -12,7 +12,7 @@
 //     type);
 //   - bad options exit 2 with "<program>: <message>".
 // setupCommandLine installs the help layout (HelpFormatter) and --version;
-// tests/cli_grammar_test.cpp checks every executable of experiments/.
+// tests/programs/cli_grammar_test.cpp checks every executable of experiments/.
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cctype>

@@ -8,7 +8,7 @@
 //   B  reconstructRow  one task per (seed, row): that row's image of that seed (importance rows trace their own)
 //   C  foldSeeds       one task per row: the window's images added to its metrics IN SEED ORDER
 // Every task writes only its own slot; slots are folded in (seed, row) order, so nothing depends on which thread
-// ran what or when it finished (tests/sweep_parallel_test.cpp runs the tasks in a shuffled order). Time goes into
+// ran what or when it finished (tests/programs/sweep_parallel_test.cpp runs the tasks in a shuffled order). Time goes into
 // the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep_summary.h), as thread-seconds.
 #pragma once
 #include <functional>

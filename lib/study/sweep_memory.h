@@ -3,7 +3,7 @@
 // Protocol: the sweep holds one group at a time; within it at most W = min(seeds, threads) sample sets are in
 // flight, each with its Accumulator and the images of its rows, plus up to `threads` importance-traced buffers.
 // InFlight counts those bytes as tasks add and remove them and keeps the peak; sweepMemoryBound is the bound
-// that peak never exceeds (tests/sweep_parallel_test.cpp), and validation checks it against the machine's memory
+// that peak never exceeds (tests/programs/sweep_parallel_test.cpp), and validation checks it against the machine's memory
 // before any work (study/config.h validateStudy). This header depends on nothing of the sweep or its
 // configuration, so both can use it.
 #pragma once
@@ -16,7 +16,7 @@ namespace aliaslab {
 /// W = min(seeds, threads) sample sets in flight, W x (sample buffer + Accumulator + rowsPerGroup images)
 /// plus up to `threads` importance-traced buffers. Sample buffer = width x height x spp x sizeof(FilmSample)
 /// (24 B); Accumulator = width x height x (weightedRows + 1) x 4 doubles; image = width x height x 3 floats.
-/// runSweep's summary.peakInFlightBytes never exceeds it (tests/sweep_parallel_test.cpp).
+/// runSweep's summary.peakInFlightBytes never exceeds it (tests/programs/sweep_parallel_test.cpp).
 size_t sweepMemoryBound(int threads, int width, int height, int spp, size_t rowsPerGroup, size_t weightedRows,
                         int seeds);
 

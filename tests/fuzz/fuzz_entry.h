@@ -1,5 +1,5 @@
 // The fuzz entry points, shared by the libFuzzer targets (tests/fuzz/*.cpp)
-// and tests/fuzz_regression_test.cpp, which replays every saved finding and
+// and tests/programs/fuzz_regression_test.cpp, which replays every saved finding and
 // seed through the same functions. Each takes arbitrary bytes, treats
 // InputError (and CLI::Error) as the expected answer to bad input, and lets
 // anything else escape; a broken promise calls fuzzCheckFailed().

@@ -10,7 +10,7 @@
 # FUZZ_BUILD (default build-fuzz) selects the build. The growing corpus lives
 # in FUZZ_BUILD/corpus/TARGET, crash/timeout/oom inputs in
 # FUZZ_BUILD/artifacts/TARGET/; a finding is turned into a regression by
-# copying it to tests/fuzz/regressions/TARGET/ (tests/fuzz_regression_test.cpp).
+# copying it to tests/fuzz/regressions/TARGET/ (tests/programs/fuzz_regression_test.cpp).
 # The fuzzers run in a scratch folder and never write outputs of their own.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"

@@ -13,10 +13,10 @@
 #include <sstream>
 
 #include "accel/aggregate.h"
-#include "badinput/run_process.h"
+#include "support/run_process.h"
 #include "core/error.h"
 #include "scene/scene.h"
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;

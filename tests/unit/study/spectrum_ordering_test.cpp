@@ -23,7 +23,7 @@
 #include <string>
 
 #include "aliaslab_paths.h"
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "study/csv.h"
 #include "measure/spectrum.h"
 #include "study/sweep.h"

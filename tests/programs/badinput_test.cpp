@@ -16,8 +16,8 @@
 #include <set>
 #include <sstream>
 
-#include "badinput/run_process.h"
-#include "scratch_dir.h"
+#include "support/run_process.h"
+#include "support/scratch_dir.h"
 #include "core/error.h"
 #include "scene/scene.h"
 

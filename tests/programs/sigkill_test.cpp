@@ -13,7 +13,7 @@
 #include <sstream>
 #include <thread>
 
-#include "badinput/run_process.h"
+#include "support/run_process.h"
 #include "study/csv.h"
 
 namespace fs = std::filesystem;

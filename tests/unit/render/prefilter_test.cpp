@@ -21,7 +21,7 @@
 #include "scene/material.h"
 #include "scene/prefilter.h"
 #include "scene/scene.h"
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "study/csv.h"
 
 namespace aliaslab {

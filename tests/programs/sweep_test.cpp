@@ -19,7 +19,7 @@
 #include <set>
 #include <sstream>
 
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
 #include "study/reference.h"

@@ -148,7 +148,7 @@ class Cluster:
         hw = self.run(["slurmd", "-C"]).stdout.splitlines()[0].split()
         hw = " ".join(w for w in hw if not w.startswith(("NodeName=", "UpTime=")))
         d = self.dir
-        conf = f"""# written by tests/slurm/cluster.py: one node, localhost only, everything under {d}
+        conf = f"""# written by tests/programs/slurm/cluster.py: one node, localhost only, everything under {d}
 ClusterName=aliaslabtest
 SlurmctldHost={self.node}(127.0.0.1)
 SlurmctldPort={_free_port()}

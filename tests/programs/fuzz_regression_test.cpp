@@ -8,11 +8,11 @@
 
 #include <filesystem>
 
-#include "badinput/run_process.h"
+#include "support/run_process.h"
 
 #define ALIASLAB_FUZZ_NO_MAIN
-#include "../experiments/raytracer/options.cpp"
-#include "../experiments/raytracer/sampling_plan.cpp"
+#include "experiments/raytracer/options.cpp"
+#include "experiments/raytracer/sampling_plan.cpp"
 #include "fuzz/fuzz_cli.cpp"
 #include "fuzz/fuzz_obj.cpp"
 #include "fuzz/fuzz_scene.cpp"

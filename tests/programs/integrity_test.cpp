@@ -20,11 +20,11 @@
 #include <signal.h>
 #include <sstream>
 
-#include "badinput/run_process.h"
+#include "support/run_process.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "study/csv.h"
 #include "study/lock.h"
 #include "study/reference.h"

@@ -13,7 +13,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "render/adaptive.h"
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "study/config.h"
 #include "study/csv.h"
 #include "study/sweep.h"

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""slurm_test: experiments/sweep/slurm_sweep.sh submitted to a real single-node Slurm (tests/slurm/cluster.py).
+"""slurm_test: experiments/sweep/slurm_sweep.sh submitted to a real single-node Slurm (tests/programs/slurm/cluster.py).
 
     slurm_test.py --sweep BUILD/bin/sweep --source SOURCE_DIR [--skip REASON]
 Exit 0 passed, 1 failed, 77 skipped (Slurm or munge not installed, not root, or --skip: CTest's SKIP_RETURN_CODE).

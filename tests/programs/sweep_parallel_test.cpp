@@ -14,7 +14,7 @@
 #include <map>
 #include <sstream>
 
-#include "scratch_dir.h"
+#include "support/scratch_dir.h"
 #include "core/parallel.h"
 #include "core/stopwatch.h"
 #include "study/config.h"
