@@ -22,6 +22,7 @@
 #include "filter/filter.h"
 #include "render/adaptive.h"
 #include "render/render.h"
+#include "render/sample_source.h"
 #include "sampling/sampler.h"
 #include "study/contact.h"
 #include "study/csv.h"
@@ -168,15 +169,11 @@ double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(
 SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
   SeedTrace t;
   auto t0 = Clock::now();
-  if (isAdaptiveSamplerName(g.group.sampler))  // adaptive samplers (render/adaptive.h) trace their own sample set
-    t.samples = traceAdaptive(g.tracer, *makeAdaptiveSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
-                              g.scene.width, g.scene.height, innerThreads);
-  else
-    t.samples = traceSamples(g.tracer, *makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
-                             g.scene.width, g.scene.height, innerThreads);
+  const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
+  t.samples = source->trace(g.tracer, g.scene.width, g.scene.height, innerThreads);
   t.traceMs = msSince(t0);
   t.spent = spentSamples(t.samples);
-  if (k == 0 && g.images && isAdaptiveSamplerName(g.group.sampler)) t.density = sampleDensity(t.samples);
+  if (k == 0 && g.images && source->adaptive()) t.density = sampleDensity(t.samples);
   g.inFlight.add(bufferBytes(t.samples));
   std::vector<const Filter*> filters;
   for (const Pending& p : g.rows)
@@ -197,10 +194,10 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
                         int innerThreads, double* traceS, double* resolveS, double* flipS) {
   RowImage out;
   if (p.mode == ReconMode::ImportanceSampled) {
-    const auto sampler = makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
+    const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
     auto t0 = Clock::now();
-    const SampleBuffer samples = traceImportanceSamples(g.tracer, *sampler, *p.filter, g.scene.width,
-                                                        g.scene.height, innerThreads);
+    const SampleBuffer samples = source->traceImportance(g.tracer, *p.filter, g.scene.width, g.scene.height,
+                                                         innerThreads);
     out.traceMs = msSince(t0);
     *traceS += out.traceMs / 1000;
     g.inFlight.add(bufferBytes(samples));
