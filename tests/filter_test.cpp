@@ -329,7 +329,7 @@ size_t differFromFourLanes(std::vector<float> in, float pad, void (*eight)(const
 }  // namespace
 
 TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
-  // the Blackman-Harris evalBatch must give the same bits with and without AVX2: inputs from -200 to 200 in
+  // the Blackman-Harris batch (FilterBatch) must give the same bits with and without AVX2: inputs from -200 to 200 in
   // steps of about 1e-4 (every octant and both polynomials, the multiples of pi/2), random floats of every
   // exponent up to 1e38, both sides of Eigen's huge threshold (18838) in one group of 8 and apart, and
   // zeros, infinities and NaN
@@ -347,7 +347,7 @@ TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
 }
 
 TEST(FilterFacts, EightLaneExpIsEigensFourLaneExpBitForBit) {
-  // the Gaussian's evalBatch must give the same bits with and without AVX2: every input from -110 (results
+  // the Gaussian's batch (FilterBatch) must give the same bits with and without AVX2: every input from -110 (results
   // below float's normal range, the 2^m split of pldexp) to 100 in steps of about 1e-4, and the clamps
   if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
   std::vector<float> in;

@@ -93,7 +93,7 @@ class SumPages {
   Sum* data_ = nullptr;
 };
 
-/// Samples waiting for one evalBatch call (padded to a multiple of 4).
+/// Samples waiting for one FilterBatch::eval call (padded to a multiple of 4).
 struct Batch {
   alignas(16) float x[kBatch], y[kBatch], cx[kBatch], cy[kBatch];  ///< position, first pixel centre
   int at[kBatch];                                                   ///< first pixel's index in the band buffer
@@ -133,7 +133,7 @@ inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count
 template <int N>
 inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
                                                       Sum* buffer, int width) {
-  constexpr size_t stride = kBatch;  // evalBatch is always called for a whole batch: constant offsets
+  constexpr size_t stride = kBatch;  // FilterBatch::eval is always called for a whole batch: constant offsets
   if constexpr (N == 1 || N == 2) {
     addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += static_cast<double>(w[p * stride + t]) * L;
