@@ -60,9 +60,10 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   if (!o.renderFilter.empty()) images.emplace_back(o.renderFilter[0], renderFilterImage(plan, o));
 
   // Memory first: the traced samples of the whole image, the image and each further picture.
-  requireMemory(double(w) * h * (double(plan.sampler->spp()) * sizeof(FilmSample) + 5 * 3 * sizeof(float)), "-size",
-                "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " +
-                    std::to_string(plan.sampler->spp()) + " samples per pixel");
+  const int spp = plan.source->pixelSampler().spp();  // (an adaptive method: its base at 1 spp)
+  requireMemory(double(w) * h * (double(spp) * sizeof(FilmSample) + 5 * 3 * sizeof(float)), "-size",
+                "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " + std::to_string(spp) +
+                    " samples per pixel");
   // Scene, accelerator, tracer.
   const Scene scene = parseScene(o.input);
   // No output may overwrite an input: the scene is checked with the options, its OBJ files here.
@@ -84,7 +85,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   to.weight = o.weight;
   to.shadeBack = o.shadeBack;
   to.prefilter = parsePrefilter(o.prefilter, "--prefilter");
-  to.footprintPixels = 1.f / std::sqrt(static_cast<float>(plan.sampler->spp()));
+  to.footprintPixels = 1.f / std::sqrt(static_cast<float>(spp));
   const Tracer tracer(scene, *aggregate, to);
 
   // Colour image (and sample visualisation), depth, normals.
@@ -152,7 +153,8 @@ int main(int argc, char** argv) {
     validateRaytracerOptions(app, o);
     const SamplingPlan plan = makeSamplingPlan(app, o);
     if (!plan.note.empty()) std::cerr << "raytracer: note: " << plan.note << "\n";
-    if (!plan.sampler->warning().empty()) std::cerr << "raytracer: warning: " << plan.sampler->warning() << "\n";
+    const std::string warning = plan.source->pixelSampler().warning();
+    if (!warning.empty()) std::cerr << "raytracer: warning: " << warning << "\n";
     return run(o, plan);
   } catch (const OptionError& e) {
     std::cerr << "raytracer: " << e.what() << "\n";

@@ -50,8 +50,7 @@ FilterParams parseFilterParams(const std::vector<std::string>& items) {
 }  // namespace
 
 std::string SamplingPlan::describe() const {
-  std::string s = adaptive ? adaptive->describe() + " spp " + std::to_string(adaptive->spp())
-                           : sampler->describe() + " spp " + std::to_string(sampler->spp());
+  std::string s = source->describe() + " spp " + std::to_string(source->spp());
   if (mode == ReconMode::Supersample) return s + ", supersample reconstruction (3x3 binomial, k x k box)";
   if (filter)
     return s + ", " + filter->describe() + (defaultFilter ? " (default: no --filter given)" : "") + ", " +
@@ -81,12 +80,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   if (total > double(1 << 28))
     throw OptionError(classicSampler.empty() ? "--spp" : "-" + classicSampler,
                       "width x height x spp exceeds 2^28 samples (about 7 GB)");
-  if (isAdaptiveSamplerName(name)) {
-    plan.adaptive = makeAdaptiveSampler(name, spp, o.seed);
-    plan.sampler = makeSampler(plan.adaptive->base(), 1, o.seed);
-  } else {
-    plan.sampler = makeSampler(name, spp, o.seed);
-  }
+  plan.source = makeSampleSource(name, spp, o.seed);
 
   // Filter: classic flag or --filter/--radius/--filter-param.
   const std::string classicFilter = chooseOne(app, {"box_filter", "tent_filter", "gaussian_filter"});
@@ -102,7 +96,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
         throw OptionError("-gaussian_filter", "sigma must be in [0.001, 512] pixels (its support is 2 sigma, at most "
                                               "1024), found " + formatNumber(o.gaussianFilter));
       params["sigma"] = o.gaussianFilter;
-      radius = 2.f * o.gaussianFilter;  // classic support ceil(2 sigma - 0.5)
+      radius = 2.f * o.gaussianFilter;  // (the classic gather uses its course variant, course-gaussian)
     } else if (!(radius > 0.f) || !std::isfinite(radius)) {
       throw OptionError("-" + classicFilter, "radius must be finite and > 0");
     }
@@ -124,7 +118,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
   else if (!classicSampler.empty() || !classicFilter.empty()) plan.mode = ReconMode::Classic;
   if (!plan.filter && has("reconstruction") && plan.mode != ReconMode::Supersample)
     throw OptionError("--reconstruction", "'" + o.reconstruction + "' needs a filter (--filter or a classic filter flag)");
-  if (plan.adaptive && (plan.mode == ReconMode::Supersample || plan.mode == ReconMode::ImportanceSampled))
+  if (plan.source->adaptive() && (plan.mode == ReconMode::Supersample || plan.mode == ReconMode::ImportanceSampled))
     throw OptionError("--reconstruction", "'" + o.reconstruction + "' cannot take an adaptive sampler (" +
                                               (plan.mode == ReconMode::Supersample
                                                    ? "it needs the same k*k samples in every pixel)"
@@ -139,7 +133,8 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
                                      std::to_string(spp));
     if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
   }
-  if (plan.adaptive && !plan.filter) plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
+  if (plan.source->adaptive() && !plan.filter)
+    plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
   if (!classicSampler.empty() && spp > 1 && !plan.filter)
     plan.note = "-" + classicSampler + " " + std::to_string(spp) +
                 " without a filter keeps each pixel's first sample (the course's rule); add -box_filter 0.5 "
@@ -177,10 +172,8 @@ RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int wi
   const bool importance = plan.filter && plan.mode == ReconMode::ImportanceSampled;
   auto state = std::make_shared<RenderProgress>();
   const Progress progress = [state](int done, int total) { (*state)(done, total); };
-  out.samples = plan.adaptive ? traceAdaptive(tracer, *plan.adaptive, width, height, threads, progress)
-                : importance  ? traceImportanceSamples(tracer, *plan.sampler, *plan.filter, width, height, threads,
-                                                       progress)
-                              : traceSamples(tracer, *plan.sampler, width, height, threads, progress);
+  out.samples = importance ? plan.source->traceImportance(tracer, *plan.filter, width, height, threads, progress)
+                           : plan.source->trace(tracer, width, height, threads, progress);
   if (plan.filter) {
     out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
   } else {
@@ -202,7 +195,7 @@ Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& 
 }
 
 Image renderFilterImage(const SamplingPlan& plan, const RaytracerOptions& o) {
-  // the course's picture (classicSupport, evalClassic) where the course's gather is used, else the filter itself
+  // the course's picture (classicSupport, the course variant) where the course's gather is used, else the filter
   const int zoom = std::stoi(o.renderFilter[1]);
   return plan.mode == ReconMode::Classic ? renderFilter(*plan.filter, o.size[0], o.size[1], zoom)
                                          : renderFilterSigned(*plan.filter, o.size[0], o.size[1], zoom);

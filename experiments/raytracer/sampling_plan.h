@@ -21,15 +21,13 @@
 
 #include "film/film.h"
 #include "options.h"
-#include "render/adaptive.h"
+#include "render/sample_source.h"
 #include "render/tracer.h"
-#include "sampling/sampler.h"
 
 namespace aliaslab {
 
 struct SamplingPlan {
-  std::unique_ptr<Sampler> sampler;  ///< never null (for an adaptive sampler: its base at 1 spp)
-  std::unique_ptr<AdaptiveSampler> adaptive;  ///< null unless --sampler names an adaptive method
+  std::unique_ptr<SampleSource> source;  ///< never null: the sampler of --sampler or a classic flag, maybe adaptive
   std::unique_ptr<Filter> filter;    ///< null: each pixel takes its first sample
   ReconMode mode = ReconMode::WeightedAverage;
   bool defaultFilter = false;        ///< the filter is the default box 0.5 (no filter option given)

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/parallel.h"
 #include "film/film_impl.h"
+#include "filter/filter_sampler.h"
 
 namespace aliaslab {
 
@@ -37,8 +38,8 @@ ReconMode parseReconMode(const std::string& name) {
 }
 
 int classicSupport(const Filter& filter) {
-  const double extent = filter.name() == "gaussian" ? 2 * filter.params().at("sigma") : filter.radius();
-  return std::max(0, static_cast<int>(std::ceil(extent - 0.5)));
+  const std::unique_ptr<Filter> course = makeCourseVariant(filter);
+  return std::max(0, static_cast<int>(std::ceil(double((course ? *course : filter).radius()) - 0.5)));
 }
 
 SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts)
@@ -91,8 +92,11 @@ namespace {
 
 using namespace filmimpl;
 
-/// Classic gather (evalClassic over pixels i-R..i+R) or ImportanceSampled (own samples, FilmSample::weight).
-Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool classic, int threads) {
+/// Classic gather (the course variant's eval over pixels i-R..i+R) or ImportanceSampled (own samples,
+/// FilmSample::weight).
+Reconstruction gather(const SampleBuffer& samples, const Filter& given, bool classic, int threads) {
+  const std::unique_ptr<Filter> course = classic ? makeCourseVariant(given) : nullptr;
+  const Filter& filter = course ? *course : given;
   const int W = samples.width(), H = samples.height();
   const int R = classic ? classicSupport(filter) : 0;
   std::vector<double> sums(4 * size_t(W) * H, 0.0), plain(4 * size_t(W) * H, 0.0);
@@ -106,7 +110,7 @@ Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool cl
           const FilmSample* s = samples.pixel(si, sj);
           for (int k = 0, n = samples.count(si, sj); k < n; ++k) {
             if (!finiteSample(s[k])) continue;
-            const double w = classic ? filter.evalClassic(s[k].x - cx, s[k].y - cy) *
+            const double w = classic ? filter.eval(s[k].x - cx, s[k].y - cy) *
                                            (samples.areaWeighted() ? double(s[k].weight) : 1.0)
                                      : s[k].weight;
             out[0] += w * s[k].L[0], out[1] += w * s[k].L[1], out[2] += w * s[k].L[2], out[3] += w;
@@ -114,8 +118,7 @@ Reconstruction gather(const SampleBuffer& samples, const Filter& filter, bool cl
         }
     }
   });
-  const double tol = classic ? std::max(1e-8 * std::abs(filter.evalClassic(0, 0)), 1e-30)
-                             : std::max(1e-8 * filter.absIntegral(), 1e-30);
+  const double tol = classic ? weightTolerance(filter) : std::max(1e-8 * FilterSampler(filter).absIntegral(), 1e-30);
   return resolveSums(W, H, sums.data(), plain.data(), tol, nonFinite);
 }
 

@@ -19,8 +19,9 @@
 // - a pixel whose |sum of weights| is below the tolerance is undefined: it
 //   takes the plain mean of its own finite samples (0 if it has none) and is
 //   counted in undefinedPixels. Tolerance: 1e-8 * |f(0, 0)| (the filter's
-//   peak) for WeightedAverage and Accumulator, 1e-8 * |evalClassic(0, 0)|
-//   for Classic, 1e-8 * absIntegral() for ImportanceSampled. Supersample
+//   peak) for WeightedAverage and Accumulator, 1e-8 * |f(0, 0)| of the
+//   course variant for Classic, 1e-8 * the integral of |f|
+//   (FilterSampler::absIntegral) for ImportanceSampled. Supersample
 //   has no weights: a pixel with no finite sample is undefined (value 0);
 // - a result that is not finite in float (overflow, inf / inf) takes the same
 //   fallback and is counted in nanPixels;
@@ -141,14 +142,15 @@ struct Reconstruction {
 enum class ReconMode {
   WeightedAverage,     ///< sum f L / sum f over every sample within the radius, clipped by the film edge
   Classic,             ///< the course's gather: samples of pixels i-R..i+R with R = classicSupport(filter)
-  ImportanceSampled,   ///< sum w L / sum w over the pixel's own samples (weights from Filter::sample)
+  ImportanceSampled,   ///< sum w L / sum w over the pixel's own samples (weights from FilterSampler::sample)
   Supersample,         ///< spp = k^2 sub-pixel centres, 3x3 binomial blur, k x k box average
 };
 std::string toString(ReconMode mode);
 /// Parses "weighted", "classic", "importance", "supersample"; throws OptionError("--reconstruction").
 ReconMode parseReconMode(const std::string& name);
 
-/// The classic integer support: ceil(2 sigma - 0.5) for the Gaussian, ceil(r - 0.5) for every other filter.
+/// The classic integer support: ceil(r - 0.5) of the filter's course variant (makeCourseVariant: the Gaussian's
+/// is course-gaussian, whose radius is ceil(2 sigma - 0.5) + 0.5), or of the filter itself.
 int classicSupport(const Filter& filter);
 
 /// Reconstructs with `mode`; `filter` is ignored by Supersample, which throws
@@ -157,8 +159,8 @@ int classicSupport(const Filter& filter);
 /// position (a cell with several samples takes their mean, an empty cell
 /// the mean of its pixel's finite samples), blurs with [1 2 1]/4 x [1 2 1]/4
 /// (renormalised over the taps inside the image) and averages k x k blocks.
-/// Classic uses Filter::evalClassic over the samples of pixels i-R..i+R,
-/// j-R..j+R, R = classicSupport(filter). `threads`: 0 = all cores.
+/// Classic uses the eval() of the filter's course variant (makeCourseVariant, else the filter itself) over the
+/// samples of pixels i-R..i+R, j-R..j+R, R = classicSupport(filter). `threads`: 0 = all cores.
 /// Deterministic for any thread count.
 Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, ReconMode mode, int threads = 0);
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "film/film.h"
+#include "filter/filter_batch.h"
 
 namespace aliaslab::filmimpl {
 
@@ -19,7 +20,7 @@ constexpr int kBand = 32;
 /// pixel, width x height) for every pixel whose centre is within the
 /// support: the fast splat, banded over output rows so each pixel's sum
 /// runs in sample order for any thread count. Weights from
-/// Filter::evalBatch (eval() bit for bit; Blackman-Harris and the Gaussian
+/// FilterBatch (eval() bit for bit; Blackman-Harris and the Gaussian
 /// within float rounding), summed in double: float x float products are
 /// exact, so the AVX2 + FMA kernel used where the CPU has it sums exactly
 /// like the SSE one (allowAvx2 = false forces the SSE kernel and the

@@ -1,6 +1,6 @@
 // The fast weighted average. Per output band of kBand rows (the parallel
 // work item), the samples of every source row that can reach the band, in
-// memory order, in batches: one Filter::evalBatch call per batch (vectorised
+// memory order, in batches: one FilterBatch::eval call per batch (vectorised
 // across samples) gives each sample's weights over the n x n pixel centres
 // from its footprint's first column and row, n = ceil(2r) (a footprint at a
 // generic position; the weights are zero beyond the support), then a 4-lane
@@ -43,7 +43,7 @@
 namespace aliaslab::filmimpl {
 namespace {
 
-constexpr int kBatch = 128;  // samples per Filter::evalBatch call (a multiple of 4)
+constexpr int kBatch = 128;  // samples per FilterBatch::eval call (a multiple of 4)
 using Clock = std::chrono::steady_clock;
 constexpr int kMaxBlock = 16; // largest n x n block (r <= 8); wider footprints sample by sample
 
@@ -93,7 +93,7 @@ class SumPages {
   Sum* data_ = nullptr;
 };
 
-/// Samples waiting for one evalBatch call (padded to a multiple of 4).
+/// Samples waiting for one FilterBatch::eval call (padded to a multiple of 4).
 struct Batch {
   alignas(16) float x[kBatch], y[kBatch], cx[kBatch], cy[kBatch];  ///< position, first pixel centre
   int at[kBatch];                                                   ///< first pixel's index in the band buffer
@@ -133,7 +133,7 @@ inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count
 template <int N>
 inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
                                                       Sum* buffer, int width) {
-  constexpr size_t stride = kBatch;  // evalBatch is always called for a whole batch: constant offsets
+  constexpr size_t stride = kBatch;  // FilterBatch::eval is always called for a whole batch: constant offsets
   if constexpr (N == 1 || N == 2) {
     addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += static_cast<double>(w[p * stride + t]) * L;
@@ -150,7 +150,7 @@ inline __attribute__((always_inline)) void accumulate(const Batch& batch, int co
     }
   }
 }
-/// The same for Filter::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
+/// The same for FilterBatch::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
 template <int N>
 inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
   if constexpr (N == 1 || N == 2) {
@@ -344,6 +344,8 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
   const Kernel kernel = pickKernel(n, allowAvx2, std::make_integer_sequence<int, 6>());
+  std::vector<FilterBatch> weights;  // each filter's vectorised weights, built once for the pass
+  for (const Filter* f : filters) weights.emplace_back(*f);
   static const bool cpuAvx2 = __builtin_cpu_supports("avx2");
   const bool vectorSetup = cpuAvx2 && allowAvx2 && n <= kMaxBlock;  // (r <= 8: centresWithin's bounds fit)
 
@@ -372,8 +374,8 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
       auto t0 = own ? Clock::now() : Clock::time_point();
       for (int f = 0; f < K; ++f) {
-        const bool unit = filters[f]->unitWeights();
-        if (!unit) filters[f]->evalBatch(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
+        const bool unit = weights[f].unitWeights();
+        if (!unit) weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
         kernel(b, count, unit ? nullptr : w.data(), n, buffer(f), width);
         if (own) {
           const auto t1 = Clock::now();

@@ -164,7 +164,9 @@ Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColum
   return img;
 }
 
-Image renderFilter(const Filter& filter, int width, int height, int zoom) {
+Image renderFilter(const Filter& given, int width, int height, int zoom) {
+  const std::unique_ptr<Filter> course = makeCourseVariant(given);
+  const Filter& filter = course ? *course : given;
   Image img(width * zoom + 1, height * zoom + 1, kDarkBlue);
   const int R = classicSupport(filter), ci = width / 2, cj = height / 2;
   const float cx = ci + 0.5f, cy = cj + 0.5f;
@@ -172,7 +174,7 @@ Image renderFilter(const Filter& filter, int width, int height, int zoom) {
     for (int i = std::max(0, ci - R); i <= std::min(width - 1, ci + R); ++i)
       for (int y = j * zoom; y < (j + 1) * zoom; ++y)
         for (int x = i * zoom; x < (i + 1) * zoom; ++x)
-          img.set(x, y, Color::Constant(filter.evalClassic(float(x) / zoom - cx, float(y) / zoom - cy)));
+          img.set(x, y, Color::Constant(filter.eval(float(x) / zoom - cx, float(y) / zoom - cy)));
   for (int y = 0; y < img.height(); ++y)
     for (int x = 0; x < img.width(); ++x)
       if (x % zoom == 0 || y % zoom == 0) img.set(x, y, kBlue);

@@ -30,7 +30,8 @@ Image renderSamplesMarked(const SampleBuffer& samples, int zoom, int strataColum
 /// The classic -render_filter picture for a width x height film:
 /// (width*zoom+1) x (height*zoom+1) dark blue (0,0,0.5); every cell within
 /// classicSupport(filter) of the centre pixel (width/2, height/2) is painted
-/// grey with the raw weight evalClassic at each image pixel's corner
+/// grey with the raw weight of the course variant (makeCourseVariant, else
+/// the filter itself) at each image pixel's corner
 /// (X/zoom, Y/zoom) offset from that pixel's centre (0 gives black); then
 /// pure blue (0,0,1) on every row and column index that is a multiple of zoom.
 Image renderFilter(const Filter& filter, int width, int height, int zoom);

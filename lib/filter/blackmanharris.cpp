@@ -9,7 +9,7 @@
 // the centred form of the classic window, 1 at 0 and 6e-5 at the edge.
 // Non-negative, integral (2 r a0)^2 (the cosines integrate to 0). A smooth
 // Gaussian-like blur with a compact support; a good default at r = 1.5-2.
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -44,6 +44,8 @@ class BlackmanHarrisFilter final : public SeparableFilter<BlackmanHarrisFilter> 
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> blackmanHarrisBatch(const Filter& f) { return batchFor<BlackmanHarrisFilter>(f); }
 
 std::unique_ptr<Filter> makeBlackmanHarris(float r, const FilterParams&) {
   return std::make_unique<BlackmanHarrisFilter>(r);

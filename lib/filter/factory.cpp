@@ -1,5 +1,6 @@
-// The one table of filter names (filterNames() order, shape parameters and their defaults) and
-// makeFilter(): name, radius and parameter checks, then the filter's make function.
+// The one table of filter names (filterNames() order, make and batch functions, shape parameters and their
+// defaults, natural radius, course variant) and makeFilter(): name, radius and parameter checks, then the
+// filter's make function.
 #include <algorithm>
 #include <cmath>
 
@@ -26,24 +27,30 @@ namespace {
 using Maker = std::unique_ptr<Filter> (*)(float, const FilterParams&);
 struct Entry {
   const char* name;
-  Maker make;        ///< declared in filter_impl.h, defined in the filter's own file
-  FilterParams defaults;  ///< every shape parameter the filter takes, with its default
+  Maker make;              ///< declared in filter_impl.h, defined in the filter's own file
+  filterimpl::BatchMaker batch;  ///< FilterBatch's kernel (filter_batch_impl.h); null: eval() sample by sample
+  FilterParams defaults;   ///< every shape parameter the filter takes, with its default
   double (*naturalRadius)(const FilterParams&);  ///< the radius used when none is given (see filter.h)
+  const char* course = nullptr;  ///< the name of its course variant (makeCourseVariant), or null: itself
+  bool variant = false;  ///< a course variant: in allFilterNames(), not in filterNames() (the study's filters)
 };
-// Registered filters, in the fixed order of filterNames(): adding a filter is its file, its make function's
-// declaration in filter_impl.h and one line here.
+// Registered filters, in the fixed order of filterNames(): adding a filter is its file, its functions'
+// declarations in filter_impl.h and one line here.
 const std::vector<Entry>& registry() {
   using namespace filterimpl;
   static const std::vector<Entry> entries = {
-      {"box", makeBox, {}, [](const FilterParams&) { return 0.5; }},
-      {"tent", makeTent, {}, [](const FilterParams&) { return 1.0; }},
-      {"gaussian", makeGaussian, {{"sigma", 0.5}, {"subtract_edge", 0}},
-       [](const FilterParams& p) { return 3 * p.at("sigma"); }},
-      {"mitchell", makeMitchell, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}}, [](const FilterParams&) { return 2.0; }},
-      {"catmullrom", makeCatmullRom, {}, [](const FilterParams&) { return 2.0; }},
-      {"lanczos", makeLanczos, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
-      {"hann", makeHann, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
-      {"blackmanharris", makeBlackmanHarris, {}, [](const FilterParams&) { return 2.0; }},
+      {"box", makeBox, boxBatch, {}, [](const FilterParams&) { return 0.5; }},
+      {"tent", makeTent, tentBatch, {}, [](const FilterParams&) { return 1.0; }},
+      {"gaussian", makeGaussian, gaussianBatch, {{"sigma", 0.5}, {"subtract_edge", 0}},
+       [](const FilterParams& p) { return 3 * p.at("sigma"); }, "course-gaussian"},
+      {"mitchell", makeMitchell, mitchellBatch, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}},
+       [](const FilterParams&) { return 2.0; }},
+      {"catmullrom", makeCatmullRom, mitchellBatch, {}, [](const FilterParams&) { return 2.0; }},
+      {"lanczos", makeLanczos, lanczosBatch, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
+      {"hann", makeHann, hannBatch, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
+      {"blackmanharris", makeBlackmanHarris, blackmanHarrisBatch, {}, [](const FilterParams&) { return 2.0; }},
+      {"course-gaussian", makeCourseGaussian, nullptr, {{"sigma", 0.5}},
+       [](const FilterParams& p) { return std::max(0.0, std::ceil(2 * p.at("sigma") - 0.5)) + 0.5; }, nullptr, true},
   };
   return entries;
 }
@@ -54,7 +61,24 @@ const Entry* find(const std::string& name) {
 }
 }  // namespace
 
+namespace filterimpl {
+BatchMaker batchMaker(const std::string& name) {
+  const Entry* e = find(name);
+  return e ? e->batch : nullptr;
+}
+}  // namespace filterimpl
+
 const std::vector<std::string>& filterNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const Entry& e : registry())
+      if (!e.variant) v.emplace_back(e.name);
+    return v;
+  }();
+  return names;
+}
+
+const std::vector<std::string>& allFilterNames() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> v;
     for (const Entry& e : registry()) v.emplace_back(e.name);
@@ -81,7 +105,7 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
   const Entry* entry = find(name);
   if (!entry) {
     std::string list;
-    for (const auto& n : filterNames()) list += (list.empty() ? "" : ", ") + n;
+    for (const auto& n : allFilterNames()) list += (list.empty() ? "" : ", ") + n;
     throw OptionError("--filter", "unknown filter '" + name + "' (valid: " + list + ")");
   }
   if (!std::isfinite(radius) || radius <= 0)
@@ -106,9 +130,16 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
     p[key] = value;
   }
 
-  std::unique_ptr<Filter> f = entry->make(radius, p);
-  f->prepare();
-  return f;
+  return entry->make(radius, p);
+}
+
+std::unique_ptr<Filter> makeCourseVariant(const Filter& filter) {
+  const Entry* e = find(filter.name());
+  if (!e || !e->course) return nullptr;
+  FilterParams p = defaultFilterParams(e->course);
+  for (auto& [key, value] : p)
+    if (const FilterParams given = filter.params(); given.count(key)) value = given.at(key);
+  return makeFilter(e->course, static_cast<float>(defaultFilterRadius(e->course, p)), p);
 }
 
 }  // namespace aliaslab

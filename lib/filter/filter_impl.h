@@ -1,25 +1,19 @@
 // Internal helpers shared by the filter implementations (not an interface:
 // only lib/filter includes this). Each filter file defines its class over
-// one of the two CRTP bases below and a make function the factory calls
-// with the shape parameters already merged with their defaults.
+// one of the two CRTP bases below (which derive eval() from the profile g)
+// and the two functions its registry line names (factory.cpp): a make
+// function the factory calls with the shape parameters already merged with
+// their defaults, and a batch function giving FilterBatch its vectorised
+// kernel (filter_batch_impl.h; null: FilterBatch's loop over eval()).
 #pragma once
-#include <immintrin.h>
-
 #include <algorithm>
-#include <array>
-#include <atomic>
 #include <cmath>
 #include <memory>
 #include <string>
-#include <vector>
 
-#include <Eigen/Core>
-
+#include "core/math.h"
 #include "filter/filter.h"
-
-// The templated profiles below are instantiated for 8 lanes (Pack8) only to be inlined into functions built
-// for AVX2, so no call passes a Pack8 across the ABI that GCC's -Wpsabi note is about.
-#pragma GCC diagnostic ignored "-Wpsabi"
+#include "filter/filter_simd.h"
 
 namespace aliaslab::filterimpl {
 
@@ -37,335 +31,45 @@ double integrate(F&& f, double a, double b, int cells = 512) {
   return sum * 0.5 * h;
 }
 
-// sin(pi t) / (pi t) and cos(pi t) for float or Eigen float lanes: the same
-// operations in both, so eval() and the vectorised fast path agree bit for
-// bit (no libm). The reduction f = t - round(t) is exact, so the only error
-// is the float evaluation of the Taylor series in f^2 (to f^14, within 1e-8
-// on |f| <= 1/2): about an ulp. Valid for |t| < 2^22.
-namespace trig {
-constexpr float kRound = 12582912.f;  // 1.5 * 2^23: (v + kRound) - kRound rounds v to an integer
-/// Taylor coefficients in f^2 of sin(pi f) / (pi f) (odd = 1) and of cos(pi f) (odd = 0): (-1)^k pi^2k / (2k + odd)!
-constexpr std::array<float, 8> taylor(int odd) {
-  std::array<float, 8> c{};
-  double v = 1;
-  for (int k = 0; k < 8; ++k) {
-    c[k] = float(v);
-    v *= -(M_PI * M_PI) / ((2 * k + odd + 1) * (2 * k + odd + 2));
-  }
-  return c;
-}
-inline constexpr std::array<float, 8> kSinc = taylor(1), kCos = taylor(0);
-/// Sets f = t - round(t) and returns (-1)^round(t) times the series c in f^2.
-template <class T>
-[[gnu::always_inline]] inline T reduced(const T& t, T& f, const std::array<float, 8>& c) {
-  const T n = (t + kRound) - kRound, half = n * 0.5f;
-  f = t - n;
-  const T f2 = f * f, sign = 1.f - 4.f * (half - ((half - 0.25f + kRound) - kRound));  // half - floor(half): 0 or 1/2
-  T p = f2 * c[7] + c[6];
-  for (int k = 5; k >= 0; --k) p = p * f2 + c[k];
-  return sign * p;
-}
-/// sin(pi t) / (pi t), 1 at t = 0.
-template <class T>
-[[gnu::always_inline]] inline T sincPi(const T& t) {
-  T f;
-  const T q = reduced(t, f, kSinc);
-  return q * ((f + 1e-30f) / (t + 1e-30f));  // f / t; exactly 1 while round(t) = 0 (then f = t)
-}
-template <class T>
-[[gnu::always_inline]] inline T cosPi(const T& t) {
-  T f;
-  return reduced(t, f, kCos);
-}
-}  // namespace trig
-
-// Vectorised helpers (Filter::evalBatch): 4 lanes at a time.
-using Lanes = Eigen::Array4f;
-inline Eigen::Map<Lanes> lanes(float* p) { return Eigen::Map<Lanes>(p); }
-inline Eigen::Map<const Lanes> lanes(const float* p) { return Eigen::Map<const Lanes>(p); }
-
-/// Lane-wise a <= bound ? v : 0 (0 for NaN a): a compare and an and.
-inline Lanes keepLe(const Lanes& a, float bound, const Lanes& v) {
-  Lanes out;
-  _mm_storeu_ps(out.data(), _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(a.data()), _mm_set1_ps(bound)), _mm_loadu_ps(v.data())));
-  return out;
-}
-/// Lane-wise sqrt, correctly rounded like std::sqrt (Eigen's fast-math sqrt is not).
-inline Lanes sqrt4(const Lanes& v) {
-  Lanes out;
-  _mm_storeu_ps(out.data(), _mm_sqrt_ps(_mm_loadu_ps(v.data())));
-  return out;
-}
-/// Lane-wise a < bound ? v : w.
-inline Lanes ifLess(const Lanes& a, float bound, const Lanes& v, const Lanes& w) {
-  const __m128 m = _mm_cmplt_ps(_mm_loadu_ps(a.data()), _mm_set1_ps(bound));
-  Lanes out;
-  _mm_storeu_ps(out.data(), _mm_or_ps(_mm_and_ps(m, _mm_loadu_ps(v.data())), _mm_andnot_ps(m, _mm_loadu_ps(w.data()))));
-  return out;
-}
-
-// 8 lanes where the CPU has AVX2: GCC vector types in functions built for AVX2 by the target attribute.
-// Built without FMA, nothing is contracted, so lane by lane these are the float operations of the 4-lane
-// path and of eval(): the same bits on any CPU. A filter opts in with g8 (see SeparableFilter).
-#define ALIASLAB_AVX2 [[gnu::always_inline, gnu::target("avx2")]] inline
-using Pack8 = float __attribute__((vector_size(32)));
-using Mask8 = int __attribute__((vector_size(32)));
-inline bool cpuHasAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-/// Off: evalBatch stays at 4 lanes on any CPU (for tests comparing the two paths).
-inline std::atomic<bool>& eightLanesAllowed() {
-  static std::atomic<bool> allowed{true};
-  return allowed;
-}
-/// Whether evalBatch takes its 8-lane path.
-inline bool eightLanes() { return cpuHasAvx2() && eightLanesAllowed().load(std::memory_order_relaxed); }
-ALIASLAB_AVX2 Pack8 load8(const float* p) {
-  Pack8 v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
-}
-ALIASLAB_AVX2 void store8(float* p, const Pack8& v) { __builtin_memcpy(p, &v, sizeof v); }
-ALIASLAB_AVX2 Pack8 abs8(const Pack8& v) { return Pack8(Mask8(v) & 0x7fffffff); }
-/// Lane-wise a <= bound ? v : 0 (0 for NaN a), as keepLe.
-ALIASLAB_AVX2 Pack8 keepLe8(const Pack8& a, float bound, const Pack8& v) { return Pack8((a <= bound) & Mask8(v)); }
-/// Lane-wise a < bound ? v : w, as ifLess.
-ALIASLAB_AVX2 Pack8 ifLess8(const Pack8& a, float bound, const Pack8& v, const Pack8& w) { return a < bound ? v : w; }
-ALIASLAB_AVX2 Pack8 sqrt8(const Pack8& v) { return _mm256_sqrt_ps(v); }
-/// exp in 8 lanes, bit for bit Eigen's 4-lane Array4f::exp() (Eigen 3.4's pexp_float with pldexp_generic,
-/// multiply-adds unfused as in an SSE build), which the Gaussian's 4-lane path uses.
-ALIASLAB_AVX2 Pack8 exp8(const Pack8& in) {
-  // Eigen's pmin(a, b) / pmax(a, b) are minps(b, a) / maxps(b, a): b < a ? b : a, b > a ? b : a
-  const Pack8 x0 = 88.723f < in ? Pack8{} + 88.723f : in, x = -88.723f > x0 ? Pack8{} - 88.723f : x0;
-  const Pack8 m = _mm256_floor_ps(x * 1.44269504088896341f + 0.5f);
-  Pack8 r = m * -0.693359375f + x;
-  r = m * 2.12194440e-4f + r;
-  const Pack8 r2 = r * r, r3 = r2 * r;
-  Pack8 y = 1.9875691500E-4f * r + 1.3981999507E-3f, y1 = 4.1665795894E-2f * r + 1.6666665459E-1f;
-  const Pack8 y2 = r + 1.f;
-  y = y * r + 8.3334519073E-3f;
-  y1 = y1 * r + 5.0000001201E-1f;
-  y = y * r3 + y1;
-  y = y * r2 + y2;
-  // pldexp_generic(y, m): 2^m in four factors
-  const Pack8 e0 = -278.f > m ? Pack8{} - 278.f : m, ef = 278.f < e0 ? Pack8{} + 278.f : e0;
-  const Mask8 e = __builtin_convertvector(ef, Mask8), b = e >> 2;
-  Pack8 c = Pack8((b + 127) << 23), out = ((y * c) * c) * c;
-  c = Pack8((((e - b) - b) - b + 127) << 23);
-  out = out * c;
-  return in > out ? in : out;
-}
-
-/// Eigen's 4-lane cos (Array4f::cos()) of 8 floats, two lanes of 4 at a time (cos8's path for huge inputs).
-[[gnu::noinline]] inline void cosTwoByFour(const float* in, float* out) {
-  lanes(out) = lanes(in).cos();
-  lanes(out + 4) = lanes(in + 4).cos();
-}
-/// cos in 8 lanes, bit for bit Eigen 3.4's 4-lane Array4f::cos() in an SSE build (psincos_float<false>
-/// without FMA: the four-step reduction by pi/2, both polynomials, the select and the sign); 8 inputs with
-/// any |x| >= 18838 (Eigen's threshold for its slow reduction) go through Eigen's 4-lane cos itself.
-ALIASLAB_AVX2 Pack8 cos8(const Pack8& in) {
-  using U8 = unsigned __attribute__((vector_size(32)));
-  const Pack8 ax = abs8(in);
-  if (_mm256_movemask_ps(Pack8(ax >= 18838.f))) {
-    float a[8], b[8];
-    store8(a, in);
-    cosTwoByFour(a, b);
-    return load8(b);
-  }
-  Pack8 y = ax * 0.636619746685028076171875f;  // 2 / pi
-  const Pack8 rounded = y + 12582912.f;        // 1.5 * 2^23: the nearest integer in the low bits
-  const U8 n = U8(rounded);
-  y = rounded - 12582912.f;
-  Pack8 x = y * -1.5703125f + ax;
-  x = y * -0.000483989715576171875f + x;
-  x = y * 1.62865035235881805419921875e-07f + x;
-  x = y * 5.5644315544167710640977020375430583953857421875e-11f + x;
-  const U8 sign = ((n + 1u) << 30) & 0x80000000u;
-  const Pack8 x2 = x * x;
-  Pack8 c = 2.4372266125283204019069671630859375e-05f * x2 + -0.00138865201734006404876708984375f;
-  c = c * x2 + 0.041666619479656219482421875f;
-  c = c * x2 + -0.5f;
-  c = c * x2 + 1.f;
-  Pack8 sn = -0.0001959234114083702898469196984621021329076029360294342041015625f * x2 +
-             0.0083326873655616851693794799871284340042620897293090820312500000f;
-  sn = sn * x2 + -0.1666666203982298255503735617821803316473960876464843750000000000f;
-  sn = sn * x2;
-  sn = sn * x + x;
-  const Pack8 r = (n & 1u) == 0u ? c : sn;
-  return Pack8(U8(r) ^ sign);
-}
-
-/// Scratch floats for one evalBatch call, on the stack unless large.
-class Scratch {
- public:
-  explicit Scratch(size_t n) {
-    if (n > kSmall) big_.resize(n);
-  }
-  float* data() { return big_.empty() ? small_ : big_.data(); }
-
- private:
-  static constexpr size_t kSmall = 8192;
-  alignas(16) float small_[kSmall];
-  std::vector<float> big_;
-};
-
-/// f(dx, dy) = g(dx) g(dy) on the square [-r, r]^2; Derived::g(x) is the profile for |x| <= r.
-/// Derived may define g4 (g in 4 lanes, bit for bit g; also called beyond r and on padding)
-/// to vectorise evalBatch, and g8 (the same in 8 lanes, ALIASLAB_AVX2) to use AVX2 where the CPU has it.
+/// f(dx, dy) = g(dx) g(dy) on the square [-r, r]^2; Derived::g(x) is the profile for |x| <= r. Derived may
+/// define product(dx, dy), g(dx) g(dy) in another float form (the course's Gaussian: one exponential of the
+/// summed exponents), which eval() then returns inside the square.
 template <class Derived>
 class SeparableFilter : public Filter {
  public:
   using Filter::Filter;
   bool radial() const final { return false; }
   float profile(float x) const final { return std::abs(x) <= radius() ? self().g(x) : 0.f; }
-  float eval(float dx, float dy) const final { return profile(dx) * profile(dy); }
-  void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const final {
-    for (int a = 0; a < nx; ++a) out[a] = profile(dx[a]);  // row 0 holds g(dx) until last
-    for (int b = ny - 1; b >= 0; --b) {
-      const float gy = profile(dy[b]);
-      float* row = out + static_cast<size_t>(b) * nx;
-      for (int a = 0; a < nx; ++a) row[a] = out[a] * gy;
-    }
-  }
-  // n profile values per axis and sample, then the n x n products
-  void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
-                 float* out) const final {
-    const size_t stride = batchStride(count);
-    Scratch scratch(2 * n * stride);
-    float *gx = scratch.data(), *gy = gx + n * stride;
-    size_t done = 0;  // samples done in 8 lanes
-    if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
-      if (eightLanes()) done = evalBatch8(x, y, cx, cy, n, stride, gx, gy, out);
-    profiles(x, cx, n, stride, done, gx), profiles(y, cy, n, stride, done, gy);
-    for (int b = 0; b < n; ++b)
-      for (int a = 0; a < n; ++a)
-        for (size_t s = done; s < stride; s += 4)
-          lanes(out + (b * n + a) * stride + s) = lanes(gx + a * stride + s) * lanes(gy + b * stride + s);
+  float eval(float dx, float dy) const final {
+    if constexpr (requires(const Derived& f, float a) { f.product(a, a); })
+      return std::abs(dx) <= radius() && std::abs(dy) <= radius() ? self().product(dx, dy) : 0.f;
+    else
+      return profile(dx) * profile(dy);
   }
 
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
-  /// evalBatch in 8 lanes for the first stride rounded down to 8 samples (returned), the same operations.
-  [[gnu::target("avx2")]] size_t evalBatch8(const float* x, const float* y, const float* cx, const float* cy, int n,
-                                            size_t stride, float* gx, float* gy, float* out) const {
-    const size_t end = stride & ~size_t(7);
-    const float r = radius();
-    for (size_t s = 0; s < end; s += 8)
-      for (int a = 0; a < n; ++a) {
-        const Pack8 dx = load8(x + s) - (load8(cx + s) + static_cast<float>(a));
-        const Pack8 dy = load8(y + s) - (load8(cy + s) + static_cast<float>(a));
-        store8(gx + a * stride + s, keepLe8(abs8(dx), r, self().g8(dx)));
-        store8(gy + a * stride + s, keepLe8(abs8(dy), r, self().g8(dy)));
-      }
-    for (int b = 0; b < n; ++b)
-      for (int a = 0; a < n; ++a)
-        for (size_t s = 0; s < end; s += 8)
-          store8(out + (b * n + a) * stride + s, load8(gx + a * stride + s) * load8(gy + b * stride + s));
-    return end;
-  }
-  /// out[a * stride + s] = profile(p[s] - (c[s] + a)) for a < n, from sample `from` on.
-  void profiles(const float* p, const float* c, int n, size_t stride, size_t from, float* out) const {
-    const float r = radius();
-    for (size_t s = from; s < stride; s += 4)
-      for (int a = 0; a < n; ++a) {
-        const Lanes d = lanes(p + s) - (lanes(c + s) + static_cast<float>(a));
-        Lanes g;
-        if constexpr (requires(const Derived& f, const Lanes& l) { f.g4(l); }) g = self().g4(d);
-        else
-          for (int l = 0; l < 4; ++l) g[l] = self().g(d[l]);
-        lanes(out + a * stride + s) = keepLe(d.abs(), r, g);
-      }
-  }
 };
 
 /// f(dx, dy) = g(d), d = sqrt(dx^2 + dy^2) <= r; Derived::g(d) is the profile for 0 <= d <= r.
 template <class Derived>
 class RadialFilter : public Filter {
  public:
-  explicit RadialFilter(float r) : Filter(r), disc_(discBound(r)) {}
+  using Filter::Filter;
   bool radial() const final { return true; }
   float profile(float x) const final { return std::abs(x) <= radius() ? self().g(std::abs(x)) : 0.f; }
   float eval(float dx, float dy) const final {
     const float d = std::sqrt(dx * dx + dy * dy);
     return d <= radius() ? self().g(d) : 0.f;
   }
-  void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const override {
-    const float r = radius();
-    for (int b = 0; b < ny; ++b)
-      for (int a = 0; a < nx; ++a) {
-        const float d = std::sqrt(dx[a] * dx[a] + dy[b] * dy[b]);
-        out[static_cast<size_t>(b) * nx + a] = d <= r ? self().g(d) : 0.f;
-      }
-  }
-  // squared offsets per axis, then d and g4(d) per pixel, cut to the disc as eval() rounds it
-  void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
-                 float* out) const override {
-    const size_t stride = batchStride(count);
-    Scratch scratch(2 * n * stride);
-    float *dx2 = scratch.data(), *dy2 = dx2 + n * stride;
-    size_t done = 0;  // samples done in 8 lanes
-    if constexpr (requires(const Derived& f, const Pack8& v) { f.g8(v); })
-      if (eightLanes()) {
-        done = squaredOffsets8(x, cx, n, stride, dx2), squaredOffsets8(y, cy, n, stride, dy2);
-        weights8(dx2, dy2, n, stride, out);
-      }
-    squaredOffsets(x, cx, n, stride, dx2, done), squaredOffsets(y, cy, n, stride, dy2, done);
-    for (int b = 0; b < n; ++b)
-      for (int a = 0; a < n; ++a)
-        for (size_t s = done; s < stride; s += 4) {
-          const Lanes d2 = lanes(dx2 + a * stride + s) + lanes(dy2 + b * stride + s);
-          lanes(out + (b * n + a) * stride + s) = keepLe(d2, disc_, self().g4(sqrt4(d2)));
-        }
-  }
-  /// The weights loop of evalBatch in 8 lanes (Derived::g8, ALIASLAB_AVX2) for the first stride rounded
-  /// down to 8 samples, the same operations.
-  [[gnu::target("avx2")]] void weights8(const float* dx2, const float* dy2, int n, size_t stride, float* out) const {
-    const size_t end = stride & ~size_t(7);
-    for (int b = 0; b < n; ++b)
-      for (int a = 0; a < n; ++a)
-        for (size_t s = 0; s < end; s += 8) {
-          const Pack8 d2 = load8(dx2 + a * stride + s) + load8(dy2 + b * stride + s);
-          store8(out + (b * n + a) * stride + s, keepLe8(d2, disc_, self().g8(sqrt8(d2))));
-        }
-  }
-  /// g(d) in 4 lanes (default: lane by lane; also called beyond r).
-  Lanes g4(const Lanes& d) const {
-    Lanes v;
-    for (int l = 0; l < 4; ++l) v[l] = self().g(d[l]);
-    return v;
-  }
-
- protected:
-  /// out[a * stride + s] = (p[s] - (c[s] + a))^2 for a < n, from sample `from` on.
-  static void squaredOffsets(const float* p, const float* c, int n, size_t stride, float* out, size_t from = 0) {
-    for (int a = 0; a < n; ++a)
-      for (size_t s = from; s < stride; s += 4)
-        lanes(out + a * stride + s) = (lanes(p + s) - (lanes(c + s) + float(a))).square();
-  }
-  /// The same in 8 lanes for the first stride rounded down to 8 samples (returned).
-  [[gnu::target("avx2")]] static size_t squaredOffsets8(const float* p, const float* c, int n, size_t stride, float* out) {
-    const size_t end = stride & ~size_t(7);
-    for (int a = 0; a < n; ++a)
-      for (size_t s = 0; s < end; s += 8) {
-        const Pack8 d = load8(p + s) - (load8(c + s) + static_cast<float>(a));
-        store8(out + a * stride + s, d * d);
-      }
-    return end;
-  }
-  /// The largest dx^2 + dy^2 with sqrt(dx^2 + dy^2) <= r in float (the disc test without the sqrt).
-  static float discBound(float r) {
-    float s = r * r;
-    while (s > 0 && !(std::sqrt(s) <= r)) s = std::nextafter(s, 0.f);
-    while (std::sqrt(std::nextafter(s, kInf)) <= r) s = std::nextafter(s, kInf);
-    return s;
-  }
-  float disc_;  ///< discBound(radius())
 
  private:
   const Derived& self() const { return static_cast<const Derived&>(*this); }
 };
+
+class BatchKernel;
+/// A filter file's batch function: the kernel for `filter` (made by that file), or null.
+using BatchMaker = std::shared_ptr<const BatchKernel> (*)(const Filter& filter);
 
 /// Throws OptionError("--filter-param", ...) unless lo <= value <= hi.
 void requireRange(const std::string& filter, const std::string& param, double value, double lo, double hi);
@@ -379,7 +83,20 @@ std::unique_ptr<Filter> makeCatmullRom(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeLanczos(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeHann(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeBlackmanHarris(float r, const FilterParams& p);
+std::unique_ptr<Filter> makeCourseGaussian(float r, const FilterParams& p);
 /// Mitchell-Netravali profile with its own name (shared by mitchell and catmullrom).
 std::unique_ptr<Filter> makeMitchellNamed(const std::string& name, float r, double B, double C, bool showParams);
+
+// Batch functions, one per filter file with vectorised code (catmullrom uses mitchell's).
+std::shared_ptr<const BatchKernel> boxBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> tentBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> gaussianBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> mitchellBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> lanczosBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> hannBatch(const Filter& f);
+std::shared_ptr<const BatchKernel> blackmanHarrisBatch(const Filter& f);
+
+/// The batch function registered for a filter name (null for none or an unknown name).
+BatchMaker batchMaker(const std::string& name);
 
 }  // namespace aliaslab::filterimpl

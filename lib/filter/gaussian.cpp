@@ -11,9 +11,9 @@
 // the disc: 2 pi sigma^2 (1 - e_r) [- e_r pi r^2], e_r = exp(-r^2 / 2 sigma^2).
 // Non-negative, no ringing, a tunable blur; subtract the edge at small r /
 // sigma ratios where the cut is visible. The classic reconstruction uses
-// the course's uncut Gaussian over a square support of ceil(2 sigma - 0.5).
+// its course variant, course-gaussian (the course's uncut Gaussian).
 #include "core/error.h"
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -25,20 +25,29 @@ class GaussianFilter final : public RadialFilter<GaussianFilter> {
         k_(static_cast<float>(-0.5 / (sigma * sigma))),
         edge_(subtract ? std::exp(k_ * r * r) : 0.f) {}
   float g(float d) const { return std::exp(k_ * d * d) - edge_; }
-  // separable in value: nx + ny exponentials per footprint, cut to the disc
-  void evalGrid(const float* dx, int nx, const float* dy, int ny, float* out) const override {
-    const float r = radius();
-    for (int a = 0; a < nx; ++a) out[a] = std::exp(k_ * dx[a] * dx[a]);  // row 0 holds exp(k dx^2) until last
-    for (int b = ny - 1; b >= 0; --b) {
-      const float ey = std::exp(k_ * dy[b] * dy[b]);
-      float* row = out + static_cast<size_t>(b) * nx;
-      for (int a = 0; a < nx; ++a)
-        row[a] = std::sqrt(dx[a] * dx[a] + dy[b] * dy[b]) <= r ? out[a] * ey - edge_ : 0.f;
-    }
+  float k() const { return k_; }
+  float edge() const { return edge_; }
+  double integral() const override {
+    const double r2 = double(radius()) * radius(), er = std::exp(-r2 / (2 * sigma_ * sigma_));
+    return 2 * M_PI * sigma_ * sigma_ * (1 - er) - (subtract_ ? er * M_PI * r2 : 0.0);
   }
-  // per-axis exponentials, products cut to the disc as eval() rounds it; 8 lanes where the CPU has AVX2
-  void evalBatch(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
-                 float* out) const override {
+  std::string name() const override { return "gaussian"; }
+  FilterParams params() const override { return {{"sigma", sigma_}, {"subtract_edge", subtract_ ? 1 : 0}}; }
+
+ private:
+  double sigma_;
+  bool subtract_;
+  float k_;     ///< -1 / (2 sigma^2)
+  float edge_;  ///< subtracted edge value (0 unless subtract_edge)
+};
+
+/// The batch: per-axis exponentials, products cut to the disc as eval() rounds it; 8 lanes where the CPU has
+/// AVX2 (exp8: Eigen's exp bit for bit).
+class GaussianBatch final : public BatchKernel {
+ public:
+  explicit GaussianBatch(const GaussianFilter& f) : k_(f.k()), edge_(f.edge()), disc_(discBound(f.radius())) {}
+  void eval(int count, const float* x, const float* y, const float* cx, const float* cy, int n,
+            float* out) const override {
     const size_t stride = batchStride(count);
     Scratch scratch(4 * n * stride);
     float *dx2 = scratch.data(), *dy2 = dx2 + n * stride, *ex = dy2 + n * stride, *ey = ex + n * stride;
@@ -59,8 +68,9 @@ class GaussianFilter final : public RadialFilter<GaussianFilter> {
               keepLe(lanes(dx2 + i) + lanes(dy2 + j), disc_, lanes(ex + i) * lanes(ey + j) - edge_);
         }
   }
-  /// evalBatch's exponentials and weights in 8 lanes (exp8: Eigen's exp bit for bit) for the first stride
-  /// rounded down to 8 samples.
+
+ private:
+  /// The exponentials and weights in 8 lanes for the first stride rounded down to 8 samples.
   [[gnu::target("avx2")]] void weights8(const float* dx2, const float* dy2, float* ex, float* ey, int n,
                                           size_t stride, float* out) const {
     const size_t end = stride & ~size_t(7);
@@ -75,22 +85,15 @@ class GaussianFilter final : public RadialFilter<GaussianFilter> {
                  keepLe8(load8(dx2 + i) + load8(dy2 + j), disc_, load8(ex + i) * load8(ey + j) - edge_));
         }
   }
-  float evalClassic(float dx, float dy) const override { return std::exp(k_ * (dx * dx + dy * dy)); }
-  double integral() const override {
-    const double r2 = double(radius()) * radius(), er = std::exp(-r2 / (2 * sigma_ * sigma_));
-    return 2 * M_PI * sigma_ * sigma_ * (1 - er) - (subtract_ ? er * M_PI * r2 : 0.0);
-  }
-  std::string name() const override { return "gaussian"; }
-  FilterParams params() const override { return {{"sigma", sigma_}, {"subtract_edge", subtract_ ? 1 : 0}}; }
-
- private:
-  double sigma_;
-  bool subtract_;
-  float k_;     ///< -1 / (2 sigma^2)
-  float edge_;  ///< subtracted edge value (0 unless subtract_edge)
+  float k_, edge_, disc_;
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> gaussianBatch(const Filter& f) {
+  const auto* g = dynamic_cast<const GaussianFilter*>(&f);
+  return g ? std::make_shared<GaussianBatch>(*g) : nullptr;
+}
 
 std::unique_ptr<Filter> makeGaussian(float r, const FilterParams& p) {
   const double sigma = p.at("sigma"), sub = p.at("subtract_edge");

@@ -8,7 +8,7 @@
 // g(x) = sinc(x') * 0.5 (1 + cos(pi x / r)), x' = tau x / r: the same sinc
 // as lanczos under a raised-cosine window, which falls to 0 smoothly at r.
 // Integral numeric (computed once). Slightly softer ringing than Lanczos.
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -39,6 +39,8 @@ class HannFilter final : public SeparableFilter<HannFilter> {
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> hannBatch(const Filter& f) { return batchFor<HannFilter>(f); }
 
 std::unique_ptr<Filter> makeHann(float r, const FilterParams& p) {
   requireRange("hann", "tau", p.at("tau"), 1, 1e3);

@@ -11,7 +11,7 @@
 // -0.1473 and integral 0.99706 over [-3, 3]. Integral numeric (computed
 // once). The sharpest filter here, closest to the ideal low-pass; rings at
 // edges (negative lobes, possible negative pixels).
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -45,6 +45,8 @@ class LanczosFilter final : public SeparableFilter<LanczosFilter> {
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> lanczosBatch(const Filter& f) { return batchFor<LanczosFilter>(f); }
 
 std::unique_ptr<Filter> makeLanczos(float r, const FilterParams& p) {
   requireRange("lanczos", "tau", p.at("tau"), 1, 1e3);

@@ -12,7 +12,7 @@
 // integral is (r / 2)^2. B = C = 1/3 (Mitchell and Netravali's advice) has
 // small negative lobes: sharper than the Gaussian with little ringing; the
 // usual radius is 2.
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -55,6 +55,8 @@ class MitchellFilter final : public SeparableFilter<MitchellFilter> {
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> mitchellBatch(const Filter& f) { return batchFor<MitchellFilter>(f); }
 
 std::unique_ptr<Filter> makeMitchellNamed(const std::string& name, float r, double B, double C, bool showParams) {
   return std::make_unique<MitchellFilter>(name, r, B, C, showParams);

@@ -7,7 +7,7 @@
 // f(dx, dy) = max(0, 1 - d / r), d = sqrt(dx^2 + dy^2) (radial, not the
 // separable product of two 1-D tents). Integral pi r^2 / 3. A cheap
 // non-negative low-pass: smoother than the box, blurrier than Mitchell.
-#include "filter/filter_impl.h"
+#include "filter/filter_batch_impl.h"
 
 namespace aliaslab::filterimpl {
 namespace {
@@ -30,6 +30,8 @@ class TentFilter final : public RadialFilter<TentFilter> {
 };
 
 }  // namespace
+
+std::shared_ptr<const BatchKernel> tentBatch(const Filter& f) { return batchFor<TentFilter>(f); }
 
 std::unique_ptr<Filter> makeTent(float r, const FilterParams&) { return std::make_unique<TentFilter>(r); }
 

@@ -3,14 +3,14 @@
 //
 // Names: "adaptive-<method>:<base>[+key=value...]", e.g.
 // "adaptive-contrast:jittered" or "adaptive-subdiv:sobol+threshold=0.05+depth=4".
-// <base> is any name of samplerNames(). This is a small registry of its own
-// (adaptiveMethodNames(), makeAdaptiveSampler()), not part of makeSampler():
+// <base> is any name of samplerNames(). These are not part of makeSampler():
 // a Sampler is a pure function of (seed, pixel) and never sees radiance,
 // while an adaptive method decides where to sample from what it has traced,
-// so it needs the tracer and lives in the render layer. Callers test
-// isAdaptiveSamplerName() and trace with traceAdaptive() instead of
-// traceSamples(); everything downstream (reconstruction with any filter,
-// the study's metrics) takes the result like any sample set.
+// so it needs the tracer and lives in the render layer. Callers take any
+// sampler name, adaptive or not, from the one factory makeSampleSource()
+// (render/sample_source.h), which builds on makeAdaptiveSampler() here, and
+// trace what it gives; everything downstream (reconstruction with any
+// filter, the study's metrics) takes the result like any sample set.
 // (adaptive.cpp: names and parameters; adaptive_trace.cpp: the methods.)
 //
 // Protocol (all three methods):

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/parallel.h"
+#include "filter/filter_sampler.h"
 
 namespace aliaslab {
 namespace {
@@ -77,8 +78,9 @@ SampleBuffer traceSamples(const Tracer& tracer, const Sampler& sampler, int widt
 
 SampleBuffer traceImportanceSamples(const Tracer& tracer, const Sampler& sampler, const Filter& filter,
                                     int width, int height, int threads, const Progress& progress) {
+  const FilterSampler importance(filter);  // the table, built once for the trace
   return traceWith(tracer, sampler, width, height, threads, progress, [&](int i, int j, const Vec2& u, FilmSample& s) {
-    const Vec2 offset = filter.sample(u, s.weight);
+    const Vec2 offset = importance.sample(u, s.weight);
     s.x = i + 0.5f + offset.x(), s.y = j + 0.5f + offset.y();
   });
 }

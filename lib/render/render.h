@@ -21,8 +21,9 @@ SampleBuffer traceSamples(const Tracer& tracer, const Sampler& sampler, int widt
                           int threads = 0, const Progress& progress = {});
 
 /// Filter importance sampling: each pixel's sampler point u is mapped
-/// through filter.sample(u) to an offset around the pixel centre; the sample
-/// keeps the returned weight.
+/// through FilterSampler::sample(u) (filter/filter_sampler.h, its table built
+/// once per call) to an offset around the pixel centre; the sample keeps the
+/// returned weight.
 /// Position = pixel centre (i + 0.5, j + 0.5) + offset.
 SampleBuffer traceImportanceSamples(const Tracer& tracer, const Sampler& sampler, const Filter& filter,
                                     int width, int height, int threads = 0, const Progress& progress = {});

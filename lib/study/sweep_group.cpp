@@ -7,7 +7,7 @@
 #include "film/film.h"
 #include "render/adaptive.h"
 #include "render/render.h"
-#include "sampling/sampler.h"
+#include "render/sample_source.h"
 
 namespace aliaslab {
 
@@ -41,15 +41,11 @@ int innerThreads(int threads, size_t tasks) { return std::max(1, threads / int(s
 SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
   SeedTrace t;
   const Stopwatch trace;
-  if (isAdaptiveSamplerName(g.group.sampler))  // adaptive samplers (render/adaptive.h) trace their own sample set
-    t.samples = traceAdaptive(g.tracer, *makeAdaptiveSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
-                              g.scene.width, g.scene.height, innerThreads);
-  else
-    t.samples = traceSamples(g.tracer, *makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k)),
-                             g.scene.width, g.scene.height, innerThreads);
+  const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
+  t.samples = source->trace(g.tracer, g.scene.width, g.scene.height, innerThreads);
   t.traceMs = trace.ms();
   t.spent = spentSamples(t.samples);
-  if (k == 0 && g.images && isAdaptiveSamplerName(g.group.sampler)) t.density = sampleDensity(t.samples);
+  if (k == 0 && g.images && source->adaptive()) t.density = sampleDensity(t.samples);
   g.inFlight.add(bufferBytes(t.samples));
   std::vector<const Filter*> filters;
   for (const PendingRow& p : g.rows)
@@ -71,10 +67,9 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
   RowImage out;
   const Filter& filter = *p.filter.filter;
   if (p.mode == ReconMode::ImportanceSampled) {
-    const auto sampler = makeSampler(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
+    const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
     const Stopwatch trace;
-    const SampleBuffer samples = traceImportanceSamples(g.tracer, *sampler, filter, g.scene.width, g.scene.height,
-                                                        innerThreads);
+    const SampleBuffer samples = source->traceImportance(g.tracer, filter, g.scene.width, g.scene.height, innerThreads);
     out.traceMs = trace.ms();
     out.traceS = out.traceMs / 1000;
     g.inFlight.add(bufferBytes(samples));

@@ -1,7 +1,10 @@
-// Filter contract tests over every registered filter and a range of radii,
-// plus the published facts about the classic profiles.
+// Filter contract tests over every registered filter (allFilterNames(): the
+// study's filters and the course variants) and a range of radii, with the
+// batch evaluator and the importance sampler built beside each, plus the
+// published facts about the classic profiles.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <tuple>
@@ -10,7 +13,9 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "filter/filter.h"
-#include "filter/filter_impl.h"
+#include "filter/filter_batch.h"
+#include "filter/filter_sampler.h"
+#include "filter/filter_simd.h"
 
 namespace aliaslab {
 namespace {
@@ -77,30 +82,20 @@ TEST_P(FilterContract, SymmetricUnderReflectionAndSwap) {
   }
 }
 
-TEST_P(FilterContract, EvalGridEqualsEval) {
-  const float dx[3] = {-0.7f * filter->radius(), 0.1f, 0.45f * filter->radius()}, dy[2] = {0.2f, -0.9f * filter->radius()};
-  float out[6];
-  filter->evalGrid(dx, 3, dy, 2, out);
-  for (int b = 0; b < 2; ++b)
-    for (int a = 0; a < 3; ++a) {
-      const float e = filter->eval(dx[a], dy[b]);
-      EXPECT_NEAR(out[b * 3 + a], e, 2e-6f * std::abs(e) + 1e-12f);  // float rounding only
-    }
-}
-
 TEST_P(FilterContract, EvalBatchEqualsEval) {
   // the film's fast path: n x n centres from one before the first within r (so some lie beyond it)
   // 12 samples: 8 in 8 lanes where the CPU has AVX2, 4 in 4 lanes; 37: padded to 40
   const float r = filter->radius();
+  const FilterBatch batch(*filter);
   for (const int count : {12, 37}) {
-    const int n = int(std::ceil(2 * r)) + 2, stride = Filter::batchStride(count);
+    const int n = int(std::ceil(2 * r)) + 2, stride = FilterBatch::stride(count);
     std::vector<float> x(stride), y(stride), cx(stride), cy(stride), out(size_t(n) * n * stride);
     HashRng rng(hashWords(4, r * 1000, count));
     for (int s = 0; s < stride; ++s) {
       x[s] = 30 * rng.nextFloat() - 5, y[s] = 30 * rng.nextFloat() - 5;
       cx[s] = std::floor(x[s] - r) - 0.5f, cy[s] = std::floor(y[s] - r) - 0.5f;
     }
-    filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, out.data());
+    batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, out.data());
     for (int s = 0; s < count; ++s)
       for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
@@ -118,20 +113,21 @@ TEST_P(FilterContract, EvalBatchEqualsEval) {
 }
 
 TEST_P(FilterContract, EightLanesGiveTheFourLaneBits) {
-  // evalBatch's 8-lane path (CPUs with AVX2) and its 4-lane path give the same weights, bit for bit, so a
+  // FilterBatch's 8-lane path (CPUs with AVX2) and its 4-lane path give the same weights, bit for bit, so a
   // study's numbers do not depend on the CPU (the Gaussian included, whose weights are not eval()'s bits)
   if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the 4-lane path runs";
   const float r = filter->radius();
-  const int n = int(std::ceil(2 * r)) + 2, count = 64, stride = Filter::batchStride(count);
+  const int n = int(std::ceil(2 * r)) + 2, count = 64, stride = FilterBatch::stride(count);
+  const FilterBatch batch(*filter);
   std::vector<float> x(stride), y(stride), cx(stride), cy(stride), eight(size_t(n) * n * stride), four(eight.size());
   HashRng rng(hashWords(5, r * 1000));
   for (int s = 0; s < stride; ++s) {
     x[s] = 30 * rng.nextFloat() - 5, y[s] = 30 * rng.nextFloat() - 5;
     cx[s] = std::floor(x[s] - r) - 0.5f, cy[s] = std::floor(y[s] - r) - 0.5f;
   }
-  filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, eight.data());
+  batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, eight.data());
   filterimpl::eightLanesAllowed() = false;
-  filter->evalBatch(count, x.data(), y.data(), cx.data(), cy.data(), n, four.data());
+  batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, four.data());
   filterimpl::eightLanesAllowed() = true;
   size_t differ = 0, nonzero = 0;
   for (size_t k = 0; k < eight.size(); ++k)
@@ -144,24 +140,45 @@ TEST_P(FilterContract, IntegralMatchesQuadrature) {
   const double q = quad2(*filter, [](double v) { return v; }, 64);
   EXPECT_NEAR(filter->integral(), q, 1e-4 * std::abs(q));
   const double qa = quad2(*filter, [](double v) { return std::abs(v); }, 256);
-  EXPECT_NEAR(filter->absIntegral(), qa, 1e-4 * qa);
+  EXPECT_NEAR(FilterSampler(*filter).absIntegral(), qa, 1e-4 * qa);
+}
+
+TEST_P(FilterContract, UnitWeightsOnlyWhereEvalIsOneOnTheSupport) {
+  // the film skips the weights of a unit-weight filter: eval() must be 1 wherever it is not 0
+  if (!FilterBatch(*filter).unitWeights()) return;
+  const float r = filter->radius();
+  HashRng rng(hashWords(6, r * 1000));
+  for (int k = 0; k < 2000; ++k) {
+    const float dx = (2 * rng.nextFloat() - 1) * r, dy = (2 * rng.nextFloat() - 1) * r, f = filter->eval(dx, dy);
+    EXPECT_TRUE(f == 1.f || f == 0.f) << dx << " " << dy;
+  }
+}
+
+TEST_P(FilterContract, CourseVariantIsARegisteredFilterOfItsOwn) {
+  // the classic gather's variant (if any) is made by the registry and has no variant of its own
+  const std::unique_ptr<Filter> course = makeCourseVariant(*filter);
+  if (!course) return;
+  EXPECT_NE(std::find(allFilterNames().begin(), allFilterNames().end(), course->name()), allFilterNames().end());
+  EXPECT_EQ(makeCourseVariant(*course), nullptr);
+  for (const auto& [key, value] : course->params()) EXPECT_EQ(value, filter->params().at(key)) << key;
 }
 
 TEST_P(FilterContract, SampleDensityIsAbsFOverAbsIntegral) {
   // stratified u (300 x 300), 8 x 8 bins over the support square
   const float r = filter->radius();
   const int n = 300, bins = 8;
+  const FilterSampler sampler(*filter);
   std::vector<double> hist(bins * bins, 0.0);
   for (int a = 0; a < n; ++a)
     for (int b = 0; b < n; ++b) {
       HashRng rng(hashWords(3, a, b));
       const Vec2 u((a + rng.nextFloat()) / n, (b + rng.nextFloat()) / n);
       float w;
-      const Vec2 p = filter->sample(u, w);
+      const Vec2 p = sampler.sample(u, w);
       const float f = filter->eval(p.x(), p.y());
       ASSERT_LE(std::abs(p.x()), r);
       ASSERT_LE(std::abs(p.y()), r);
-      EXPECT_FLOAT_EQ(std::abs(w), float(filter->absIntegral()));
+      EXPECT_FLOAT_EQ(std::abs(w), float(sampler.absIntegral()));
       if (f != 0) {
         EXPECT_EQ(w > 0, f > 0) << p.transpose();
       }
@@ -192,10 +209,12 @@ TEST_P(FilterContract, DescribeNamesRadiusAndParams) {
 }
 
 INSTANTIATE_TEST_SUITE_P(AllFilters, FilterContract,
-                         ::testing::Combine(::testing::ValuesIn(filterNames()),
+                         ::testing::Combine(::testing::ValuesIn(allFilterNames()),
                                             ::testing::Values(0.3f, 0.5f, 1.f, 1.5f, 2.3f, 4.f)),
                          [](const auto& info) {
-                           return std::get<0>(info.param) + "_r" +
+                           std::string name = std::get<0>(info.param);
+                           std::replace(name.begin(), name.end(), '-', '_');  // (test names take no '-')
+                           return name + "_r" +
                                   std::to_string(int(std::lround(std::get<1>(info.param) * 10)));
                          });
 
@@ -251,9 +270,22 @@ TEST(FilterFacts, GaussianEdgeValueSubtractedOnlyWhenAsked) {
   EXPECT_NEAR(sub->integral(), 2 * M_PI * 0.25 * (1 - er) - er * M_PI, 1e-9);
   EXPECT_EQ(plain->describe(), "gaussian r=1 sigma=0.5 subtract_edge=0");
   EXPECT_EQ(makeFilter("gaussian", 1.5f)->describe(), "gaussian r=1.5 sigma=0.5 subtract_edge=0");
-  // the classic weight is the uncut Gaussian
-  EXPECT_NEAR(plain->evalClassic(1.5f, 0), std::exp(-2.25 / 0.5), 1e-7);
   EXPECT_EQ(plain->eval(1.5f, 0), 0.f);
+}
+
+TEST(FilterFacts, CourseGaussianIsTheUncutGaussianOverTheCoursesSquare) {
+  // the classic gather's weight: exp(-d^2 / 2 sigma^2) uncut over pixels i-R..i+R, R = ceil(2 sigma - 0.5)
+  const auto course = makeCourseVariant(*makeFilter("gaussian", 1.f, {{"sigma", 0.5}, {"subtract_edge", 1}}));
+  ASSERT_NE(course, nullptr);
+  EXPECT_EQ(course->describe(), "course-gaussian r=1.5 sigma=0.5");
+  EXPECT_FLOAT_EQ(course->eval(1.5f, 0), std::exp(-2.f * (1.5f * 1.5f + 0.f)));
+  EXPECT_FLOAT_EQ(course->eval(1.4f, -1.5f), std::exp(-2.f * (1.4f * 1.4f + 1.5f * 1.5f)));  // the corner too: uncut
+  EXPECT_EQ(course->eval(1.5001f, 0), 0.f);
+  for (double sigma : {0.1, 0.26, 0.5, 0.75, 1.0, 1.3, 4.0})
+    EXPECT_EQ(defaultFilterRadius("course-gaussian", {{"sigma", sigma}}), std::ceil(2 * sigma - 0.5) + 0.5) << sigma;
+  const double axis = 0.5 * std::sqrt(2 * M_PI) * std::erf(1.5 / (0.5 * M_SQRT2));
+  EXPECT_NEAR(course->integral(), axis * axis, 1e-12);
+  EXPECT_EQ(makeCourseVariant(*makeFilter("tent", 1.f)), nullptr);
 }
 
 TEST(FilterFacts, BoxTentAndBlackmanHarrisClosedForms) {
@@ -297,7 +329,7 @@ size_t differFromFourLanes(std::vector<float> in, float pad, void (*eight)(const
 }  // namespace
 
 TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
-  // the Blackman-Harris evalBatch must give the same bits with and without AVX2: inputs from -200 to 200 in
+  // the Blackman-Harris batch (FilterBatch) must give the same bits with and without AVX2: inputs from -200 to 200 in
   // steps of about 1e-4 (every octant and both polynomials, the multiples of pi/2), random floats of every
   // exponent up to 1e38, both sides of Eigen's huge threshold (18838) in one group of 8 and apart, and
   // zeros, infinities and NaN
@@ -315,7 +347,7 @@ TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
 }
 
 TEST(FilterFacts, EightLaneExpIsEigensFourLaneExpBitForBit) {
-  // the Gaussian's evalBatch must give the same bits with and without AVX2: every input from -110 (results
+  // the Gaussian's batch (FilterBatch) must give the same bits with and without AVX2: every input from -110 (results
   // below float's normal range, the 2^m split of pldexp) to 100 in steps of about 1e-4, and the clamps
   if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
   std::vector<float> in;
@@ -355,7 +387,10 @@ TEST(FilterFactory, OutOfRangeParametersRejected) {
 TEST(FilterFactory, NamesInDocumentedOrder) {
   const std::vector<std::string> expected = {"box", "tent", "gaussian", "mitchell", "catmullrom", "lanczos", "hann", "blackmanharris"};
   EXPECT_EQ(filterNames(), expected);
-  for (const auto& n : filterNames()) EXPECT_EQ(makeFilter(n, 1)->name(), n);
+  std::vector<std::string> all = expected;
+  all.push_back("course-gaussian");
+  EXPECT_EQ(allFilterNames(), all);
+  for (const auto& n : allFilterNames()) EXPECT_EQ(makeFilter(n, 1)->name(), n);
 }
 
 }  // namespace

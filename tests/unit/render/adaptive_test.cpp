@@ -1,7 +1,9 @@
 // Adaptive sampling (render/adaptive.h): the exact budget, samples inside
 // their pixels, refinement on an edge and none on a flat image, error at
 // equal budget against the base sampler, thread-count independence, and
-// variable-count sample buffers in every reconstruction.
+// variable-count sample buffers in every reconstruction; and the contract of
+// every sample source (render/sample_source.h), adaptive or not, over the
+// whole registry (sampleSourceNames()).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,6 +15,7 @@
 #include "core/error.h"
 #include "core/hash.h"
 #include "render/adaptive.h"
+#include "render/sample_source.h"
 #include "support/scratch_dir.h"
 #include "study/config.h"
 #include "study/csv.h"
@@ -21,7 +24,12 @@
 namespace aliaslab {
 namespace {
 
-const char* const kMethods[] = {"adaptive-contrast:jittered", "adaptive-error:jittered", "adaptive-subdiv:jittered"};
+/// Every registered adaptive method over the jittered base.
+const std::vector<std::string> kMethods = [] {
+  std::vector<std::string> v;
+  for (const std::string& m : adaptiveMethodNames()) v.push_back("adaptive-" + m + ":jittered");
+  return v;
+}();
 
 /// A scene built in code: flat-coloured objects (no lights: each shows its diffuse colour) under an
 /// orthographic camera looking down -z at the square [-1, 1]^2.
@@ -102,7 +110,7 @@ void expectInsidePixels(const SampleBuffer& b) {
 TEST(Adaptive, BudgetExactAndSamplesInsideTheirPixels) {
   FlatScene s;
   const Tracer& t = edgeScene(s);
-  for (const char* name : kMethods)
+  for (const std::string& name : kMethods)
     for (int spp : {1, 3, 4, 7, 16, 33}) {
       SCOPED_TRACE(std::string(name) + " spp " + std::to_string(spp));
       const auto a = makeAdaptiveSampler(name, spp, 5);
@@ -155,7 +163,7 @@ TEST(Adaptive, EdgeGetsTheSamplesAndLowerErrorThanTheBase) {
   double baseError = 0;
   for (int k = 0; k < seeds; ++k)
     baseError += mse(pixelMeans(traceSamples(t, *makeSampler("jittered", spp, k), w, h, 2)), ref) / seeds;
-  for (const char* name : kMethods) {
+  for (const std::string& name : kMethods) {
     SCOPED_TRACE(name);
     double error = 0, edge = 0, flat = 0;
     for (int k = 0; k < seeds; ++k) {
@@ -170,7 +178,7 @@ TEST(Adaptive, EdgeGetsTheSamplesAndLowerErrorThanTheBase) {
         }
       edge += e / ne / seeds, flat += f / nf / seeds;
     }
-    std::printf("%s: mean spp on edge pixels %.1f, on flat pixels %.1f; mse %.3g vs jittered %.3g\n", name, edge,
+    std::printf("%s: mean spp on edge pixels %.1f, on flat pixels %.1f; mse %.3g vs jittered %.3g\n", name.c_str(), edge,
                 flat, error, baseError);
     EXPECT_GT(edge, 1.5 * flat);
     EXPECT_LT(error, baseError);
@@ -185,7 +193,7 @@ TEST(Adaptive, FlatSceneSpendsEvenlyAndMatchesTheBase) {
   FlatScene s;
   const Tracer& t = flatScene(s);
   const Color c(0.3f, 0.6f, 0.9f);
-  for (const char* name : kMethods)
+  for (const std::string& name : kMethods)
     for (int spp : {5, 16}) {
       SCOPED_TRACE(std::string(name) + " spp " + std::to_string(spp));
       const SampleBuffer b = traceAdaptive(t, *makeAdaptiveSampler(name, spp, 3), 20, 12, 2);
@@ -206,7 +214,7 @@ TEST(Adaptive, FlatSceneSpendsEvenlyAndMatchesTheBase) {
 TEST(Adaptive, IdenticalForAnyThreadCount) {
   FlatScene s;
   const Tracer& t = edgeScene(s);
-  for (const char* name : kMethods) {
+  for (const std::string& name : kMethods) {
     SCOPED_TRACE(name);
     const auto a = makeAdaptiveSampler(name, 9, 17);
     const SampleBuffer one = traceAdaptive(t, *a, 27, 19, 1);
@@ -335,10 +343,12 @@ TEST(Adaptive, AreaWeightsInTheWeightedAverage) {
                             Color(toUnitFloat(hashWords(key, 2)), 0.5f, float(i % 3)),
                             0.05f + toUnitFloat(hashWords(key, 3))};
       }
-  for (const char* name : {"box", "tent", "mitchell"})
+  for (const char* name : {"box", "tent", "mitchell", "gaussian"})
     for (float r : {0.5f, 1.5f, 2.f}) {
       SCOPED_TRACE(std::string(name) + " r " + std::to_string(r));
       const auto f = makeFilter(name, r);
+      const auto course = makeCourseVariant(*f);  // the classic gather's filter (the Gaussian's: course-gaussian)
+      const Filter& cf = course ? *course : *f;
       for (bool weighted : {true, false}) {
         b.setAreaWeighted(weighted);
         const Image img = reconstruct(b, *f, ReconMode::WeightedAverage, 2).image;
@@ -354,7 +364,7 @@ TEST(Adaptive, AreaWeightsInTheWeightedAverage) {
               norm += fw;
               const int si = static_cast<int>(s.x), sj = static_cast<int>(s.y);
               if (std::abs(si - i) <= R && std::abs(sj - j) <= R) {
-                const double cw = f->evalClassic(s.x - (i + 0.5f), s.y - (j + 0.5f)) * ww;
+                const double cw = cf.eval(s.x - (i + 0.5f), s.y - (j + 0.5f)) * ww;
                 for (int c = 0; c < 3; ++c) csum[c] += cw * s.L[c];
                 cnorm += cw;
               }
@@ -377,6 +387,45 @@ TEST(Adaptive, AreaWeightsInTheWeightedAverage) {
 
 // An adaptive sampler in the sweep: traced once per seed (exactly the budget of rays), reconstructed with every
 // filter; mean_spp is the budget, max_spp above it (fixed samplers: both spp); the density panel is written.
+// Sample sources ------------------------------------------------------------
+
+// Every name of the registry, adaptive or not, through the one factory: the budget (exactly spp per pixel on
+// average, every pixel at least one sample), samples inside their pixels, the same buffer for any thread
+// count, the capabilities it declares (variable counts and no importance sampling exactly when adaptive),
+// and its name and line.
+TEST(SampleSources, EverySourceOfTheRegistryKeepsTheContract) {
+  FlatScene s;
+  const Tracer& t = edgeScene(s);
+  const auto filter = makeFilter("tent", 1.f);
+  const int w = 9, h = 7, spp = 4;
+  for (const std::string& name : sampleSourceNames()) {
+    SCOPED_TRACE(name);
+    const auto source = makeSampleSource(name, spp, 3);
+    EXPECT_EQ(source->name(), name);
+    EXPECT_FALSE(source->describe().empty());
+    EXPECT_EQ(source->spp(), spp);
+    const SampleBuffer a = source->trace(t, w, h, 1), b = source->trace(t, w, h, 3);
+    EXPECT_EQ(a.samples().size(), size_t(w * h * spp));
+    EXPECT_EQ(a.variable(), source->adaptive());
+    expectInsidePixels(a);
+    ASSERT_EQ(a.samples().size(), b.samples().size());
+    for (size_t k = 0; k < a.samples().size(); ++k) {
+      const FilmSample &p = a.samples()[k], &q = b.samples()[k];
+      ASSERT_TRUE(p.x == q.x && p.y == q.y && (p.L == q.L).all() && p.weight == q.weight) << "sample " << k;
+    }
+    if (source->adaptive()) {
+      EXPECT_THROW(source->traceImportance(t, *filter, w, h, 1), std::invalid_argument);
+    } else {
+      EXPECT_EQ(source->pixelSampler().spp(), spp);
+      EXPECT_EQ(source->traceImportance(t, *filter, w, h, 1).samples().size(), size_t(w * h * spp));
+    }
+  }
+  EXPECT_EQ(sampleSourceNames().size(),
+            allSamplerNames().size() + adaptiveMethodNames().size() * samplerNames().size());
+  for (const char* bad : {"jitterd", "adaptive-sharp:jittered", "adaptive-contrast:nope"})
+    EXPECT_THROW(makeSampleSource(bad, 4, 0), OptionError) << bad;
+}
+
 TEST(AdaptiveStudy, SweepRowsCarryTheSamplesSpent) {
   namespace fs = std::filesystem;
   const fs::path dir = testing::scratchDir("aliaslab_adaptive_test");
