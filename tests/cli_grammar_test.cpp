@@ -1,5 +1,5 @@
 // One command-line grammar across every executable of experiments/ (see
-// lib/core/cli.h): each program's --help is parsed and checked for CLI11
+// experiments/common/cli.h): each program's --help is parsed and checked for CLI11
 // artefacts, the naming rules (plural names take comma lists, singular ones
 // one value; --out a folder, --output a file), shown defaults of numeric
 // options, and --version; the comma lists are then used for real.

@@ -228,7 +228,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
     std::string values;
   };
   std::map<std::string, Origin> seen;  // key -> where it came from first
-  for (const std::string& in : inputs) refuseOutputOverInput("--merge", out, {in});
+  for (const std::string& in : inputs) refuseOutputOverInput("merge", out, {in});
   // A shard with no rows is legitimate only when the study has fewer groups than shards: shard i holds the groups
   // g with g mod N == i, so then every non-empty shard holds exactly one (scene, sampler, spp) group and the
   // empty ones are the highest-numbered. Anything else means rows were lost.
@@ -297,7 +297,7 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
                                                         : text.compare(0, first, csvHeader()) == 0;
     if (!studyHeader)
       throw FileError(path, "not a study CSV (its first line is not the study header); left unchanged: give "
-                            "another --csv or --out");
+                            "another {csv} or {out}");
     const size_t nl = text.rfind('\n');
     const size_t keep = nl == std::string::npos ? 0 : nl + 1;
     // Every complete row must have the study's columns (a torn last line is a killed run's, and is cut).
