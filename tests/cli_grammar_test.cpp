@@ -42,11 +42,12 @@ ProgramRun run(const std::string& program, const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
 
-/// Every executable: the folders of experiments/ holding a .cpp (experiments/CMakeLists.txt's rule).
+/// Every executable: the folders of experiments/ holding a .cpp, but common/ (the shared front end), as
+/// experiments/CMakeLists.txt's rule says.
 std::vector<std::string> programs() {
   std::vector<std::string> names;
   for (const auto& d : fs::directory_iterator(fs::path(ALIASLAB_SOURCE_DIR) / "experiments")) {
-    if (!d.is_directory()) continue;
+    if (!d.is_directory() || d.path().filename() == "common") continue;
     for (const auto& f : fs::directory_iterator(d.path()))
       if (f.path().extension() == ".cpp") {
         names.push_back(d.path().filename().string());

@@ -1,4 +1,4 @@
-#include "common/front_end.h"
+#include "front_end.h"
 
 #include <iostream>
 
