@@ -13,16 +13,22 @@
 #include <filesystem>
 #include <iostream>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
 #include "measure/convergence_study.h"
 #include "sampling/sampler.h"
-#include "study/config.h"
+#include "study/validate.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;
+
+namespace {
+// The library's keys in this program's flags.
+const FrontEnd kConvergence{"convergence", {{"sampler", "--samplers"}, {"out", "--out"}, {"threads", "--threads"}}};
+}  // namespace
 
 int main(int argc, char** argv) {
   ConvergenceStudy p;
@@ -43,11 +49,11 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-chart", chart, "Skip the chart (analysis/convergence_chart.py)");
   if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
-  try {
+  return runFrontEnd(kConvergence, [&] {
     // Validate everything before work.
     if (p.samplers.empty()) p.samplers = samplerNames();
     for (const auto& s : p.samplers)  // unknown names fail before any work
-      relabelOption("--sampler", "--samplers", [&] { makeSampler(s, 1 << 4, p.seed); });
+      makeSampler(s, 1 << 4, p.seed);
     if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
     if (!(std::isfinite(p.fitMin) && p.fitMin >= 1))
       throw OptionError("--fit-min", "must be a number >= 1, found " + formatNumber(p.fitMin));
@@ -58,7 +64,7 @@ int main(int argc, char** argv) {
     if (powersOfTwoInRange(convergenceSampleCounts(p.maxN), p.fitMin, p.fitMax) < 2)
       throw OptionError("--fit-min", "the fit range [" + formatNumber(p.fitMin) + ", " + formatNumber(p.fitMax) +
                                          "] (--fit-max capped at --max-n) holds fewer than two powers of two");
-    requireOutputFolders({{out, "--out"}});
+    requireOutputFolders({{out, "out"}});
 
     // Measure: one CSV row per (sampler, integrand, N); then the fitted slopes against theory.
     const auto rows = measureConvergence(p, std::cerr);
@@ -71,12 +77,6 @@ int main(int argc, char** argv) {
                              formatNumber(p.fitMin), "--fit-max", formatNumber(p.fitMax)}) != 0)
       std::cerr << "convergence: warning: the chart failed (analysis/convergence_chart.py); the CSV and slopes.md are written\n";
     std::cout << "wrote " << out << "/convergence.csv and slopes.md\n";
-  } catch (const InputError& e) {
-    std::cerr << "convergence: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "convergence: failed: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

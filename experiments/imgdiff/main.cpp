@@ -15,14 +15,20 @@
 #include <cstdio>
 #include <iostream>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "core/image.h"
 #include "film/visualize.h"
 #include "measure/flip.h"
+#include "measure/image_diff.h"
 
 using namespace aliaslab;
+
+namespace {
+const FrontEnd kImgdiff{"imgdiff", {}, 2, 1, 1, ""};  // bad options exit 2, anything else 1
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"imgdiff: MSE, relative MSE, PSNR, bias and spread, and LDR-FLIP of image A against reference B "
@@ -37,7 +43,7 @@ int main(int argc, char** argv) {
   app.add_option("--scale", scale, "difference shown fully saturated in --output (default: max |A - B|)");
   app.add_option("--ppd", ppd, "FLIP viewing condition, pixels per degree")->check(CLI::Range(1.0, 1000.0));
   if (const int rc = parseCommandLine(app, argc, argv, "imgdiff"); rc >= 0) return rc;
-  try {
+  return runFrontEnd(kImgdiff, [&] {
     if (!(std::isfinite(scale) && scale >= 0)) throw OptionError("--scale", "must be a finite number >= 0");
     for (const auto& [opt, path] : {std::pair<std::string, std::string>{"--output", output}, {"--flip-output", flipOutput}})
       if (!path.empty() && !isSupportedImageExtension(path))
@@ -46,28 +52,18 @@ int main(int argc, char** argv) {
     if (A.width() != B.width() || A.height() != B.height())
       throw FileError(b, "size " + std::to_string(B.width()) + " x " + std::to_string(B.height()) + " differs from " +
                              a + ": " + std::to_string(A.width()) + " x " + std::to_string(A.height()));
-    const size_t n = static_cast<size_t>(A.width()) * A.height() * 3;
-    double sum = 0, sum2 = 0, rel = 0, maxAbs = 0;
-    for (size_t i = 0; i < n; ++i) {
-      const double d = double(A.data()[i]) - B.data()[i];
-      sum += d, sum2 += d * d, maxAbs = std::max(maxAbs, std::abs(d));
-      rel += d * d / (double(B.data()[i]) * B.data()[i] + 0.01);
-    }
-    const double mse = sum2 / n, bias = sum / n, spread = std::sqrt(std::max(0.0, mse - bias * bias));
+    const ImageDifference d = imageDifference(A, B);
     const std::vector<float> flip = flipMap(A, B, ppd);
     double flipMean = 0;
     for (float v : flip) flipMean += v;
     flipMean /= flip.size();
     std::printf("size %d %d\nmse %.9g\nrelmse %.9g\npsnr_db %.6g\nbias %.9g\nspread %.9g\nflip %.6g\nmax_abs %.9g\n",
-                A.width(), A.height(), mse, rel / n, mse > 0 ? 10 * std::log10(1 / mse) : INFINITY, bias, spread,
-                flipMean, maxAbs);
+                A.width(), A.height(), d.mse, d.relmse, d.psnr, d.bias, d.spread, flipMean, d.maxAbs);
     if (!output.empty()) {
-      Image d(A.width(), A.height());
-      for (int y = 0; y < A.height(); ++y)
-        for (int x = 0; x < A.width(); ++x) d.set(x, y, A.get(x, y) - B.get(x, y));
-      const float s = static_cast<float>(scale > 0 ? scale : (maxAbs > 0 ? maxAbs : 1.0));
-      writeImage(output, withColorBar(falseColor(d, s), [](float t) { return divergingColor(2 * t - 1); },
-                                      "-" + formatNumber(s), "0 (A - B)", "+" + formatNumber(s)));
+      const float s = static_cast<float>(scale > 0 ? scale : (d.maxAbs > 0 ? d.maxAbs : 1.0));
+      writeImage(output, withColorBar(falseColor(differenceImage(A, B), s),
+                                      [](float t) { return divergingColor(2 * t - 1); }, "-" + formatNumber(s),
+                                      "0 (A - B)", "+" + formatNumber(s)));
     }
     if (!flipOutput.empty()) {
       Image f(A.width(), A.height());
@@ -75,12 +71,6 @@ int main(int argc, char** argv) {
         for (int x = 0; x < A.width(); ++x) f.set(x, y, Color::Constant(flip[f.index(x, y)]));
       writeImage(flipOutput, withColorBar(f, [](float t) { return Color(Color::Constant(t)); }, "0", "FLIP", "1"));
     }
-  } catch (const OptionError& e) {
-    std::cerr << "imgdiff: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "imgdiff: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

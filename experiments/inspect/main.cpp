@@ -15,7 +15,9 @@
 #include <sstream>
 #include <vector>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
+#include "study/manifest_summary.h"
 #include "core/error.h"
 
 using namespace aliaslab;
@@ -23,30 +25,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// The value of "key": in a manifest (a string without quotes, or a number), "" when absent.
-std::string field(const std::string& json, const std::string& key) {
-  std::smatch m;
-  const std::regex re("\"" + key + "\":\\s*(\"([^\"]*)\"|[-+0-9.eE]+)");
-  if (!std::regex_search(json, m, re)) return "";
-  return m[2].matched ? m[2].str() : m[1].str();
-}
-
 void printManifest(const fs::path& json, const std::string& key) {
   std::ifstream in(json);
   std::stringstream s;
   s << in.rdbuf();
-  const std::string text = s.str();
   std::printf("manifest: %s\n", json.string().c_str());
-  for (const char* k : {"scene", "scene_path", "width", "height", "tracing", "spp", "sampler", "seed", "git_revision"})
-    if (const std::string v = field(text, k); !v.empty()) std::printf("  %s: %s\n", k, v.c_str());
-  // the filter entry of this image (a set manifest lists several)
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);)
-    if (line.find("\"filter\"") != std::string::npos && (key.empty() || line.find("\"" + key + "\"") != std::string::npos))
-      for (const char* k : {"filter", "radius", "describe", "ref_error", "undefined_pixels", "image"})
-        if (const std::string v = field(line, k); !v.empty()) std::printf("  %s: %s\n", k, v.c_str());
+  for (const auto& [k, v] : manifestSummary(s.str(), key)) std::printf("  %s: %s\n", k.c_str(), v.c_str());
 }
 
+}  // namespace
+
+namespace {
+const FrontEnd kInspect{"inspect", {}, 1, 1, 1, ""};  // every error exits 1
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -56,7 +46,7 @@ int main(int argc, char** argv) {
   std::string file;
   app.add_option("FILE", file, "image file (EXR, PNG, ...)")->required();
   if (const int rc = parseCommandLine(app, argc, argv, "inspect"); rc >= 0) return rc;
-  try {
+  return runFrontEnd(kInspect, [&] {
     auto input = OIIO::ImageInput::open(file);
     if (!input) throw FileError(file, "cannot read the image: " + OIIO::geterror());
     const OIIO::ImageSpec spec = input->spec();
@@ -82,9 +72,6 @@ int main(int argc, char** argv) {
     const fs::path json = fs::path(file).replace_extension(".json");
     std::error_code ec;
     if (fs::is_regular_file(json, ec)) printManifest(json, fs::path(file).stem().string());
-  } catch (const std::exception& e) {
-    std::cerr << "inspect: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

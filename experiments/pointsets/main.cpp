@@ -17,15 +17,21 @@
 #include <filesystem>
 #include <iostream>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "measure/pointset_study.h"
 #include "sampling/sampler.h"
-#include "study/config.h"
+#include "study/validate.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;
+
+namespace {
+// The library's keys in this program's flags.
+const FrontEnd kPointsets{"pointsets", {{"sampler", "--samplers"}, {"spp", "--counts"}, {"out", "--out"}, {"threads", "--threads"}}};
+}  // namespace
 
 int main(int argc, char** argv) {
   PointSetStudy p;
@@ -47,15 +53,14 @@ int main(int argc, char** argv) {
   app.add_flag("!--no-chart", chart, "Skip the chart (analysis/pointset_chart.py)");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
-  try {
+  return runFrontEnd(kPointsets, [&] {
     // Validate everything before work: every sampler at every count.
     if (p.samplers.empty()) p.samplers = samplerNames();
     for (const auto& s : p.samplers)
       for (int n : p.counts)
-        relabelOption("--sampler", "--samplers",
-                      [&] { relabelOption("--spp", "--counts", [&] { makeSampler(s, n, p.seed); }); });
+        makeSampler(s, n, p.seed);
     if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
-    requireOutputFolders({{out, "--out"}});
+    requireOutputFolders({{out, "out"}});
 
     // Every (sampler, N) measured (its pictures written), then the tables.
     const auto stats = measurePointSets(p, out);
@@ -67,12 +72,6 @@ int main(int argc, char** argv) {
                              out, "--out", out}) != 0)
       std::cerr << "pointsets: warning: the chart failed (analysis/pointset_chart.py); the CSVs and images are written\n";
     std::cout << "wrote " << out << "/pointsets.csv, spectra.csv and images\n";
-  } catch (const InputError& e) {
-    std::cerr << "pointsets: " << e.what() << "\n";
-    return 2;
-  } catch (const std::exception& e) {
-    std::cerr << "pointsets: failed: " << e.what() << "\n";
-    return 1;
-  }
-  return 0;
+    return 0;
+  });
 }

@@ -8,7 +8,8 @@
 #include <iostream>
 
 #include "accel/aggregate.h"
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
@@ -51,6 +52,16 @@ void refuseNonFinite(const std::string& scene, const std::vector<std::pair<std::
                        "range, about 3.4e38?); no image written");
 }
 
+// The library's keys in this program's flags (the classic course flags are single-dash).
+const FrontEnd kRaytracer{"raytracer",
+                          {{"sampler", "--sampler"},   {"spp", "--spp"},
+                           {"filter", "--filter"},     {"radius", "--radius"},
+                           {"filter-param", "--filter-param"}, {"reconstruction", "--reconstruction"},
+                           {"prefilter", "--prefilter"}, {"threads", "--threads"},
+                           {"size", "-size"},          {"grid", "-grid"},
+                           {"depth", "-depth"}},
+                          2, 1, 1, "error: "};  // bad options exit 2, bad input files 1
+
 int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   const auto t0 = Clock::now();
   const int w = o.size[0], h = o.size[1];
@@ -84,7 +95,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   to.bounces = o.bounces;
   to.weight = o.weight;
   to.shadeBack = o.shadeBack;
-  to.prefilter = parsePrefilter(o.prefilter, "--prefilter");
+  to.prefilter = parsePrefilter(o.prefilter);
   to.footprintPixels = 1.f / std::sqrt(static_cast<float>(spp));
   const Tracer tracer(scene, *aggregate, to);
 
@@ -149,21 +160,12 @@ int main(int argc, char** argv) {
     std::cerr << "raytracer: " << classicMessage(e.what()) << "\nRun with --help for the options.\n";
     return 2;
   }
-  try {
+  return runFrontEnd(kRaytracer, [&] {
     validateRaytracerOptions(app, o);
     const SamplingPlan plan = makeSamplingPlan(app, o);
     if (!plan.note.empty()) std::cerr << "raytracer: note: " << plan.note << "\n";
     const std::string warning = plan.source->pixelSampler().warning();
     if (!warning.empty()) std::cerr << "raytracer: warning: " << warning << "\n";
     return run(o, plan);
-  } catch (const OptionError& e) {
-    std::cerr << "raytracer: " << e.what() << "\n";
-    return 2;
-  } catch (const InputError& e) {
-    std::cerr << "raytracer: " << e.what() << "\n";
-    return 1;
-  } catch (const std::exception& e) {
-    std::cerr << "raytracer: error: " << e.what() << "\n";
-    return 1;
-  }
+  });
 }

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/cli.h"
+#include "../common/cli.h"  // relative: tests/fuzz_regression_test.cpp and fuzz_cli compile this file too
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
@@ -151,7 +151,7 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
     throw OptionError("-bounces", "must be in 0.." + std::to_string(kMaxBounces));
   if (!(o.weight >= 0.f) || !std::isfinite(o.weight)) throw OptionError("-weight", "must be finite and >= 0");
   if (o.threads < 0) throw OptionError("--threads", "must be >= 0 (0 = all cores)");
-  parsePrefilter(o.prefilter, "--prefilter");
+  parsePrefilter(o.prefilter);
   if (!o.grid.empty()) {
     if (o.bruteForce) throw OptionError("-grid", "cannot be combined with --brute-force");
     double cells = 1;

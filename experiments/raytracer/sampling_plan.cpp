@@ -100,7 +100,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     } else if (!(radius > 0.f) || !std::isfinite(radius)) {
       throw OptionError("-" + classicFilter, "radius must be finite and > 0");
     }
-    plan.filter = relabelOption("--radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
+    plan.filter = rekeyOption("radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
   } else if (has("filter")) {
     // without --radius the filter's natural support (defaultFilterRadius, listed in --help)
     const float radius = has("radius") ? o.radius : static_cast<float>(defaultFilterRadius(o.filter, params));

@@ -14,15 +14,26 @@
 #include <string>
 #include <vector>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
 #include "filter/filter.h"
 #include "study/config.h"
 #include "study/reference.h"
+#include "study/validate.h"
 #include "study/study_scene.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
+
+namespace {
+// The library's keys in this program's flags (the reference options are the sweep's ref-* ones).
+const FrontEnd kReference{"reference",
+                          {{"ref-spp", "--spp"},     {"ref-batch", "--batch"}, {"sampler", "--sampler"},
+                           {"filter", "--filters"},  {"radius", "--radii"},    {"filter-param", "--filters"},
+                           {"size", "--size"},       {"out", "--out"},         {"cache", "--cache"},
+                           {"threads", "--threads"}, {"spp", "--spp"},      {"grid", "-grid"}}};
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"reference: streamed high-sample references with error estimates (aliaslab)"};
@@ -46,9 +57,9 @@ int main(int argc, char** argv) {
   app.add_option("--cache", cache, "also use / fill this reference cache folder");
   if (const int rc = parseCommandLine(app, argc, argv, "reference"); rc >= 0) return rc;
 
-  try {
-    // Validate everything before work; messages name this program's options.
-    relabelOption("--ref-spp", "--spp", [&] { relabelOption("--ref-batch", "--batch", [&] { validateReferenceOptions(o); }); });
+  return runFrontEnd(kReference, [&] {
+    // Validate everything before work (kReference names the keys by this program's options).
+    validateReferenceOptions(o);
     if (o.threads < 0) throw OptionError("--threads", "must be >= 0");
     if (filters.empty()) throw OptionError("--filters", "needs at least one filter");
     if (radii.empty()) throw OptionError("--radii", "needs at least one radius");
@@ -56,14 +67,12 @@ int main(int argc, char** argv) {
     std::vector<FilterSpec> specs{{"box", 0.5}};
     for (const std::string& f : filters)
       for (double r : radii) {
-        relabelOption("--filter", "--filters", [&] {
-          relabelOption("--radius", "--radii", [&] { makeFilter(f, static_cast<float>(r)); });
-        });
+        makeFilter(f, static_cast<float>(r));
         if (std::find(specs.begin(), specs.end(), FilterSpec{f, r}) == specs.end()) specs.push_back({f, r});
       }
     const auto scene = loadStudyScene(scenePath, size.empty() ? 0 : size[0], size.empty() ? 0 : size[1]);
-    std::vector<std::pair<std::string, std::string>> folders{{out, "--out"}};
-    if (!cache.empty()) folders.emplace_back(cache, "--cache");
+    std::vector<std::pair<std::string, std::string>> folders{{out, "out"}};
+    if (!cache.empty()) folders.emplace_back(cache, "cache");
     requireOutputFolders(folders);
 
     // One pass (or the cache), then images and the manifest.
@@ -81,11 +90,5 @@ int main(int argc, char** argv) {
                 scene->stem.c_str(), scene->width, scene->height, set.spp, set.seconds, set.accumulatorBytes / 1e6,
                 out.c_str());
     return 0;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "reference: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "reference: failed: %s\n", e.what());
-    return 1;
-  }
+  });
 }

@@ -10,70 +10,39 @@
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
-#include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>
 #include <cstdio>
-#include <filesystem>
 #include <string>
 #include <vector>
 
-#include "core/cli.h"
+#include "common/cli.h"
+#include "common/front_end.h"
 #include "core/error.h"
-#include "filter/filter.h"
-#include "sampling/sampler.h"
 #include "study/config.h"
-#include "study/contact.h"
-#include "study/csv.h"
-#include "study/lock.h"
-#include "study/spectrum_files.h"
+#include "study/merge.h"
+#include "study/presets.h"
 #include "study/sweep.h"
 
 using namespace aliaslab;
 
 namespace {
-constexpr int kFullRefSpp = 8192;
-
-// The default study: every scene, small sizes, course + modern samplers and
-// filters; measured to finish in under 10 minutes on 2 cores (results/study_speed.md).
-void applyDefaultPreset(StudyConfig& c) {
-  c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
-  c.samplers = {"random",  "uniform", "jittered",
-                "sobol",   "pmj02",   "bluenoise",
-                "zsobol",  "bluenoise-dither:random", "adaptive-contrast:jittered"};
-  c.spp = {4, 16, 64};
-  c.filters = {"box", "tent", "gaussian", "mitchell", "lanczos"};
-  c.radii = {0.5, 1.0, 2.0};
-  c.reconstruction = {"weighted"};
-  c.seeds = 8;
-  c.refSpp = 512;
-  c.maxSize = 48;
-  c.out = "results/study";
-  c.images = true;
-}
-
-// The full reference study (docs/science.md, "The full study"): every bundled scene at 256 px on the
-// larger side, every sampler and filter, radii 0.5-2, spp 4, 16, 64, 8 seeds, references at 8192 spp.
-// Hours on 2 cores (results/study_speed.md, "The full study"): run it sharded.
-void applyFullPreset(StudyConfig& c) {
-  c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
-  c.samplers = samplerNames();
-  c.spp = {4, 16, 64};
-  c.filters = filterNames();
-  c.radii = {0.5, 1.0, 1.5, 2.0};
-  c.reconstruction = {"weighted"};
-  c.seeds = 8;
-  c.refSpp = kFullRefSpp;
-  c.longSide = 256;
-  c.out = "results/study_full";
-  c.images = false;
-}
+// The library's keys in this program's flags (factory keys: the lists they are checked from).
+const FrontEnd kSweep{"sweep",
+                      {{"scenes", "--scenes"},       {"samplers", "--samplers"},     {"sampler", "--samplers"},
+                       {"spp", "--spp"},             {"filters", "--filters"},       {"filter", "--filters"},
+                       {"radii", "--radii"},         {"radius", "--radii"},          {"filter-param", "--filters"},
+                       {"reconstruction", "--reconstruction"}, {"prefilter", "--prefilter"},
+                       {"seeds", "--seeds"},         {"ref-spp", "--ref-spp"},       {"ref-batch", "--ref-batch"},
+                       {"ref-sampler", "--ref-sampler"}, {"size", "--size"},        {"max-size", "--max-size"},
+                       {"long-side", "--long-side"}, {"target", "--target"},         {"out", "--out"},
+                       {"csv", "--csv"},             {"cache", "--cache"},           {"threads", "--threads"},
+                       {"shard", "--shard"},         {"merge", "--merge"},           {"grid", "-grid"}}};
 }  // namespace
 
 int main(int argc, char** argv) {
-  StudyConfig c;
+  StudyConfig c;  // a preset first, so that explicit options override it
   for (int i = 1; i + 1 < argc; ++i)
-    if (std::string(argv[i]) == "--preset" && std::string(argv[i + 1]) == "default") applyDefaultPreset(c);
-    else if (std::string(argv[i]) == "--preset" && std::string(argv[i + 1]) == "full") applyFullPreset(c);
+    if (std::string(argv[i]) == "--preset") applyStudyPreset(argv[i + 1], c);
 
   CLI::App app{"sweep: measure aliasing, noise and time over samplers x filters x radii (aliaslab)"};
   setupCommandLine(app, "sweep");
@@ -84,7 +53,7 @@ int main(int argc, char** argv) {
   app.add_option("--preset", preset,
                  "'default': the quick default study (results/study); 'full': the full reference study at 256 px "
                  "(results/study_full, hours: run experiments/run_full_study.sh); explicit options still override")
-      ->check(CLI::IsMember({"default", "full"}));
+      ->check(CLI::IsMember(studyPresetNames()));
   app.add_option("--scenes", c.scenes, "scene files or folders of *.txt")->delimiter(',');
   app.add_option("--samplers", c.samplers, "sampler names")->delimiter(',')->capture_default_str();
   app.add_option("--spp", c.spp, "samples per pixel list")->delimiter(',')->capture_default_str();
@@ -126,16 +95,9 @@ int main(int argc, char** argv) {
       ->expected(2, -1)->option_text("OUT IN1 [IN2 ...]");
   if (const int rc = parseCommandLine(app, argc, argv, "sweep"); rc >= 0) return rc;
 
-  try {
+  return runFrontEnd(kSweep, [&] {
     if (!merge.empty()) {
-      checkShardSet(std::vector<std::string>(merge.begin() + 1, merge.end()));
-      const CsvLock lock(merge[0], "sweep --merge");
-      mergeCsvFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
-      // and the shards' spectra (spectra/<scene>.<shard>.csv) into the merged CSV's
-      mergeSpectrumFiles(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()));
-      // Contact sheets of the whole study when the shards wrote images beside it.
-      const auto images = std::filesystem::path(merge[0]).parent_path() / "images";
-      if (std::filesystem::is_directory(images)) writeContactSheets(merge[0], images.string());
+      mergeStudy(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()), "sweep --merge");
       std::printf("merged %zu files into %s\n", merge.size() - 1, merge[0].c_str());
       return 0;
     }
@@ -158,11 +120,5 @@ int main(int argc, char** argv) {
     if (c.refsOnly)
       std::printf("references ready in %s (%.1f s)\n", c.cache.c_str(), s.seconds);
     return 0;
-  } catch (const InputError& e) {
-    std::fprintf(stderr, "sweep: %s\n", e.what());
-    return 2;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "sweep: failed: %s\n", e.what());
-    return 1;
-  }
+  });
 }

@@ -11,7 +11,7 @@
 namespace aliaslab {
 
 Grid::Grid(const Object& root, int nx, int ny, int nz) {
-  if (nx < 0 || ny < 0 || nz < 0) throw OptionError("-grid", "resolution must be >= 0 (0 = automatic)");
+  if (nx < 0 || ny < 0 || nz < 0) throw OptionError("grid", "resolution must be >= 0 (0 = automatic)");
   root.flatten(Mat4::Identity(), prims_);
 
   // Classify: packed triangles first, then other bounded primitives
@@ -75,7 +75,7 @@ void Grid::chooseResolution(int nx, int ny, int nz) {
   }
   const double cells = static_cast<double>(n_[0]) * n_[1] * n_[2];
   if (cells > double(1 << 27))
-    throw OptionError("-grid", "at most 2^27 cells (" + std::to_string(n_[0]) + "x" + std::to_string(n_[1]) + "x" +
+    throw OptionError("grid", "at most 2^27 cells (" + std::to_string(n_[0]) + "x" + std::to_string(n_[1]) + "x" +
                                    std::to_string(n_[2]) + " requested)");
 }
 

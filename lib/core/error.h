@@ -1,7 +1,8 @@
 // Errors for bad input. Every message names where the problem is: the file
-// and line, or the command-line option. Front ends catch InputError, print
+// and line, or the parameter (OptionError's key). Front ends catch InputError, print
 // what(), write no output file and exit non-zero.
 #pragma once
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -32,26 +33,39 @@ class FileError : public InputError {
   FileError(const std::string& file, const std::string& message) : InputError(file + ": " + message) {}
 };
 
-/// A bad command-line option or parameter: "<option>: <message>".
+/// A bad parameter: "<key>: <message>". The key is the library's neutral
+/// name of the parameter ("radius", "samplers", "ref-spp", "grid"), never a
+/// command-line flag: each front end maps keys to its own flags in one place
+/// (experiments/common/front_end.h). A message that must name another
+/// parameter writes its key in braces ("give another {out}"), which the front
+/// end replaces by its flag too.
 class OptionError : public InputError {
  public:
-  OptionError(const std::string& option, const std::string& message)
-      : InputError(option + ": " + message), option_(option) {}
-  const std::string& option() const { return option_; }
+  OptionError(const std::string& key, const std::string& message)
+      : InputError(key + ": " + message), key_(key), message_(message) {}
+  const std::string& key() const { return key_; }
+  const std::string& message() const { return message_; }
 
  private:
-  std::string option_;
+  std::string key_;
+  std::string message_;
 };
 
-/// Returns make(); an OptionError about option `from` (e.g. a factory's
-/// "--sampler") is rethrown naming the caller's option `to` ("--samplers").
+/// A key without leading dashes. Transitional: lib/filter, lib/sampling,
+/// lib/render and lib/film still throw dashed keys ("--sampler"); comparing
+/// neutral forms lets their conversion be a change of literals only.
+inline std::string neutralKey(const std::string& key) { return key.substr(std::min(key.find_first_not_of('-'), key.size())); }
+
+/// Returns make(); an OptionError about key `from` (e.g. a factory's
+/// "sampler") is rethrown under the caller's key `to` (its list "samplers"),
+/// so the error names the parameter the caller was given.
 template <class Make>
-auto relabelOption(const std::string& from, const std::string& to, Make&& make) -> decltype(make()) {
+auto rekeyOption(const std::string& from, const std::string& to, Make&& make) -> decltype(make()) {
   try {
     return make();
   } catch (const OptionError& e) {
-    if (e.option() != from) throw;
-    throw OptionError(to, std::string(e.what()).substr(from.size() + 2));
+    if (neutralKey(e.key()) != from) throw;
+    throw OptionError(to, e.message());
   }
 }
 

@@ -24,13 +24,13 @@ std::string temporaryPathFor(const std::string& path) {
          std::filesystem::path(path).extension().string();
 }
 
-void requireMemory(double bytes, const std::string& option, const std::string& what) {
+void requireMemory(double bytes, const std::string& key, const std::string& what) {
   const double physical = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
   if (physical > 0 && bytes > physical) {
     char text[160];
     std::snprintf(text, sizeof text, "%s needs about %.1f GB of memory, more than this machine has (%.1f GB)",
                   what.c_str(), bytes / 1e9, physical / 1e9);
-    throw OptionError(option, text);
+    throw OptionError(key, text);
   }
 }
 
@@ -66,11 +66,11 @@ bool sameFile(const std::string& a, const std::string& b) {
   return fs::absolute(a, ea).lexically_normal() == fs::absolute(b, eb).lexically_normal();
 }
 
-void refuseOutputOverInput(const std::string& option, const std::string& output,
+void refuseOutputOverInput(const std::string& key, const std::string& output,
                            const std::vector<std::string>& inputs) {
   for (const std::string& in : inputs)
     if (!in.empty() && sameFile(output, in))
-      throw OptionError(option, "'" + output + "' is also an input ('" + in +
+      throw OptionError(key, "'" + output + "' is also an input ('" + in +
                                     "'); writing it would destroy the input: give the output another name");
 }
 

@@ -31,17 +31,17 @@ OutputTarget outputTarget(const std::string& path);
 /// True when a and b name the same file (same inode when both exist, else the same normalised absolute path).
 bool sameFile(const std::string& a, const std::string& b);
 
-/// Throws OptionError(option) when `output` is any of `inputs` (writing it would destroy an input).
-void refuseOutputOverInput(const std::string& option, const std::string& output,
+/// Throws OptionError(key) when `output` is any of `inputs` (writing it would destroy an input).
+void refuseOutputOverInput(const std::string& key, const std::string& output,
                            const std::vector<std::string>& inputs);
 
 /// Removes the temporaries ("*.partial.<pid>.*", see temporaryPathFor) that a killed run left in `dir` and its
 /// sub-folders: those whose process <pid> is no longer running. Returns how many were removed.
 size_t removeStaleTemporaries(const std::string& dir);
 
-/// Fails before allocating: throws OptionError(option) when `bytes` (an estimate of what `what` needs) exceeds
+/// Fails before allocating: throws OptionError(key) when `bytes` (an estimate of what `what` needs) exceeds
 /// the machine's physical memory, with the figure in the message (instead of std::bad_alloc after a long wait).
-void requireMemory(double bytes, const std::string& option, const std::string& what);
+void requireMemory(double bytes, const std::string& key, const std::string& what);
 
 /// "<strerror(errno)>", e.g. "No space left on device", for messages after a failed system call.
 std::string lastSystemError();

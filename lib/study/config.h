@@ -6,11 +6,14 @@
 // sampler, spp, prefilter), whose K sample sets (one per seed) are traced once and
 // reconstructed with every (filter, radius) of the group. Groups and the
 // configurations inside them come in a fixed canonical order, so a shard
-// (--shard i/N: groups g with g mod N == i) is deterministic and keeps the
-// reuse of traced samples. validateStudy() checks every name, number, scene
-// and the output folder before any work and throws InputError
-// (OptionError naming the option, FileError naming the file); it returns the
-// StudyPlan it checked, so the sweep does not expand or parse anything again.
+// (shard i of N: groups g with g mod N == i) is deterministic and keeps the
+// reuse of traced samples. Checking a config before any work is
+// study/validate.h; merging the shards' CSVs is study/merge.h; the bundled
+// studies are study/presets.h.
+//
+// Errors are InputError: OptionError keyed by the StudyConfig field it is
+// about ("samplers", "radii", "ref-spp": the field's name, dashes for
+// camelCase), FileError naming the file. Front ends map keys to their flags.
 //
 // Built once, passed down: every distinct (filter, radius) of a study is made
 // (makeFilter) once by expandStudy and shared by its configurations
@@ -50,7 +53,7 @@ struct StudyConfig {
   std::string cache = "results/cache/refs";  ///< reference cache folder
   int threads = 0;          ///< worker threads (0: all cores)
   std::optional<bool> images;  ///< write images (default: when there are at most 200 configurations)
-  int shardIndex = 0, shardCount = 1;  ///< --shard i/N
+  int shardIndex = 0, shardCount = 1;  ///< shard i of N
   std::string refSampler = "sobol";  ///< sampler of the references (scrambled low-discrepancy)
   int refBatch = 16;        ///< reference samples per pixel per streamed batch
   bool refsOnly = false;    ///< render and cache the references, then stop (before sharded runs)
@@ -87,7 +90,7 @@ struct SampleSetGroup {
 };
 
 /// Expands folders in `scenes` into their sorted *.txt files. The same file given twice is kept once; two
-/// different files with the same stem (a/s.txt, b/s.txt) are refused (OptionError "--scenes"): rows are keyed
+/// different files with the same stem (a/s.txt, b/s.txt) are refused (OptionError "scenes"): rows are keyed
 /// by the stem.
 std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes);
 
@@ -97,56 +100,26 @@ std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes
 /// is built once and shared by the configurations that use it.
 std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes = nullptr);
 
-/// A validated study: what validateStudy checked, ready to run.
-struct StudyPlan {
-  Target target;
-  std::vector<SampleSetGroup> groups;  ///< every group in canonical order (unsharded), filters built
-  std::vector<std::string> notes;      ///< skipped combinations
-  std::map<std::string, SceneSize> sceneSizes;  ///< per scene file: its size in this study (render line, overrides)
-};
-
 /// The groups of this shard.
 std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count);
 
-/// Checks a --prefilter value: "none" or "footprint" (the values of the CSV
+/// Checks a pre-filtering name: "none" or "footprint" (the values of the CSV
 /// column prefilter); returns whether it asks for pre-filtering. Throws
-/// OptionError(option) naming the valid values.
-bool parsePrefilter(const std::string& name, const std::string& option = "--prefilter");
+/// OptionError(key) naming the valid values.
+bool parsePrefilter(const std::string& name, const std::string& key = "prefilter");
 
 /// Every distinct (filter, radius) of the study, in canonical order (names only; expandStudy builds them).
 std::vector<FilterSpec> studyFilters(const StudyConfig& config);
 
 /// The target T of a study: "area" is the pixel-area reference (box, r = 0.5);
-/// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("--target")
+/// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("target")
 /// naming the valid forms.
 Target parseTarget(const std::string& text);
 
-/// Parses "i/N" (0 <= i < N). Throws OptionError("--shard").
+/// Parses "i/N" (0 <= i < N). Throws OptionError("shard").
 void parseShard(const std::string& text, int& index, int& count);
 
-/// Checks the inputs of `sweep --merge`: among files named *shard-i-of-N.csv (the sweep's own names), every i
-/// in 0..N-1 must be there once, all with the same N, so a merge cannot silently lack a shard's rows. Files
-/// named otherwise (a --csv path) are not checked. Throws OptionError("--merge").
-void checkShardSet(const std::vector<std::string>& inputs);
-
-/// Creates every (folder, option) that is missing and checks that it is writable; when one fails, the folders
-/// created before it are removed again (nothing is left behind) and OptionError(option) is thrown.
-void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders);
-
-/// Checks names, numbers, the reference options, scenes (existence, parse and
-/// size from the render line; no acceleration structure is built), memory and
-/// the output folder (created if missing, must be writable). Throws InputError.
-/// Returns the plan it checked (target parsed, groups expanded, filters built).
-StudyPlan validateStudy(const StudyConfig& config);
-
-/// A CSV holds one study: throws OptionError naming the option (--seeds, --ref-spp) when a row of the
-/// existing CSV `lines` was made with another value than `config` asks for (a rerun would add a second copy).
-void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& config);
-/// The same for the image size of one scene (--size / --max-size).
-void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
-                        int width, int height);
-
-/// The reference options the study asks for (--ref-spp, --ref-sampler, its batch, threads, progress).
+/// The reference options the study asks for (refSpp, refSampler, refBatch, threads, progress).
 ReferenceOptions referenceOptions(const StudyConfig& config);
 
 /// The CSV path the config writes.

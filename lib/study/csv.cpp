@@ -174,114 +174,6 @@ void writeCsvFile(const std::string& path, const std::vector<std::string>& lines
 
 void canonicaliseCsv(const std::string& path) { writeCsvFile(path, sortCsvRows(readCsvLines(path))); }
 
-std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a shard CSV");
-  if (!fs::exists(path, ec)) throw FileError(path, "no such shard CSV");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.empty()) throw FileError(path, "is empty (0 bytes): the shard was never written or was emptied");
-  std::vector<std::string> lines;
-  size_t start = 0;
-  int lineNo = 0;
-  while (start < text.size()) {
-    ++lineNo;
-    const size_t nl = text.find('\n', start);
-    if (nl == std::string::npos)
-      throw ParseError(path, lineNo, "cut line (no newline at the end): the shard was interrupted; rerun its "
-                                     "sweep command to finish it, then merge");
-    const std::string line = text.substr(start, nl - start);
-    start = nl + 1;
-    if (lineNo == 1) {
-      if (line != csvHeader()) throw ParseError(path, 1, "not a study CSV (unexpected header)");
-      continue;
-    }
-    if (line.empty()) continue;
-    const size_t n = splitCsvLine(line).size();
-    if (n != csvColumns().size())
-      throw ParseError(path, lineNo, "has " + std::to_string(n) + " fields, expected " +
-                                         std::to_string(csvColumns().size()) + " (a damaged row)");
-    lines.push_back(line);
-  }
-  if (lines.empty() && !allowNoRows) throw FileError(path, "holds no rows (header only): a shard of a study has at least one row");
-  return lines;
-}
-
-namespace {
-// The results of a row without the columns that legitimately differ between runs (timing, threads).
-std::string measuredValues(const std::vector<std::string>& f) {
-  std::string v;
-  const auto timing = csvTimingColumns();
-  for (size_t i = 0; i < f.size(); ++i)
-    if (std::find(timing.begin(), timing.end(), i) == timing.end() && csvColumns()[i] != "threads")
-      v += f[i] + '\x1f';
-  return v;
-}
-}  // namespace
-
-void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs) {
-  std::vector<std::string> all;
-  struct Origin {
-    std::string file;
-    size_t line;
-    std::string values;
-  };
-  std::map<std::string, Origin> seen;  // key -> where it came from first
-  for (const std::string& in : inputs) refuseOutputOverInput("--merge", out, {in});
-  // A shard with no rows is legitimate only when the study has fewer groups than shards: shard i holds the groups
-  // g with g mod N == i, so then every non-empty shard holds exactly one (scene, sampler, spp) group and the
-  // empty ones are the highest-numbered. Anything else means rows were lost.
-  static const std::regex shardName(R"(shard-(\d+)-of-(\d+)\.csv$)");
-  std::vector<std::pair<int, std::string>> empty;  // (shard index, file)
-  int highestWithRows = -1;
-  bool severalGroups = false;
-  for (const std::string& in : inputs) {
-    std::smatch m;
-    const std::string file = fs::path(in).filename().string();
-    const bool named = std::regex_search(file, m, shardName);
-    const auto lines = readShardCsv(in, named);
-    if (lines.empty()) {
-      empty.emplace_back(std::stoi(m[1].str()), in);
-      continue;
-    }
-    std::set<std::string> groups;
-    for (const std::string& l : lines) {
-      const auto f = splitCsvLine(l);
-      groups.insert(f[kScene] + '\x1f' + f[kSampler] + '\x1f' + f[kSpp]);
-    }
-    severalGroups = severalGroups || groups.size() > 1;
-    if (named) highestWithRows = std::max(highestWithRows, std::stoi(m[1].str()));
-    // Line numbers for messages (readShardCsv skips blank lines, so count them again here).
-    std::ifstream text(in, std::ios::binary);
-    std::string l;
-    size_t lineNo = 0, next = 0;
-    while (next < lines.size() && std::getline(text, l)) {
-      ++lineNo;
-      if (lineNo == 1 || l != lines[next]) continue;
-      const auto f = splitCsvLine(l);
-      const std::string key = joinKey(f), values = measuredValues(f);
-      const auto [it, fresh] = seen.emplace(key, Origin{in, lineNo, values});
-      if (!fresh && it->second.values != values)
-        throw FileError(in, "line " + std::to_string(lineNo) + " and " + it->second.file + " line " +
-                                std::to_string(it->second.line) +
-                                " give different results for the same configuration (" + f[kScene] + ", " +
-                                f[kSampler] + " spp " + f[kSpp] + ", " + f[kFilter] + " r " + f[kRadius] + ", " +
-                                f[kRecon] + "): shards of different studies? Merge the shards of one study only");
-      ++next;
-    }
-    all.insert(all.end(), lines.begin(), lines.end());
-  }
-  for (const auto& [index, file] : empty)
-    if (severalGroups || index < highestWithRows || all.empty())
-      throw FileError(file, "holds no rows (header only), but " +
-                                std::string(all.empty() ? "no shard has rows"
-                                                        : severalGroups ? "the study has more groups than shards"
-                                                                        : "a higher-numbered shard has rows") +
-                                ", so every shard must have rows: this shard was emptied or never ran; rerun it");
-  writeCsvFile(out, sortCsvRows(std::move(all)));
-}
-
 CsvAppender::CsvAppender(const std::string& path) : path_(path) {
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a CSV file");
@@ -297,7 +189,7 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
                                                         : text.compare(0, first, csvHeader()) == 0;
     if (!studyHeader)
       throw FileError(path, "not a study CSV (its first line is not the study header); left unchanged: give "
-                            "another --csv or --out");
+                            "another {csv} or {out}");
     const size_t nl = text.rfind('\n');
     const size_t keep = nl == std::string::npos ? 0 : nl + 1;
     // Every complete row must have the study's columns (a torn last line is a killed run's, and is cut).

@@ -21,7 +21,7 @@
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
 // sortCsvRows() puts rows into the canonical order (by key, numbers compared
-// as numbers), which the end of a run and `sweep --merge` both apply, so a
+// as numbers), which the end of a run and the merge of shards (study/merge.h) both apply, so a
 // resumed, sharded or interrupted run ends with the same file.
 #pragma once
 #include <set>
@@ -113,16 +113,5 @@ void writeCsvFile(const std::string& path, const std::vector<std::string>& lines
 /// Rewrites a CSV in canonical order.
 void canonicaliseCsv(const std::string& path);
 
-/// Reads a shard for merging, strictly: a folder, an empty file, a header-only file (unless allowNoRows), a cut
-/// last line or a row with the wrong number of fields is an error naming the file (and line). Throws FileError /
-/// ParseError.
-std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows = false);
-
-/// Merges shard CSVs into `out` in canonical order (rows with the same key and the same results are kept
-/// once). Every input is read with readShardCsv; two rows with the same key but different results (timing and
-/// threads aside) are an error naming both files and lines; `out` equal to an input is refused. A header-only
-/// shard (study.shard-i-of-N.csv) is accepted only when the study has fewer groups than shards (every shard
-/// with rows holds one group and no higher-numbered shard has rows).
-void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs);
 
 }  // namespace aliaslab

@@ -36,7 +36,7 @@ CsvLock::CsvLock(const std::string& csvPath, const std::string& command) : path_
       ::close(fd_), fd_ = -1;
       throw FileError(csvPath, "in use by another run (" + holder + ", lock " + path_ +
                                    "): one run writes a study CSV at a time; wait for it to finish, or give this "
-                                   "run another --out or --csv (shards use --shard i/N, each its own CSV)");
+                                   "run another {out} or {csv} (shards use {shard} i/N, each its own CSV)");
     }
     struct stat mine {}, named {};
     if (::fstat(fd_, &mine) == 0 && ::stat(path_.c_str(), &named) == 0 && mine.st_ino == named.st_ino &&

@@ -64,11 +64,11 @@ std::string jsonText(const std::string& text, const std::string& field) {
 }  // namespace
 
 void validateReferenceOptions(const ReferenceOptions& o) {
-  if (o.spp < 2 || o.spp % 2) throw OptionError("--ref-spp", "must be an even number >= 2, found " + std::to_string(o.spp));
-  if (o.batchSpp < 1) throw OptionError("--ref-batch", "must be >= 1");
+  if (o.spp < 2 || o.spp % 2) throw OptionError("ref-spp", "must be an even number >= 2, found " + std::to_string(o.spp));
+  if (o.batchSpp < 1) throw OptionError("ref-batch", "must be >= 1");
   const int batch = effectiveBatch(o);
   if (o.spp % batch || (o.spp / batch) % 2)
-    throw OptionError("--ref-spp", "must be a multiple of 2 x " + std::to_string(o.batchSpp) +
+    throw OptionError("ref-spp", "must be a multiple of 2 x " + std::to_string(o.batchSpp) +
                                        " (two equal halves of whole batches), found " + std::to_string(o.spp));
   makeSampler(o.sampler, batch, o.seed);  // names the valid samplers when unknown
 }

@@ -72,8 +72,8 @@ struct ReferenceSet {
   size_t accumulatorBytes = 0;         ///< memory held by the accumulators during the pass
 };
 
-/// Checks the options (OptionError("--ref-spp" / "--ref-batch" / "--sampler")): the one check of every front end
-/// (study/config.h validateStudy, the reference program), before any work. renderReferences repeats it as its
+/// Checks the options (OptionError keyed "ref-spp" / "ref-batch" / the factory's "sampler"): the one check of every front end
+/// (study/validate.h validateStudy, the reference program), before any work. renderReferences repeats it as its
 /// precondition (cachedReferences through it, when anything is missing).
 void validateReferenceOptions(const ReferenceOptions& options);
 

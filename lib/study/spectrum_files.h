@@ -35,7 +35,7 @@ const std::string& spectrumCsvHeader();
 /// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one.
 std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene);
 /// The spectra of the shard CSVs `inputs` (each shard's spectrumCsvPath files) joined per scene into
-/// spectrumCsvPath(out, scene), in canonical order (sweep --merge). Inputs without spectra add nothing.
+/// spectrumCsvPath(out, scene), in canonical order (study/merge.h). Inputs without spectra add nothing.
 /// Returns the files written.
 std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs);
 

@@ -102,7 +102,7 @@ SceneSize studySceneSize(const std::string& path, const RenderLine& line, int wi
   SceneSize s;
   if (width > 0 && height > 0) s.width = width, s.height = height;
   else if (line.found) s.width = line.width, s.height = line.height;
-  else throw FileError(path, "no '# render: -size W H' line and no --size given");
+  else throw FileError(path, "no '# render: -size W H' line and no {size} given");
   if (longSide > 0) maxSize = longSide;
   if (maxSize > 0 && (std::max(s.width, s.height) > maxSize || longSide > 0)) {
     const double scale = static_cast<double>(maxSize) / std::max(s.width, s.height);

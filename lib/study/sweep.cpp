@@ -20,6 +20,7 @@
 #include "study/sweep_group.h"
 #include "study/sweep_rows.h"
 #include "study/sweep_scene.h"
+#include "study/validate.h"
 
 namespace aliaslab {
 

@@ -4,7 +4,7 @@
 // flight, each with its Accumulator and the images of its rows, plus up to `threads` importance-traced buffers.
 // InFlight counts those bytes as tasks add and remove them and keeps the peak; sweepMemoryBound is the bound
 // that peak never exceeds (tests/programs/sweep_parallel_test.cpp), and validation checks it against the machine's memory
-// before any work (study/config.h validateStudy). This header depends on nothing of the sweep or its
+// before any work (study/validate.h validateStudy). This header depends on nothing of the sweep or its
 // configuration, so both can use it.
 #pragma once
 #include <atomic>

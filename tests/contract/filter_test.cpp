@@ -304,7 +304,7 @@ std::string optionOf(const std::function<void()>& fn, std::string* message = nul
     fn();
   } catch (const OptionError& e) {
     if (message) *message = e.what();
-    return e.option();
+    return e.key();
   }
   return "";
 }

@@ -1,5 +1,5 @@
 // One command-line grammar across every executable of experiments/ (see
-// lib/core/cli.h): each program's --help is parsed and checked for CLI11
+// experiments/common/cli.h): each program's --help is parsed and checked for CLI11
 // artefacts, the naming rules (plural names take comma lists, singular ones
 // one value; --out a folder, --output a file), shown defaults of numeric
 // options, and --version; the comma lists are then used for real.
@@ -42,11 +42,12 @@ ProgramRun run(const std::string& program, const std::string& args) {
   return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
 }
 
-/// Every executable: the folders of experiments/ holding a .cpp (experiments/CMakeLists.txt's rule).
+/// Every executable: the folders of experiments/ holding a .cpp, but common/ (the shared front end), as
+/// experiments/CMakeLists.txt's rule says.
 std::vector<std::string> programs() {
   std::vector<std::string> names;
   for (const auto& d : fs::directory_iterator(fs::path(ALIASLAB_SOURCE_DIR) / "experiments")) {
-    if (!d.is_directory()) continue;
+    if (!d.is_directory() || d.path().filename() == "common") continue;
     for (const auto& f : fs::directory_iterator(d.path()))
       if (f.path().extension() == ".cpp") {
         names.push_back(d.path().filename().string());

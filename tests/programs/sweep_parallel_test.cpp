@@ -18,6 +18,7 @@
 #include "core/parallel.h"
 #include "core/stopwatch.h"
 #include "study/config.h"
+#include "study/validate.h"
 #include "study/csv.h"
 #include "study/reference.h"
 #include "study/study_scene.h"

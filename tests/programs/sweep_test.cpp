@@ -24,6 +24,8 @@
 #include "core/image.h"
 #include "study/reference.h"
 #include "study/config.h"
+#include "study/merge.h"
+#include "study/validate.h"
 #include "study/csv.h"
 #include "measure/metrics.h"
 #include "study/sweep.h"

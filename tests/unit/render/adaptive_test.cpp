@@ -18,6 +18,7 @@
 #include "render/sample_source.h"
 #include "support/scratch_dir.h"
 #include "study/config.h"
+#include "study/validate.h"
 #include "study/csv.h"
 #include "study/sweep.h"
 
@@ -470,7 +471,7 @@ TEST(AdaptiveStudy, SweepRowsCarryTheSamplesSpent) {
     validateStudy(c);
     ADD_FAILURE() << "accepted an unknown base";
   } catch (const OptionError& e) {
-    EXPECT_EQ(e.option(), "--samplers");
+    EXPECT_EQ(e.key(), "samplers");
     EXPECT_NE(std::string(e.what()).find("nosuch"), std::string::npos);
   }
 }

@@ -22,6 +22,7 @@
 #include "core/image.h"
 #include "render/render.h"
 #include "study/config.h"
+#include "study/validate.h"
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/study_scene.h"

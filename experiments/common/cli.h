@@ -12,7 +12,8 @@
 //     type);
 //   - bad options exit 2 with "<program>: <message>".
 // setupCommandLine installs the help layout (HelpFormatter) and --version;
-// tests/programs/cli_grammar_test.cpp checks every executable of experiments/.
+// tests/programs/cli_grammar_test.cpp checks every executable of experiments/. Errors
+// after parsing go through front_end.h (runFrontEnd: keys -> flags, exit codes).
 #pragma once
 #include <CLI/CLI.hpp>
 #include <cctype>

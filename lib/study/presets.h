@@ -1,0 +1,25 @@
+// The bundled studies, by name: a preset fills a StudyConfig, and whatever the
+// caller sets afterwards (explicit options) overrides it.
+//   default: every bundled scene at most 48 px, course and modern samplers and
+//            filters, radii 0.5, 1, 2, spp 4, 16, 64, 8 seeds, references at
+//            512 spp, images on; results/study (under 10 minutes on 2 cores,
+//            results/study_speed.md).
+//   full:    the full reference study (docs/science.md, "The full study"):
+//            every scene at 256 px on the larger side, every sampler and
+//            filter, radii 0.5-2, references at 8192 spp; results/study_full.
+//            Hours on 2 cores: run it sharded.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "study/config.h"
+
+namespace aliaslab {
+
+/// The preset names, in the order of --help ("default", "full").
+std::vector<std::string> studyPresetNames();
+
+/// Fills `config` with the preset `name`; returns false (config unchanged) for an unknown name.
+bool applyStudyPreset(const std::string& name, StudyConfig& config);
+
+}  // namespace aliaslab

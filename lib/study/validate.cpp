@@ -1,0 +1,190 @@
+#include "study/validate.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/files.h"
+#include "core/format.h"
+#include "filter/filter.h"
+#include "render/adaptive.h"
+#include "sampling/sampler.h"
+#include "study/csv.h"
+#include "study/study_scene.h"
+#include "study/sweep_memory.h"
+
+namespace aliaslab {
+
+namespace fs = std::filesystem;
+
+namespace {
+std::string formatValue(const std::string& s) { return "'" + s + "'"; }
+std::string formatValue(int v) { return std::to_string(v); }
+std::string formatValue(double v) { return formatNumber(v); }
+}  // namespace
+
+namespace {
+// The folders a validation created (deepest last), removed again when a later check fails.
+class NewFolders {
+ public:
+  ~NewFolders() {
+    if (keep_) return;
+    std::error_code ec;
+    for (auto it = made_.rbegin(); it != made_.rend(); ++it) fs::remove(*it, ec);  // only if still empty
+  }
+  /// `dir` exists and is writable afterwards, or OptionError(key); remembers what it had to create.
+  void require(const std::string& dir, const std::string& key) {
+    std::vector<fs::path> missing;
+    std::error_code ec;
+    for (fs::path p = fs::absolute(dir, ec).lexically_normal(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) {
+      missing.push_back(p);
+      if (p == p.parent_path()) break;
+    }
+    fs::create_directories(dir, ec);
+    for (auto it = missing.rbegin(); it != missing.rend(); ++it)
+      if (fs::is_directory(*it, ec)) made_.push_back(*it);
+    if (!fs::is_directory(dir, ec)) throw OptionError(key, "cannot create folder '" + dir + "'");
+    if (::access(dir.c_str(), W_OK) != 0) throw OptionError(key, "folder '" + dir + "' is not writable");
+  }
+  /// Every check passed: keep the folders.
+  void keep() { keep_ = true; }
+
+ private:
+  std::vector<fs::path> made_;
+  bool keep_ = false;
+};
+}  // namespace
+
+StudyPlan validateStudy(const StudyConfig& c) {
+  StudyPlan plan;
+  // Lists and numbers.
+  if (c.samplers.empty()) throw OptionError("samplers", "needs at least one sampler");
+  if (c.filters.empty()) throw OptionError("filters", "needs at least one filter");
+  if (c.spp.empty()) throw OptionError("spp", "needs at least one sample count");
+  if (c.radii.empty()) throw OptionError("radii", "needs at least one radius");
+  if (c.reconstruction.empty()) throw OptionError("reconstruction", "needs at least one mode");
+  if (c.prefilter.empty()) throw OptionError("prefilter", "needs at least one of none, footprint");
+  for (const std::string& p : c.prefilter) parsePrefilter(p);
+  for (size_t i = 0; i < c.prefilter.size(); ++i)
+    for (size_t j = 0; j < i; ++j)
+      if (c.prefilter[i] == c.prefilter[j]) throw OptionError("prefilter", "'" + c.prefilter[i] + "' given twice");
+  if (c.scenes.empty()) throw OptionError("scenes", "needs at least one scene file or folder");
+  if (c.seeds < 2) throw OptionError("seeds", "needs K >= 2 (noise is a variance over seeds), found " +
+                                                    std::to_string(c.seeds));
+  // The reference options: one check (study/reference.h), the same as the reference front end's.
+  rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
+  if (c.threads < 0) throw OptionError("threads", "must be >= 0");
+  if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
+    throw OptionError("size", "expected two positive numbers W H");
+  if (c.maxSize < 0) throw OptionError("max-size", "must be >= 0");
+  if (c.longSide < 0) throw OptionError("long-side", "must be >= 0");
+  plan.target = parseTarget(c.target);
+  // A name or number listed twice would make every configuration of it twice (the CSV keeps one).
+  auto once = [](const auto& list, const char* key) {
+    for (size_t i = 0; i < list.size(); ++i)
+      for (size_t j = i + 1; j < list.size(); ++j)
+        if (list[i] == list[j]) throw OptionError(key, "lists " + formatValue(list[i]) + " twice");
+  };
+  once(c.samplers, "samplers"), once(c.spp, "spp"), once(c.filters, "filters"), once(c.radii, "radii");
+  once(c.reconstruction, "reconstruction");
+  for (int spp : c.spp)
+    if (spp < 1) throw OptionError("spp", "sample counts must be >= 1, found " + std::to_string(spp));
+  for (double r : c.radii)
+    if (!(std::isfinite(r) && r > 0)) throw OptionError("radii", "radii must be finite and > 0, found " +
+                                                                      formatNumber(r));
+  // Names: the factories' own messages list the valid ones.
+  for (const std::string& m : c.reconstruction) parseReconMode(m);
+  for (const std::string& s : c.samplers)
+    for (int spp : c.spp)
+      rekeyOption("sampler", "samplers", [&] {
+        if (isAdaptiveSamplerName(s)) makeAdaptiveSampler(s, spp, 0);
+        else makeSampler(s, spp, 0);
+      });
+  // The groups, every (filter, radius) built here once (the factory names the valid filters).
+  rekeyOption("filter", "filters", [&] {
+    rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, &plan.notes); });
+  });
+
+  // Scenes: present and parseable, with a known size; never the CSV this run writes.
+  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep_memory.h sweepMemoryBound),
+  // plus the scene's reference images and the reference pass's sums: the largest group decides.
+  size_t rowsPerGroup = 0, weightedRows = 0;
+  for (const SampleSetGroup& g : plan.groups) {
+    rowsPerGroup = std::max(rowsPerGroup, g.configs.size());
+    weightedRows = std::max<size_t>(weightedRows, std::count_if(g.configs.begin(), g.configs.end(), [](const Configuration& x) {
+                                      return x.mode == ReconMode::WeightedAverage;
+                                    }));
+  }
+  const double references = double(studyFilters(c).size() + 2) * (3 * sizeof(float) + 4 * sizeof(double));
+  for (const std::string& path : expandScenePaths(c.scenes)) {
+    if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
+    refuseOutputOverInput("csv", csvPath(c), {path});
+    const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
+    // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
+    // the references (an image and a pass's 4 sums per (filter, radius), the area and the target).
+    const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
+    const double pixels = double(size.width) * size.height;
+    requireMemory(double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup, weightedRows,
+                                          c.seeds)) +
+                      pixels * references,
+                  "size",
+                  fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
+                      std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp");
+  }
+
+  // Output folders: all or none (a failed check removes the folders made before it).
+  requireOutputFolders({{c.out, "out"}, {fs::path(csvPath(c)).parent_path().string(), "csv"}, {c.cache, "cache"}});
+  return plan;
+}
+
+void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders) {
+  NewFolders made;
+  for (const auto& [dir, key] : folders) made.require(dir.empty() ? "." : dir, key);
+  made.keep();
+}
+
+
+namespace {
+// The value of column `name` in a parsed row.
+const std::string& field(const std::vector<std::string>& f, const std::string& name) {
+  const auto& cols = csvColumns();
+  return f[static_cast<size_t>(std::find(cols.begin(), cols.end(), name) - cols.begin())];
+}
+std::string sameStudyAdvice() {
+  return ". A study CSV holds one study: rerun with the options it was made with to resume it, or give another "
+         "{out} or {csv} for the new study";
+}
+}  // namespace
+
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c) {
+  const std::pair<const char*, const char*> studyWide[] = {{"seeds", "seeds"}, {"ref_spp", "ref-spp"}};
+  const std::string wanted[] = {std::to_string(c.seeds), std::to_string(c.refSpp)};
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const auto f = splitCsvLine(lines[i]);
+    if (f.size() != csvColumns().size()) continue;
+    for (size_t k = 0; k < std::size(studyWide); ++k)
+      if (field(f, studyWide[k].first) != wanted[k])
+        throw OptionError(studyWide[k].second, csv + " holds a study made with " + studyWide[k].first + " " +
+                                                   field(f, studyWide[k].first) + " (data row " +
+                                                   std::to_string(i + 1) + "); this run asks for " + wanted[k] +
+                                                   sameStudyAdvice());
+  }
+}
+
+void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
+                        int width, int height) {
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const auto f = splitCsvLine(lines[i]);
+    if (f.size() != csvColumns().size() || field(f, "scene") != stem) continue;
+    if (field(f, "width") != std::to_string(width) || field(f, "height") != std::to_string(height))
+      throw OptionError("size", csv + " holds scene " + stem + " at " + field(f, "width") + " x " +
+                                      field(f, "height") + " (data row " + std::to_string(i + 1) +
+                                      "); this run renders it at " + std::to_string(width) + " x " +
+                                      std::to_string(height) + " ({size} / {max-size})" + sameStudyAdvice());
+  }
+}
+
+}  // namespace aliaslab
