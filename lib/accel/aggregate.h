@@ -44,7 +44,7 @@ std::unique_ptr<Aggregate> makeBruteForce(const Object& root);
 /// gem (results/tracing_speed.md).
 std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, int nz = 0);
 
-/// A bounding volume hierarchy (accel/bvh.cpp): binned-SAH build, 4-wide
+/// A bounding volume hierarchy (accel/bvh.h, bvh_build.cpp, bvh_trace.cpp): binned-SAH build, 4-wide
 /// nodes tested with SSE, ordered closest-hit traversal, early-out any-hit.
 /// Triangles use a watertight hit test (no ray slips between the triangles
 /// of a shared edge) and Triangle::intersect's t, so the closest hit equals

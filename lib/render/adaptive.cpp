@@ -1,5 +1,5 @@
 // Adaptive sampling: the registry of names, describe(), and the counts of a traced set; see adaptive.h.
-// The tracing and the three methods are in adaptive_trace.cpp.
+// The three methods are in adaptive_trace.cpp, the tracing of their rounds in adaptive_work.cpp.
 #include "render/adaptive.h"
 
 #include <algorithm>

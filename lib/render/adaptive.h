@@ -11,7 +11,8 @@
 // (render/sample_source.h), which builds on makeAdaptiveSampler() here, and
 // trace what it gives; everything downstream (reconstruction with any
 // filter, the study's metrics) takes the result like any sample set.
-// (adaptive.cpp: names and parameters; adaptive_trace.cpp: the methods.)
+// (adaptive.cpp: names and parameters; adaptive_trace.cpp: the methods; adaptive_work.h, adaptive_work.cpp:
+// their shared state and rounds.)
 //
 // Protocol (all three methods):
 // - Budget: exactly B = spp * width * height samples are traced in total, so

@@ -1,125 +1,17 @@
-// Adaptive sampling: the rounds, the three methods and the area weights; see adaptive.h.
+// Adaptive sampling: the three methods and the area weights; see adaptive.h. The state they share (Work:
+// the samples, the budget, the rounds that trace them) is in adaptive_work.h.
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "core/error.h"
-#include "core/hash.h"
-#include "core/parallel.h"
-#include "render/adaptive.h"
+#include "render/adaptive_work.h"
 
 namespace aliaslab {
 
 namespace {
 
-/// n points for one cell: the square [cx, cx+1) x [cy, cy+1) / 2^level of its pixel.
-struct Request {
-  int level = 0, cx = 0, cy = 0, n = 0;
-};
-
-/// The state shared by the methods: every pixel's samples so far and the budget.
-class Work {
- public:
-  Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height, int threads, const Progress& progress)
-      : tracer_(tracer), a_(a), W_(width), H_(height), threads_(threads), progress_(progress),
-        N_(static_cast<long long>(width) * height), B_(N_ * a.spp()), px_(N_), hash_(N_) {
-    for (long long p = 0; p < N_; ++p) hash_[p] = hashWords(a.seed(), 0x72616e6bULL, static_cast<uint64_t>(p));
-  }
-
-  long long pixels() const { return N_; }
-  long long left() const { return B_ - spent_; }
-  int count(long long p) const { return static_cast<int>(px_[p].size()); }
-  const std::vector<FilmSample>& samples(long long p) const { return px_[p]; }
-  int width() const { return W_; }
-  uint64_t hash(long long p) const { return hash_[p]; }
-
-  /// Traces one round: requests[p] lists the cells of pixel p to sample (in order).
-  void trace(const std::vector<std::vector<Request>>& requests) {
-    std::map<int, std::unique_ptr<Sampler>> samplers;  // by count, built before the parallel part
-    long long total = 0;
-    for (const auto& list : requests)
-      for (const Request& r : list)
-        if (r.n > 0 && !samplers.count(r.n)) samplers[r.n] = a_.baseSampler(r.n, round_);
-    for (const auto& list : requests)
-      for (const Request& r : list) total += r.n;
-    parallelFor(H_, threads_, [&](int j) {
-      std::vector<Vec2> u;
-      for (int i = 0; i < W_; ++i) {
-        const size_t p = static_cast<size_t>(j) * W_ + i;
-        for (const Request& r : requests[p]) {
-          if (r.n <= 0) continue;
-          u.resize(r.n);
-          samplers.at(r.n)->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
-          const double side = std::ldexp(1.0, -r.level);
-          for (const Vec2& q : u) {
-            FilmSample s;
-            s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
-            s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-            px_[p].push_back(s);
-          }
-        }
-      }
-    });
-    spent_ += total, ++round_;
-    if (progress_) {
-      const double f = static_cast<double>(spent_) / static_cast<double>(std::max(1LL, B_));
-      progress_(static_cast<int>(std::lround(f * 1e6)), 1000000);
-    }
-  }
-
-  /// One round giving add[p] samples to pixel p, drawn over the whole pixel.
-  void tracePixels(const std::vector<int>& add) {
-    std::vector<std::vector<Request>> requests(N_);
-    for (long long p = 0; p < N_; ++p)
-      if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p]});
-    trace(requests);
-  }
-
-  /// Pixels by priority descending, then count ascending, then a hash of (seed, pixel): a strict order.
-  std::vector<long long> rank(const std::vector<double>& priority) const {
-    std::vector<long long> order(N_);
-    for (long long p = 0; p < N_; ++p) order[p] = p;
-    std::sort(order.begin(), order.end(), [&](long long a, long long b) {
-      if (priority[a] != priority[b]) return priority[a] > priority[b];
-      if (count(a) != count(b)) return count(a) < count(b);
-      return hash_[a] != hash_[b] ? hash_[a] < hash_[b] : a < b;
-    });
-    return order;
-  }
-
-  /// Spends what is left evenly: floor(R/N) everywhere, one more in the first R mod N pixels of rank(priority).
-  void spendEvenly(const std::vector<double>& priority) {
-    if (left() <= 0) return;
-    const long long q = left() / N_, extra = left() % N_;
-    std::vector<int> add(N_, static_cast<int>(q));
-    const auto order = rank(priority);
-    for (long long k = 0; k < extra; ++k) ++add[order[k]];
-    tracePixels(add);
-  }
-
-  /// Per pixel, per channel, the least and greatest radiance of its samples.
-  void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const {
-    lo.assign(N_, Color::Constant(INFINITY)), hi.assign(N_, Color::Constant(-INFINITY));
-    for (long long p = 0; p < N_; ++p)
-      for (const FilmSample& s : px_[p])
-        if (s.L.allFinite()) lo[p] = lo[p].min(s.L), hi[p] = hi[p].max(s.L);
-  }
-
- private:
-  /// v as a float inside [i, i+1) (rounding of i + u could give i + 1).
-  static float inside(double v, int i) {
-    return std::clamp(static_cast<float>(v), static_cast<float>(i), std::nextafter(static_cast<float>(i + 1), 0.f));
-  }
-
-  const Tracer& tracer_;
-  const AdaptiveSampler& a_;
-  int W_, H_, threads_;
-  Progress progress_;
-  long long N_, B_, spent_ = 0;
-  uint64_t round_ = 0;
-  std::vector<std::vector<FilmSample>> px_;
-  std::vector<uint64_t> hash_;
-};
+using adaptiveimpl::Request;
+using adaptiveimpl::Work;
 
 int capOf(const AdaptiveSampler& a) {
   return static_cast<int>(std::max<double>(a.spp(), std::llround(a.params().cap * a.spp())));

@@ -1,11 +1,5 @@
-// Bounding volume hierarchy behind makeBvh(); the protocol is in aggregate.h.
-//
-// Build: a binary tree by binned SAH over primitive centroids (kBins bins
-// per axis, leaves of at most kMaxLeaf primitives), collapsed into 4-wide
-// nodes (each node adopts the children of its largest-area inner children
-// until it has four), boxes stored axis by axis so one SSE instruction tests
-// a ray against four boxes. Boxes are padded like the grid's so that the
-// float slab test never drops a box a hit lies in.
+// Traversal of the bounding volume hierarchy behind makeBvh() (layout and build in bvh.h,
+// bvh_build.cpp); the protocol is in aggregate.h.
 //
 // Triangles: the watertight test of Woop, Benthin and Wald (2013) decides
 // hit or miss (shear the triangle into the ray's space, signs of three 2D
@@ -23,43 +17,20 @@
 #include <xmmintrin.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <vector>
 
-#include "accel/aggregate.h"
+#include "accel/bvh.h"
 #include "geometry/primitives.h"
 #include "geometry/triangle_math.h"
 
 namespace aliaslab {
 namespace {
 
-constexpr int kBins = 16, kMaxLeaf = 4, kStack = 128;
+using namespace bvhimpl;
 
-struct Item {
-  Vec3 a, b, c;      ///< triangle vertices (unused for other primitives)
-  Vec3 e1, e2;       ///< b - a, c - a as Triangle::intersect computes them
-  const Object* obj; ///< nullptr for a triangle, else a primitive tested by its own intersect()
-  const Material* material;
-  int prim;          ///< flattened index
-};
-
-struct alignas(16) Node4 {
-  float lo[3][4], hi[3][4];  ///< child boxes, axis by axis
-  int32_t child[4];          ///< inner: node index; leaf: first item (packed leaf: TriPack index); -1: empty
-  uint32_t count[4];         ///< 0: inner node, else number of items of the leaf (| kPacked: a TriPack)
-};
-
-/// A leaf made only of triangles, vertices stored axis by axis so that one SSE
-/// instruction runs a step of the watertight test for all of them. Lanes >= n
-/// are unused; item[l] is lane l's entry in items_ (material, prim, edges).
-struct alignas(16) TriPack {
-  float a[3][4], b[3][4], c[3][4];
-  int32_t item[4];
-  int32_t n;
-};
-constexpr uint32_t kPacked = 0x80000000u;  ///< in Node4::count: child is a TriPack index, low bits the count
+constexpr int kStack = 128;
 
 /// A ray prepared for both box and watertight triangle tests.
 struct PreparedRay {
@@ -149,64 +120,12 @@ inline bool mollerTrumboreT(const Ray& ray, const Item& it, float& t) {
   return true;
 }
 
-float area(const BBox& b) {
-  if (b.empty()) return 0.f;
-  const Vec3 e = b.extent();
-  return 2.f * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
-}
-
-struct BinaryNode {
-  BBox box;
-  int left = -1, right = -1;  ///< -1: leaf
-  int start = 0, count = 0;
-};
-
 class Bvh final : public Aggregate {
  public:
   explicit Bvh(const Object& root) {
-    const auto t0 = std::chrono::steady_clock::now();
-    root.flatten(Mat4::Identity(), prims_);
-    std::vector<BBox> boxes;
-    BBox world;
-    for (size_t i = 0; i < prims_.size(); ++i) {
-      const Object& p = *prims_[i];
-      if (!p.bounded()) {
-        unbounded_.push_back(static_cast<int>(i));
-        continue;
-      }
-      Item it{};
-      it.prim = static_cast<int>(i);
-      if (const auto* tri = dynamic_cast<const Triangle*>(&p)) {
-        it.a = tri->a, it.b = tri->b, it.c = tri->c;
-        it.e1 = tri->b - tri->a, it.e2 = tri->c - tri->a;
-        it.material = tri->material;
-        it.obj = nullptr;
-      } else {
-        it.obj = &p;
-      }
-      items_.push_back(it);
-      boxes.push_back(p.bounds());
-      world.extend(boxes.back());
-    }
-    if (!items_.empty()) {
-      const float maxAbs = std::max(world.min.cwiseAbs().maxCoeff(), world.max.cwiseAbs().maxCoeff());
-      const float pad = 1e-5f * world.extent().norm() + 1e-6f * maxAbs + 1e-30f;
-      for (auto& b : boxes) b.min.array() -= pad, b.max.array() += pad;
-      std::vector<int> order(items_.size());
-      for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
-      std::vector<Vec3> centroids(boxes.size());
-      for (size_t i = 0; i < boxes.size(); ++i) centroids[i] = 0.5f * (boxes[i].min + boxes[i].max);
-      std::vector<BinaryNode> bin;
-      bin.reserve(2 * items_.size());
-      bin.push_back({});
-      split(0, 0, static_cast<int>(order.size()), order, boxes, centroids, bin);
-      std::vector<Item> sorted(items_.size());
-      for (size_t i = 0; i < order.size(); ++i) sorted[i] = items_[order[i]];
-      items_.swap(sorted);
-      nodes_.reserve(bin.size() / 2 + 1);
-      collapse(0, bin);
-    }
-    buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    BvhLayout layout = buildBvh(root);
+    prims_ = std::move(layout.prims), unbounded_ = std::move(layout.unbounded), items_ = std::move(layout.items);
+    nodes_ = std::move(layout.nodes), packs_ = std::move(layout.packs), buildSeconds_ = layout.buildSeconds;
   }
 
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
@@ -350,111 +269,6 @@ class Bvh final : public Aggregate {
     best = it.prim;
   }
 
-  /// Binned SAH split of order[start, end) into bin[node].
-  void split(int node, int start, int end, std::vector<int>& order, const std::vector<BBox>& boxes,
-             const std::vector<Vec3>& centroids, std::vector<BinaryNode>& bin) {
-    BBox box, cbox;
-    for (int i = start; i < end; ++i) box.extend(boxes[order[i]]), cbox.extend(centroids[order[i]]);
-    bin[node].box = box, bin[node].start = start, bin[node].count = end - start;
-    const int n = end - start;
-    if (n <= 1) return;
-    int bestAxis = -1, bestSplit = 0;
-    float bestCost = kInf;
-    for (int a = 0; a < 3; ++a) {
-      const float extent = cbox.max[a] - cbox.min[a];
-      if (!(extent > 0.f)) continue;
-      BBox bb[kBins];
-      int cnt[kBins] = {};
-      const float scale = kBins / extent;
-      for (int i = start; i < end; ++i) {
-        const int b = std::min(kBins - 1, static_cast<int>((centroids[order[i]][a] - cbox.min[a]) * scale));
-        bb[b].extend(boxes[order[i]]), ++cnt[b];
-      }
-      float rightArea[kBins];
-      int rightCount[kBins];
-      BBox acc;
-      int c = 0;
-      for (int b = kBins - 1; b > 0; --b) acc.extend(bb[b]), c += cnt[b], rightArea[b] = area(acc), rightCount[b] = c;
-      acc = BBox{}, c = 0;
-      for (int b = 0; b < kBins - 1; ++b) {
-        acc.extend(bb[b]), c += cnt[b];
-        if (c == 0 || rightCount[b + 1] == 0) continue;
-        const float cost = area(acc) * c + rightArea[b + 1] * rightCount[b + 1];
-        if (cost < bestCost) bestCost = cost, bestAxis = a, bestSplit = b;
-      }
-    }
-    // Leaf when small and splitting does not pay (intersection cost ~ 1 box test per 1 primitive)
-    const float leafCost = area(box) * n;
-    int mid;
-    if (bestAxis < 0) {  // all centroids equal: split by count if too many
-      if (n <= kMaxLeaf) return;
-      mid = start + n / 2;
-    } else {
-      if (n <= kMaxLeaf && bestCost + area(box) >= leafCost) return;
-      const float lo = cbox.min[bestAxis], scale = kBins / (cbox.max[bestAxis] - lo);
-      const auto it = std::partition(order.begin() + start, order.begin() + end, [&](int i) {
-        return std::min(kBins - 1, static_cast<int>((centroids[i][bestAxis] - lo) * scale)) <= bestSplit;
-      });
-      mid = static_cast<int>(it - order.begin());
-      if (mid == start || mid == end) mid = start + n / 2;
-    }
-    const int l = static_cast<int>(bin.size());
-    bin.push_back({}), bin.push_back({});
-    bin[node].left = l, bin[node].right = l + 1;
-    split(l, start, mid, order, boxes, centroids, bin);
-    split(l + 1, mid, end, order, boxes, centroids, bin);
-  }
-
-  /// 4-wide node for binary node b (an inner node); returns its index.
-  int collapse(int b, const std::vector<BinaryNode>& bin) {
-    std::vector<int> kids;
-    if (bin[b].left < 0) kids = {b};  // the root is a leaf
-    else kids = {bin[b].left, bin[b].right};
-    while (kids.size() < 4) {
-      int pick = -1;
-      float bestArea = -1.f;
-      for (size_t i = 0; i < kids.size(); ++i)
-        if (bin[kids[i]].left >= 0 && area(bin[kids[i]].box) > bestArea) bestArea = area(bin[kids[i]].box), pick = static_cast<int>(i);
-      if (pick < 0) break;
-      const int k = kids[pick];
-      kids[pick] = bin[k].left;
-      kids.push_back(bin[k].right);
-    }
-    const int index = static_cast<int>(nodes_.size());
-    nodes_.push_back({});
-    for (int c = 0; c < 4; ++c) {
-      Node4& n = nodes_[index];
-      if (c >= static_cast<int>(kids.size())) {
-        for (int a = 0; a < 3; ++a) n.lo[a][c] = kInf, n.hi[a][c] = -kInf;
-        n.child[c] = -1, n.count[c] = 0;
-        continue;
-      }
-      const BinaryNode& k = bin[kids[c]];
-      for (int a = 0; a < 3; ++a) n.lo[a][c] = k.box.min[a], n.hi[a][c] = k.box.max[a];
-      if (k.left < 0) {
-        n.child[c] = k.start, n.count[c] = static_cast<uint32_t>(k.count);
-        bool triangles = k.count <= 4;
-        for (int e = 0; e < k.count; ++e) triangles = triangles && !items_[k.start + e].obj;
-        if (triangles) {  // the watertight test runs on all of them at once (TriPack)
-          TriPack p{};
-          p.n = k.count;
-          for (int e = 0; e < 4; ++e) {
-            const Item& it = items_[k.start + std::min(e, k.count - 1)];  // unused lanes repeat the last
-            p.item[e] = k.start + std::min(e, k.count - 1);
-            for (int a = 0; a < 3; ++a) p.a[a][e] = it.a[a], p.b[a][e] = it.b[a], p.c[a][e] = it.c[a];
-          }
-          n.child[c] = static_cast<int32_t>(packs_.size()), n.count[c] = kPacked | static_cast<uint32_t>(k.count);
-          packs_.push_back(p);
-        }
-      } else {
-        n.count[c] = 0;
-        const int child = collapse(kids[c], bin);
-        nodes_[index].child[c] = child;
-      }
-    }
-    return index;
-  }
-
   ObjectList prims_;
   std::vector<int> unbounded_;
   std::vector<Item> items_;
@@ -466,10 +280,6 @@ class Bvh final : public Aggregate {
 }  // namespace
 
 std::unique_ptr<Aggregate> makeBvh(const Object& root) { return std::make_unique<Bvh>(root); }
-
-}  // namespace aliaslab
-
-namespace aliaslab {
 
 std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root, int nx, int ny, int nz) {
   ObjectList flat;

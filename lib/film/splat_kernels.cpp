@@ -1,0 +1,107 @@
+// The splat's accumulation kernels: a batch's (r, g, b, 1) x w added over n x n blocks of a band buffer, in
+// runs for n <= 2, unrolled for n <= 6, in SSE and in AVX2 + FMA builds (the same sums bit for bit), and the
+// choice among them (pickKernel). Called through a pointer from the pass in splat_pass.cpp.
+#include <utility>
+
+#include "film/splat_impl.h"
+
+namespace aliaslab::filmimpl {
+namespace {
+
+/// For n = N <= 2: add(sum, p, t, L_t) adds sample t's contribution to the sum of pixel p (row-major in the
+/// N x N block), for every pixel and sample, run by run. A run is the samples with the same first pixel (a
+/// pixel's samples at small radii); it adds into registers: each pixel's sum is loaded once, takes the run's
+/// contributions in sample order and is stored once. The same additions as one sample at a time, without
+/// the store-to-load round trip that chained them (measured: a third less time at n = 1; larger blocks
+/// gained nothing).
+template <int N, class Add>
+inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, Sum* buffer, int width,
+                                                   Add&& add) {
+  for (int s = 0; s < count;) {
+    int e = s + 1;
+    while (e < count && batch.at[e] == batch.at[s]) ++e;
+    Sum* block = buffer + batch.at[s];
+    V4 acc[N * N];
+#pragma GCC unroll 4
+    for (int p = 0; p < N * N; ++p) acc[p] = block[(p / N) * width + p % N].v;
+    for (int t = s; t < e; ++t) {
+      const V4 L = __builtin_convertvector(batch.L[t], V4);
+#pragma GCC unroll 4
+      for (int p = 0; p < N * N; ++p) add(acc[p], p, t, L);
+    }
+#pragma GCC unroll 4
+    for (int p = 0; p < N * N; ++p) block[(p / N) * width + p % N].v = acc[p];
+    s = e;
+  }
+}
+
+/// buffer[at + b * width + a] += w(a, b) L for every sample of the batch (N: n known at compile time, 0: any),
+/// w(a, b) = w[(b * n + a) * kBatch + s]; in runs for n <= 2 (addRuns).
+template <int N>
+inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
+                                                      Sum* buffer, int width) {
+  constexpr size_t stride = kBatch;  // FilterBatch::eval is always called for a whole batch: constant offsets
+  if constexpr (N == 1 || N == 2) {
+    addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+      sum += static_cast<double>(w[p * stride + t]) * L;
+    });
+  } else {  // larger blocks: enough independent sums per sample
+    if (N) n = N;
+    for (int s = 0; s < count; ++s) {
+      Sum* block = buffer + batch.at[s];
+      const V4 L = __builtin_convertvector(batch.L[s], V4);
+#pragma GCC unroll 8
+      for (int b = 0; b < n; ++b)
+#pragma GCC unroll 8
+        for (int a = 0; a < n; ++a) block[b * width + a].v += static_cast<double>(w[(b * n + a) * stride + s]) * L;
+    }
+  }
+}
+/// The same for FilterBatch::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
+template <int N>
+inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
+  if constexpr (N == 1 || N == 2) {
+    addRuns<N>(batch, count, buffer, width, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+      sum += L * static_cast<double>(p % N < batch.nx[t]) * static_cast<double>(p / N < batch.ny[t]);
+    });
+  } else {
+    if (N) n = N;
+    for (int s = 0; s < count; ++s) {
+      Sum* block = buffer + batch.at[s];
+      const V4 L = __builtin_convertvector(batch.L[s], V4);
+      V4 column[N ? N : kMaxBlock];  // L on the footprint's columns, 0 beyond
+#pragma GCC unroll 8
+      for (int a = 0; a < n; ++a) column[a] = L * static_cast<double>(a < batch.nx[s]);
+#pragma GCC unroll 8
+      for (int b = 0; b < n; ++b) {
+        const double inRow = b < batch.ny[s];
+#pragma GCC unroll 8
+        for (int a = 0; a < n; ++a) block[b * width + a].v += column[a] * inRow;
+      }
+    }
+  }
+}
+template <int N>
+__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
+  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+}
+template <int N>
+void accumulateSse(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
+  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+}
+
+/// pickKernel for n among Ns + 1 (unrolled), else the kernel for any n.
+template <int... Ns>
+Kernel pickKernelOf(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
+  static const bool cpuAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  const bool avx2 = cpuAvx2 && allowAvx2;
+  Kernel k = avx2 ? accumulateAvx2<0> : accumulateSse<0>;
+  ((k = n == Ns + 1 ? (avx2 ? accumulateAvx2<Ns + 1> : accumulateSse<Ns + 1>) : k), ...);
+  return k;
+}
+
+}  // namespace
+
+Kernel pickKernel(int n, bool allowAvx2) { return pickKernelOf(n, allowAvx2, std::make_integer_sequence<int, 6>()); }
+
+}  // namespace aliaslab::filmimpl

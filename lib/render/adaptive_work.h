@@ -1,0 +1,62 @@
+// Private to render/ (adaptive_trace.cpp, adaptive_work.cpp): the state the adaptive methods share, every
+// pixel's samples so far and the budget, and the rounds that trace more of them (Work::trace). The methods
+// read the samples through the inline accessors; each round is one call.
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "render/adaptive.h"
+
+namespace aliaslab::adaptiveimpl {
+
+/// n points for one cell: the square [cx, cx+1) x [cy, cy+1) / 2^level of its pixel.
+struct Request {
+  int level = 0, cx = 0, cy = 0, n = 0;
+};
+
+/// The state shared by the methods: every pixel's samples so far and the budget.
+class Work {
+ public:
+  Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height, int threads, const Progress& progress);
+
+  long long pixels() const { return N_; }
+  long long left() const { return B_ - spent_; }
+  int count(long long p) const { return static_cast<int>(px_[p].size()); }
+  const std::vector<FilmSample>& samples(long long p) const { return px_[p]; }
+  int width() const { return W_; }
+  uint64_t hash(long long p) const { return hash_[p]; }
+
+  /// Traces one round: requests[p] lists the cells of pixel p to sample (in order).
+  void trace(const std::vector<std::vector<Request>>& requests);
+
+  /// One round giving add[p] samples to pixel p, drawn over the whole pixel.
+  void tracePixels(const std::vector<int>& add);
+
+  /// Pixels by priority descending, then count ascending, then a hash of (seed, pixel): a strict order.
+  std::vector<long long> rank(const std::vector<double>& priority) const;
+
+  /// Spends what is left evenly: floor(R/N) everywhere, one more in the first R mod N pixels of rank(priority).
+  void spendEvenly(const std::vector<double>& priority);
+
+  /// Per pixel, per channel, the least and greatest radiance of its samples.
+  void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
+
+ private:
+  /// v as a float inside [i, i+1) (rounding of i + u could give i + 1).
+  static float inside(double v, int i) {
+    return std::clamp(static_cast<float>(v), static_cast<float>(i), std::nextafter(static_cast<float>(i + 1), 0.f));
+  }
+
+  const Tracer& tracer_;
+  const AdaptiveSampler& a_;
+  int W_, H_, threads_;
+  Progress progress_;
+  long long N_, B_, spent_ = 0;
+  uint64_t round_ = 0;
+  std::vector<std::vector<FilmSample>> px_;
+  std::vector<uint64_t> hash_;
+};
+
+}  // namespace aliaslab::adaptiveimpl
