@@ -33,7 +33,7 @@ ReconMode parseReconMode(const std::string& name) {
   for (ReconMode m : {ReconMode::WeightedAverage, ReconMode::Classic, ReconMode::ImportanceSampled,
                       ReconMode::Supersample})
     if (toString(m) == name) return m;
-  throw OptionError("--reconstruction",
+  throw OptionError("reconstruction",
                     "unknown mode '" + name + "' (valid: weighted, classic, importance, supersample)");
 }
 

@@ -146,7 +146,7 @@ enum class ReconMode {
   Supersample,         ///< spp = k^2 sub-pixel centres, 3x3 binomial blur, k x k box average
 };
 std::string toString(ReconMode mode);
-/// Parses "weighted", "classic", "importance", "supersample"; throws OptionError("--reconstruction").
+/// Parses "weighted", "classic", "importance", "supersample"; throws OptionError("reconstruction").
 ReconMode parseReconMode(const std::string& name);
 
 /// The classic integer support: ceil(r - 0.5) of the filter's course variant (makeCourseVariant: the Gaussian's
@@ -154,7 +154,7 @@ ReconMode parseReconMode(const std::string& name);
 int classicSupport(const Filter& filter);
 
 /// Reconstructs with `mode`; `filter` is ignored by Supersample, which throws
-/// OptionError("--spp", ...) unless spp = k * k. Supersample puts each sample
+/// OptionError("spp", ...) unless spp = k * k. Supersample puts each sample
 /// in the sub-pixel cell of the k-times finer grid that contains its
 /// position (a cell with several samples takes their mean, an empty cell
 /// the mean of its pixel's finite samples), blurs with [1 2 1]/4 x [1 2 1]/4

@@ -32,11 +32,11 @@ std::vector<double> binomialPass(const std::vector<double>& in, int w, int h, in
 Reconstruction reconstructSupersample(const SampleBuffer& samples, int threads) {
   const int W = samples.width(), H = samples.height(), spp = samples.spp();
   if (samples.variable())
-    throw OptionError("--reconstruction", "supersample needs the same square count k*k in every pixel; an adaptive "
+    throw OptionError("reconstruction", "supersample needs the same square count k*k in every pixel; an adaptive "
                                           "sample set varies it");
   const int k = static_cast<int>(std::lround(std::sqrt(double(spp))));
   if (k * k != spp)
-    throw OptionError("--spp", "supersample reconstruction needs a square sample count k*k, got " +
+    throw OptionError("spp", "supersample reconstruction needs a square sample count k*k, got " +
                                    std::to_string(spp));
   const int fw = W * k, fh = H * k;
   Reconstruction out{Image(W, H), {}};

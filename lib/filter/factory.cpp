@@ -18,7 +18,7 @@ constexpr float kMinFilterRadius = 1e-3f, kMaxFilterRadius = 1024.f;
 namespace filterimpl {
 void requireRange(const std::string& filter, const std::string& param, double value, double lo, double hi) {
   if (!(value >= lo && value <= hi))
-    throw OptionError("--filter-param", filter + " " + param + " must be in [" + formatNumber(lo) + ", " +
+    throw OptionError("filter-param", filter + " " + param + " must be in [" + formatNumber(lo) + ", " +
                                             formatNumber(hi) + "], got " + formatNumber(value));
 }
 }  // namespace filterimpl
@@ -106,14 +106,14 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
   if (!entry) {
     std::string list;
     for (const auto& n : allFilterNames()) list += (list.empty() ? "" : ", ") + n;
-    throw OptionError("--filter", "unknown filter '" + name + "' (valid: " + list + ")");
+    throw OptionError("filter", "unknown filter '" + name + "' (valid: " + list + ")");
   }
   if (!std::isfinite(radius) || radius <= 0)
-    throw OptionError("--radius", "filter radius must be finite and > 0, got " + formatNumber(radius));
+    throw OptionError("radius", "filter radius must be finite and > 0, got " + formatNumber(radius));
   // Below kMinFilterRadius squared offsets underflow in float; above kMaxFilterRadius
   // the importance weight (the integral of |f|) overflows.
   if (radius < kMinFilterRadius || radius > kMaxFilterRadius)
-    throw OptionError("--radius", "filter radius must be in [" + formatNumber(kMinFilterRadius) + ", " +
+    throw OptionError("radius", "filter radius must be in [" + formatNumber(kMinFilterRadius) + ", " +
                                       formatNumber(kMaxFilterRadius) + "] pixels, got " + formatNumber(radius));
 
   // merge the given shape parameters over the defaults; unknown names fail
@@ -122,11 +122,11 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
     if (!p.count(key)) {
       std::string valid;
       for (const auto& [k, v] : p) valid += (valid.empty() ? "" : ", ") + k;
-      throw OptionError("--filter-param", "'" + key + "' is not a parameter of " + name +
+      throw OptionError("filter-param", "'" + key + "' is not a parameter of " + name +
                                               " (valid: " + (valid.empty() ? "none" : valid) + ")");
     }
     if (!std::isfinite(value))
-      throw OptionError("--filter-param", name + " " + key + " must be finite, got " + formatNumber(value));
+      throw OptionError("filter-param", name + " " + key + " must be finite, got " + formatNumber(value));
     p[key] = value;
   }
 

@@ -66,10 +66,10 @@ const std::vector<std::string>& filterNames();
 const std::vector<std::string>& allFilterNames();
 
 /// Makes a filter by name with support radius `radius` and shape `params`.
-/// Throws OptionError("--filter", ...) listing the valid names for an unknown
-/// name, OptionError("--radius", ...) for a radius that is not finite or
+/// Throws OptionError("filter", ...) listing the valid names for an unknown
+/// name, OptionError("radius", ...) for a radius that is not finite or
 /// outside [1e-3, 1024] pixels (squared offsets underflow below, the integral
-/// of |f| overflows above), and OptionError("--filter-param", ...) naming the parameter for an unknown or
+/// of |f| overflows above), and OptionError("filter-param", ...) naming the parameter for an unknown or
 /// out-of-range shape parameter (so a misspelt "sigmaa" cannot pass).
 std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const FilterParams& params = {});
 

@@ -71,7 +71,7 @@ class BatchKernel;
 /// A filter file's batch function: the kernel for `filter` (made by that file), or null.
 using BatchMaker = std::shared_ptr<const BatchKernel> (*)(const Filter& filter);
 
-/// Throws OptionError("--filter-param", ...) unless lo <= value <= hi.
+/// Throws OptionError("filter-param", ...) unless lo <= value <= hi.
 void requireRange(const std::string& filter, const std::string& param, double value, double lo, double hi);
 
 // Make functions, one per filter file; `p` holds every shape parameter.

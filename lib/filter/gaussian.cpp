@@ -100,7 +100,7 @@ std::unique_ptr<Filter> makeGaussian(float r, const FilterParams& p) {
   // -1 / (2 sigma^2) and 2 pi sigma^2 stay finite in float and double (fuzz_cli found sigma = 6e199)
   requireRange("gaussian", "sigma", sigma, 1e-3, 1e3);
   if (sub != 0 && sub != 1)
-    throw OptionError("--filter-param", "gaussian subtract_edge must be 0 or 1, got " + std::to_string(sub));
+    throw OptionError("filter-param", "gaussian subtract_edge must be 0 or 1, got " + std::to_string(sub));
   return std::make_unique<GaussianFilter>(r, sigma, sub == 1);
 }
 

@@ -45,7 +45,7 @@ std::vector<ConvergenceRow> measureConvergence(const ConvergenceStudy& study, st
       try {
         sampler = makeSampler(s, n, study.seed);
       } catch (const OptionError& e) {
-        log << "skipped " << s << " N=" << n << ": " << e.what() << "\n";
+        log << "skipped " << s << " N=" << n << ": " << e.message() << "\n";
         continue;
       }
       const auto rmse = convergenceRmse(*sampler, fs, study.realisations, study.threads);

@@ -39,7 +39,7 @@ void setParam(AdaptiveMethod m, AdaptiveParams& p, const std::string& name, cons
   const std::string key = item.substr(0, eq);
   const auto keys = keysOf(m);
   if (eq == std::string::npos || std::find(keys.begin(), keys.end(), key) == keys.end())
-    throw OptionError("--sampler", "'" + name + "': unknown parameter '" + item +
+    throw OptionError("sampler", "'" + name + "': unknown parameter '" + item +
                                        "'; this method takes key=value with key one of: " + joined(keys));
   double v = 0;
   size_t used = 0;
@@ -49,7 +49,7 @@ void setParam(AdaptiveMethod m, AdaptiveParams& p, const std::string& name, cons
     used = 0;
   }
   auto bad = [&](const std::string& want) {
-    throw OptionError("--sampler",
+    throw OptionError("sampler",
                       "'" + name + "': " + key + " must be " + want + ", found '" + item.substr(eq + 1) + "'");
   };
   if (used == 0 || used != item.size() - eq - 1 || !std::isfinite(v)) bad("a finite number");
@@ -83,17 +83,17 @@ bool isAdaptiveSamplerName(const std::string& name) { return name.rfind(kPrefix,
 
 std::unique_ptr<AdaptiveSampler> makeAdaptiveSampler(const std::string& name, int spp, uint64_t seed) {
   const std::string forms = "adaptive-contrast:BASE, adaptive-error:BASE or adaptive-subdiv:BASE";
-  if (!isAdaptiveSamplerName(name)) throw OptionError("--sampler", "'" + name + "' is not " + forms);
+  if (!isAdaptiveSamplerName(name)) throw OptionError("sampler", "'" + name + "' is not " + forms);
   const size_t colon = name.find(':');
   if (colon == std::string::npos)
-    throw OptionError("--sampler", "'" + name + "' names no base sampler; expected " + forms + " (BASE: " +
+    throw OptionError("sampler", "'" + name + "' names no base sampler; expected " + forms + " (BASE: " +
                                        joined(samplerNames()) + ")");
   const std::string method = name.substr(std::string(kPrefix).size(), colon - std::string(kPrefix).size());
   AdaptiveMethod m;
   if (method == "contrast") m = AdaptiveMethod::Contrast;
   else if (method == "error") m = AdaptiveMethod::Error;
   else if (method == "subdiv") m = AdaptiveMethod::Subdivision;
-  else throw OptionError("--sampler", "unknown adaptive method '" + method + "' in '" + name + "'; valid: " + forms);
+  else throw OptionError("sampler", "unknown adaptive method '" + method + "' in '" + name + "'; valid: " + forms);
   std::vector<std::string> parts;
   for (size_t at = colon + 1;;) {
     const size_t plus = name.find('+', at);
@@ -102,8 +102,8 @@ std::unique_ptr<AdaptiveSampler> makeAdaptiveSampler(const std::string& name, in
     at = plus + 1;
   }
   const std::string base = parts[0];
-  if (isAdaptiveSamplerName(base)) throw OptionError("--sampler", "'" + name + "': the base cannot be adaptive itself");
-  if (spp < 1) throw OptionError("--spp", "samples per pixel must be >= 1, got " + std::to_string(spp));
+  if (isAdaptiveSamplerName(base)) throw OptionError("sampler", "'" + name + "': the base cannot be adaptive itself");
+  if (spp < 1) throw OptionError("spp", "samples per pixel must be >= 1, got " + std::to_string(spp));
   makeSampler(base, spp, seed);  // an unknown base or a count it refuses: the factory names the valid ones
   AdaptiveParams params;
   for (size_t k = 1; k < parts.size(); ++k) setParam(m, params, name, parts[k]);

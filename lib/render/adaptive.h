@@ -115,8 +115,8 @@ const std::vector<std::string>& adaptiveMethodNames();
 /// True for names starting "adaptive-" (which makeAdaptiveSampler then accepts or rejects).
 bool isAdaptiveSamplerName(const std::string& name);
 
-/// Parses a name (see the top of this file). Throws OptionError("--sampler") for an unknown method, base or
-/// key or a bad value (listing the valid ones) and OptionError("--spp") for spp < 1.
+/// Parses a name (see the top of this file). Throws OptionError("sampler") for an unknown method, base or
+/// key or a bad value (listing the valid ones) and OptionError("spp") for spp < 1.
 std::unique_ptr<AdaptiveSampler> makeAdaptiveSampler(const std::string& name, int spp, uint64_t seed);
 
 /// Traces exactly spp * width * height samples chosen by the method; the buffer has a variable count per pixel

@@ -87,7 +87,7 @@ SampleBuffer traceImportanceSamples(const Tracer& tracer, const Sampler& sampler
 
 Image renderDepth(const Tracer& tracer, int width, int height, float dmin, float dmax, int threads) {
   requireCamera(tracer);
-  if (!(dmax > dmin)) throw OptionError("-depth", "dmax must be greater than dmin");
+  if (!(dmax > dmin)) throw OptionError("depth", "dmax must be greater than dmin");
   Image image(width, height);
   forEachTile(width, height, threads, {}, [&](int i, int j) {
     Hit hit;

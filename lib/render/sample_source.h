@@ -52,7 +52,7 @@ class SampleSource {
 
 /// Makes the source for any sampler name: a name of allSamplerNames() (makeSampler) or an adaptive name
 /// "adaptive-METHOD:BASE[+key=value...]" (makeAdaptiveSampler). Throws those factories' OptionErrors
-/// ("--sampler" naming the valid names, "--spp").
+/// ("sampler" naming the valid names, "spp").
 std::unique_ptr<SampleSource> makeSampleSource(const std::string& name, int spp, uint64_t seed);
 
 /// Every name makeSampleSource takes without shape parameters, in a fixed order: allSamplerNames(), then

@@ -116,7 +116,7 @@ class BlueNoiseSampler final : public Sampler {
 
 std::unique_ptr<Sampler> makeBlueNoiseSampler(int spp, uint64_t seed) {
   if (spp > kMaxSpp)
-    throw OptionError("--spp", "bluenoise supports at most " + std::to_string(kMaxSpp) +
+    throw OptionError("spp", "bluenoise supports at most " + std::to_string(kMaxSpp) +
                                    " samples per pixel (its best-candidate sets grow slowly), got " +
                                    std::to_string(spp) + "; use sobol or pmj02 for more");
   return std::make_unique<BlueNoiseSampler>(spp, seed);

@@ -83,26 +83,26 @@ std::unique_ptr<Sampler> makeSampler(const std::string& name, int spp, uint64_t 
     for (const WrapperEntry& w : kWrappers) {
       if (wrapper != w.name) continue;
       if (base.find(':') != std::string::npos)
-        throw OptionError("--sampler", "sampler '" + name + "': " + wrapper +
+        throw OptionError("sampler", "sampler '" + name + "': " + wrapper +
                                            " takes a plain base sampler, not another wrapper; valid: " + validNames());
       bool known = false;
       for (const Entry& e : kSamplers) known = known || base == e.name;
       if (!known)
-        throw OptionError("--sampler", "sampler '" + name + "': unknown base sampler '" + base +
+        throw OptionError("sampler", "sampler '" + name + "': unknown base sampler '" + base +
                                            "'; valid: " + validNames());
       return w.make(makeSampler(base, spp, seed), seed);
     }
   }
   for (const Entry& e : kSamplers) {
     if (name != e.name) continue;
-    if (spp < 1) throw OptionError("--spp", "samples per pixel must be >= 1, got " + std::to_string(spp));
+    if (spp < 1) throw OptionError("spp", "samples per pixel must be >= 1, got " + std::to_string(spp));
     return e.make(spp, seed);
   }
   for (const std::string& w : samplerWrapperNames())
     if (name == w)
-      throw OptionError("--sampler", "sampler '" + name + "' needs a base sampler, e.g. " + w + ":sobol; valid: " +
+      throw OptionError("sampler", "sampler '" + name + "' needs a base sampler, e.g. " + w + ":sobol; valid: " +
                                          validNames());
-  throw OptionError("--sampler", "unknown sampler '" + name + "'; valid: " + validNames());
+  throw OptionError("sampler", "unknown sampler '" + name + "'; valid: " + validNames());
 }
 
 void gridShape(int spp, int& columns, int& rows) {

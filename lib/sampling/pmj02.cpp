@@ -175,7 +175,7 @@ class Pmj02Sampler final : public Sampler {
 
 std::unique_ptr<Sampler> makePmj02Sampler(int spp, uint64_t seed) {
   if (spp > kMaxSpp)
-    throw OptionError("--spp", "pmj02 supports at most " + std::to_string(kMaxSpp) + " samples per pixel, got " +
+    throw OptionError("spp", "pmj02 supports at most " + std::to_string(kMaxSpp) + " samples per pixel, got " +
                                    std::to_string(spp));
   return std::make_unique<Pmj02Sampler>(spp, seed);
 }

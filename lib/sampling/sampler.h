@@ -82,8 +82,8 @@ const std::vector<std::string>& samplerWrapperNames();
 const std::vector<std::string>& allSamplerNames();
 
 /// Makes a sampler by name (plain or "WRAPPER:BASE"). Throws
-/// OptionError("--sampler", ...) listing the valid names for an unknown one
-/// (or a wrapper without a valid base, or a wrapper of a wrapper), and OptionError("--spp", ...) for spp < 1
+/// OptionError("sampler", ...) listing the valid names for an unknown one
+/// (or a wrapper without a valid base, or a wrapper of a wrapper), and OptionError("spp", ...) for spp < 1
 /// or a count the pattern refuses.
 std::unique_ptr<Sampler> makeSampler(const std::string& name, int spp, uint64_t seed);
 

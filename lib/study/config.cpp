@@ -10,8 +10,7 @@
 #include "core/files.h"
 #include "core/format.h"
 #include "filter/filter.h"
-#include "render/adaptive.h"
-#include "sampling/sampler.h"
+#include "render/sample_source.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {
@@ -109,7 +108,7 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
                       std::to_string(spp));
             continue;
           }
-          if (mode == ReconMode::ImportanceSampled && isAdaptiveSamplerName(sampler)) {
+          if (mode == ReconMode::ImportanceSampled && makeSampleSource(sampler, spp, 0)->adaptive()) {
             note("importance: adaptive samplers place their own samples (no filter importance); skipped " + sampler);
             continue;
           }

@@ -10,7 +10,7 @@
 #include "core/files.h"
 #include "core/format.h"
 #include "filter/filter.h"
-#include "render/adaptive.h"
+#include "render/sample_source.h"
 #include "sampling/sampler.h"
 #include "study/csv.h"
 #include "study/study_scene.h"
@@ -99,10 +99,7 @@ StudyPlan validateStudy(const StudyConfig& c) {
   for (const std::string& m : c.reconstruction) parseReconMode(m);
   for (const std::string& s : c.samplers)
     for (int spp : c.spp)
-      rekeyOption("sampler", "samplers", [&] {
-        if (isAdaptiveSamplerName(s)) makeAdaptiveSampler(s, spp, 0);
-        else makeSampler(s, spp, 0);
-      });
+      rekeyOption("sampler", "samplers", [&] { makeSampleSource(s, spp, 0); });
   // The groups, every (filter, radius) built here once (the factory names the valid filters).
   rekeyOption("filter", "filters", [&] {
     rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, &plan.notes); });

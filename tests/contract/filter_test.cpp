@@ -359,28 +359,28 @@ TEST(FilterFacts, EightLaneExpIsEigensFourLaneExpBitForBit) {
 
 TEST(FilterFactory, UnknownNameListsValidNames) {
   std::string msg;
-  EXPECT_EQ(optionOf([] { makeFilter("gauss", 1); }, &msg), "--filter");
+  EXPECT_EQ(optionOf([] { makeFilter("gauss", 1); }, &msg), "filter");
   for (const auto& n : filterNames()) EXPECT_NE(msg.find(n), std::string::npos) << msg;
 }
 
 TEST(FilterFactory, RadiusMustBeFiniteAndPositive) {
-  for (float r : {0.f, -1.f, NAN, INFINITY}) EXPECT_EQ(optionOf([r] { makeFilter("tent", r); }), "--radius") << r;
+  for (float r : {0.f, -1.f, NAN, INFINITY}) EXPECT_EQ(optionOf([r] { makeFilter("tent", r); }), "radius") << r;
 }
 
 TEST(FilterFactory, MisspeltParameterIsNamed) {
   std::string msg;
-  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1.5f, {{"sigmaa", 0.4}}); }, &msg), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1.5f, {{"sigmaa", 0.4}}); }, &msg), "filter-param");
   EXPECT_NE(msg.find("'sigmaa' is not a parameter of gaussian (valid: sigma, subtract_edge)"), std::string::npos) << msg;
-  EXPECT_EQ(optionOf([] { makeFilter("box", 1, {{"tau", 3}}); }, &msg), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("box", 1, {{"tau", 3}}); }, &msg), "filter-param");
   EXPECT_NE(msg.find("valid: none"), std::string::npos) << msg;
 }
 
 TEST(FilterFactory, OutOfRangeParametersRejected) {
-  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", 0}}); }), "--filter-param");
-  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", NAN}}); }), "--filter-param");
-  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"subtract_edge", 0.5}}); }), "--filter-param");
-  EXPECT_EQ(optionOf([] { makeFilter("lanczos", 1, {{"tau", 0.5}}); }), "--filter-param");
-  EXPECT_EQ(optionOf([] { makeFilter("hann", 1, {{"tau", 0.99}}); }), "--filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", 0}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", NAN}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"subtract_edge", 0.5}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("lanczos", 1, {{"tau", 0.5}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("hann", 1, {{"tau", 0.99}}); }), "filter-param");
   EXPECT_EQ(optionOf([] { makeFilter("lanczos", 2, {{"tau", 2}}); }), "");
 }
 

@@ -202,7 +202,7 @@ TEST(SamplerFactory, WrapperNamesNeedOnePlainBase) {
       makeSampler(bad, 4, 0);
       FAIL() << "accepted " << bad;
     } catch (const OptionError& e) {
-      EXPECT_EQ(e.key(), "--sampler") << bad;
+      EXPECT_EQ(e.key(), "sampler") << bad;
       EXPECT_NE(std::string(e.what()).find("bluenoise-dither:BASE"), std::string::npos) << e.what();
     }
   }
@@ -215,7 +215,7 @@ TEST(SamplerFactory, UnknownNameListsEveryValidName) {
     makeSampler("jitterd", 4, 0);
     FAIL() << "no error";
   } catch (const OptionError& e) {
-    EXPECT_EQ(e.key(), "--sampler");
+    EXPECT_EQ(e.key(), "sampler");
     const std::string what = e.what();
     EXPECT_NE(what.find("'jitterd'"), std::string::npos);
     for (const std::string& n : samplerNames()) EXPECT_NE(what.find(n), std::string::npos) << n;
@@ -229,7 +229,7 @@ TEST(SamplerFactory, NonPositiveSppThrows) {
         makeSampler(n, spp, 0);
         FAIL() << n << " accepted spp " << spp;
       } catch (const OptionError& e) {
-        EXPECT_EQ(e.key(), "--spp");
+        EXPECT_EQ(e.key(), "spp");
       }
     }
   }

@@ -6,7 +6,7 @@
 
 #include <stdexcept>
 
-#include "../experiments/common/front_end.cpp"  // the front end is a library of experiments/, not of lib/
+#include "common/front_end.h"  // experiments/common: the front ends' library (aliaslab_frontend)
 #include "core/error.h"
 
 using namespace aliaslab;

@@ -115,26 +115,6 @@ const Allowed kNotFlags[] = {
     {"study/merge.cpp", "-of-", "part of a shard CSV's file name"},
 };
 
-// PENDING CONVERSION: lib/filter, lib/sampling, lib/render and lib/film are being rewritten on another branch
-// (the Filter interface, the sampler factory); their keys are converted after that merge (key by key: the
-// leading dashes dropped, "--sampler" -> "sampler", "-depth" -> "depth"; the front ends' maps already hold the
-// neutral keys). The lead empties this list then; a line left here once converted fails the test below.
-const Allowed kPendingConversion[] = {
-    {"filter/gaussian.cpp", "--filter-param", "pending conversion"},
-    {"filter/factory.cpp", "--filter-param", "pending conversion"},
-    {"filter/factory.cpp", "--filter", "pending conversion"},
-    {"filter/factory.cpp", "--radius", "pending conversion"},
-    {"sampling/pmj02.cpp", "--spp", "pending conversion"},
-    {"sampling/bluenoise.cpp", "--spp", "pending conversion"},
-    {"sampling/factory.cpp", "--sampler", "pending conversion"},
-    {"sampling/factory.cpp", "--spp", "pending conversion"},
-    {"render/render.cpp", "-depth", "pending conversion"},
-    {"render/adaptive.cpp", "--sampler", "pending conversion"},
-    {"render/adaptive.cpp", "--spp", "pending conversion"},
-    {"film/supersample.cpp", "--reconstruction", "pending conversion"},
-    {"film/supersample.cpp", "--spp", "pending conversion"},
-    {"film/film.cpp", "--reconstruction", "pending conversion"},
-};
 
 bool listed(const Allowed* begin, const Allowed* end, const std::string& file, const std::string& literal) {
   return std::any_of(begin, end, [&](const Allowed& a) { return file == a.file && literal == a.literal; });
@@ -185,7 +165,6 @@ TEST(LibraryTerms, NoLibrarySourceNamesACommandLineFlag) {
   ASSERT_FALSE(hits.empty() && !fs::is_directory(fs::path(ALIASLAB_SOURCE_DIR) / "lib")) << "lib/ not found";
   for (const Hit& h : hits) {
     if (listed(std::begin(kNotFlags), std::end(kNotFlags), h.file, h.literal)) continue;
-    if (listed(std::begin(kPendingConversion), std::end(kPendingConversion), h.file, h.literal)) continue;
     ADD_FAILURE() << "lib/" << h.file << ":" << h.line << " names a command-line flag: \"" << h.literal
                   << "\". Throw OptionError with the parameter's neutral key and map it to the flag in the front "
                      "end's FrontEnd (experiments/common/front_end.h); in a message, write the key in braces";
@@ -198,6 +177,4 @@ TEST(LibraryTerms, EveryAllowedLiteralStillExists) {  // the lists shrink with t
     return std::any_of(hits.begin(), hits.end(), [&](const Hit& h) { return h.file == a.file && h.literal == a.literal; });
   };
   for (const Allowed& a : kNotFlags) EXPECT_TRUE(present(a)) << "stale allow-list entry lib/" << a.file << ": " << a.literal;
-  for (const Allowed& a : kPendingConversion)
-    EXPECT_TRUE(present(a)) << "converted: remove lib/" << a.file << " \"" << a.literal << "\" from kPendingConversion";
 }
