@@ -102,6 +102,9 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     }
     plan.filter = rekeyOption("radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
   } else if (has("filter")) {
+    // the raytracer's gaussian keeps the course's fixed sigma 0.5 at any --radius (the library's default sigma
+    // follows the radius: r / 3)
+    if (o.filter == "gaussian" && !params.count("sigma")) params["sigma"] = 0.5;
     // without --radius the filter's natural support (defaultFilterRadius, listed in --help)
     const float radius = has("radius") ? o.radius : static_cast<float>(defaultFilterRadius(o.filter, params));
     plan.filter = makeFilter(o.filter, radius, params);
@@ -189,7 +192,7 @@ Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& 
   const int zoom = std::stoi(o.renderSamples[1]);
   if (o.sampler.empty()) return renderSamples(rendered.samples, zoom);
   int columns = 0, rows = 0;
-  for (const char* grid : {"uniform", "jittered", "multijittered", "cmj"})  // patterns stratified on gridShape
+  for (const char* grid : {"uniform", "uniform-shifted", "jittered", "multijittered", "cmj"})  // stratified on gridShape
     if (o.sampler == grid) gridShape(std::max(1, o.spp), columns, rows);
   return renderSamplesMarked(rendered.samples, zoom, columns, rows);
 }

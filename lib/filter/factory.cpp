@@ -32,7 +32,7 @@ struct Entry {
   FilterParams defaults;   ///< every shape parameter the filter takes, with its default
   double (*naturalRadius)(const FilterParams&);  ///< the radius used when none is given (see filter.h)
   const char* course = nullptr;  ///< the name of its course variant (makeCourseVariant), or null: itself
-  bool variant = false;  ///< a course variant: in allFilterNames(), not in filterNames() (the study's filters)
+  bool variant = false;  ///< a course variant or gaussian-cut: in allFilterNames(), not in filterNames() (the study's)
 };
 // Registered filters, in the fixed order of filterNames(): adding a filter is its file, its functions'
 // declarations in filter_impl.h and one line here.
@@ -41,14 +41,16 @@ const std::vector<Entry>& registry() {
   static const std::vector<Entry> entries = {
       {"box", makeBox, boxBatch, {}, [](const FilterParams&) { return 0.5; }},
       {"tent", makeTent, tentBatch, {}, [](const FilterParams&) { return 1.0; }},
-      {"gaussian", makeGaussian, gaussianBatch, {{"sigma", 0.5}, {"subtract_edge", 0}},
-       [](const FilterParams& p) { return 3 * p.at("sigma"); }, "course-gaussian"},
+      {"gaussian", makeGaussian, gaussianBatch, {{"sigma", 0}, {"subtract_edge", 0}},
+       [](const FilterParams& p) { return p.at("sigma") > 0 ? 3 * p.at("sigma") : 1.5; }, "course-gaussian"},
       {"mitchell", makeMitchell, mitchellBatch, {{"B", 1.0 / 3.0}, {"C", 1.0 / 3.0}},
        [](const FilterParams&) { return 2.0; }},
       {"catmullrom", makeCatmullRom, mitchellBatch, {}, [](const FilterParams&) { return 2.0; }},
       {"lanczos", makeLanczos, lanczosBatch, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
       {"hann", makeHann, hannBatch, {{"tau", 3}}, [](const FilterParams& p) { return p.at("tau"); }},
       {"blackmanharris", makeBlackmanHarris, blackmanHarrisBatch, {}, [](const FilterParams&) { return 2.0; }},
+      {"gaussian-cut", makeGaussianCut, gaussianBatch, {{"sigma", 0.5}, {"subtract_edge", 0}},
+       [](const FilterParams& p) { return 3 * p.at("sigma"); }, "course-gaussian", true},
       {"course-gaussian", makeCourseGaussian, nullptr, {{"sigma", 0.5}},
        [](const FilterParams& p) { return std::max(0.0, std::ceil(2 * p.at("sigma") - 0.5)) + 0.5; }, nullptr, true},
   };

@@ -3,7 +3,7 @@
 // A filter is a weight f(dx, dy) for a sample at offset (dx, dy), in pixels,
 // from a pixel centre. Every filter has a support radius r (the sweep
 // variable) and shape parameters that are independent of r, with documented
-// defaults. eval() is exactly zero outside the support: |dx| > r or |dy| > r
+// defaults (the Gaussian's default sigma is r / 3: see below). eval() is exactly zero outside the support: |dx| > r or |dy| > r
 // for separable (square-support) filters, sqrt(dx^2 + dy^2) > r for radial
 // ones. integral() is the integral of f over the plane (analytic, or numeric
 // computed once at construction). Filters with negative lobes return
@@ -14,7 +14,10 @@
 // f = g(sqrt(dx^2 + dy^2)) on the disc (eval() derives f from g).
 //
 // Filters whose natural profile has a fixed support (Mitchell: 2, Lanczos:
-// tau lobes) are stretched to the radius: f_r(x) = f(x * natural / r).
+// tau lobes) are stretched to the radius: f_r(x) = f(x * natural / r). So is
+// the Gaussian by default (sigma = r / 3, natural radius 1.5): in a sweep the
+// radius is the width for every filter. gaussian-cut keeps a fixed sigma and
+// only cuts it at r.
 //
 // Beside the maths, built from a finished Filter: FilterBatch
 // (filter_batch.h), the film's vectorised weights of many samples at once,
@@ -60,9 +63,10 @@ class Filter {
   float radius_;
 };
 
-/// The study's filters: every registered name except the course variants, in a fixed order.
+/// The study's filters: every registered name except gaussian-cut and the course variants, in a fixed order.
 const std::vector<std::string>& filterNames();
-/// Every registered name, in a fixed order: filterNames(), then the course variants (course-gaussian).
+/// Every registered name, in a fixed order: filterNames(), then gaussian-cut (the fixed-sigma Gaussian) and the
+/// course variants (course-gaussian).
 const std::vector<std::string>& allFilterNames();
 
 /// Makes a filter by name with support radius `radius` and shape `params`.
@@ -75,8 +79,9 @@ std::unique_ptr<Filter> makeFilter(const std::string& name, float radius, const 
 
 /// The radius used when a front end is given a filter name but no radius: the
 /// filter's natural support (box 0.5 = the pixel area, tent 1, gaussian
-/// 3 sigma, mitchell and catmullrom 2, lanczos and hann tau, blackmanharris
-/// 2, course-gaussian ceil(2 sigma - 0.5) + 0.5), clamped to [1e-3, 1024],
+/// 1.5 (3 sigma when sigma is given), gaussian-cut 3 sigma, mitchell and
+/// catmullrom 2, lanczos and hann tau, blackmanharris 2, course-gaussian
+/// ceil(2 sigma - 0.5) + 0.5), clamped to [1e-3, 1024],
 /// with shape parameters from `params` over the defaults. 1 for an unknown
 /// name (makeFilter then reports it).
 double defaultFilterRadius(const std::string& name, const FilterParams& params = {});

@@ -84,10 +84,13 @@ std::unique_ptr<Filter> makeLanczos(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeHann(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeBlackmanHarris(float r, const FilterParams& p);
 std::unique_ptr<Filter> makeCourseGaussian(float r, const FilterParams& p);
+std::unique_ptr<Filter> makeGaussianCut(float r, const FilterParams& p);
+/// The radial Gaussian with its own name and a given sigma (shared by gaussian and gaussian-cut).
+std::unique_ptr<Filter> makeGaussianNamed(const std::string& name, float r, double sigma, double subtractEdge);
 /// Mitchell-Netravali profile with its own name (shared by mitchell and catmullrom).
 std::unique_ptr<Filter> makeMitchellNamed(const std::string& name, float r, double B, double C, bool showParams);
 
-// Batch functions, one per filter file with vectorised code (catmullrom uses mitchell's).
+// Batch functions, one per filter file with vectorised code (catmullrom uses mitchell's, gaussian-cut gaussian's).
 std::shared_ptr<const BatchKernel> boxBatch(const Filter& f);
 std::shared_ptr<const BatchKernel> tentBatch(const Filter& f);
 std::shared_ptr<const BatchKernel> gaussianBatch(const Filter& f);

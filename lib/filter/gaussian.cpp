@@ -1,17 +1,23 @@
-// gaussian: a radial Gaussian cut at the radius.
+// gaussian: a radial Gaussian whose width follows the radius.
 //
 // | parameter     | meaning                                           | default |
 // |---------------|---------------------------------------------------|---------|
-// | (radius)      | radius of the disc support (independent of sigma) | sweep   |
-// | sigma         | standard deviation, pixels (> 0)                  | 0.5     |
+// | (radius)      | radius r of the disc support                      | sweep   |
+// | sigma         | standard deviation, pixels; 0: r / 3, the width   | 0       |
+// |               | follows the radius (pbrt-v4's proportion); > 0:   |         |
+// |               | this sigma at any r, cut at r                     |         |
 // | subtract_edge | 1: subtract exp(-r^2 / 2 sigma^2) so f(r) = 0;    | 0       |
 // |               | 0: plain cut, f jumps to 0 at r (classic)         |         |
 //
 // f(dx, dy) = exp(-d^2 / 2 sigma^2) [- e_r] for d <= r, else 0. Integral over
 // the disc: 2 pi sigma^2 (1 - e_r) [- e_r pi r^2], e_r = exp(-r^2 / 2 sigma^2).
-// Non-negative, no ringing, a tunable blur; subtract the edge at small r /
-// sigma ratios where the cut is visible. The classic reconstruction uses
-// its course variant, course-gaussian (the course's uncut Gaussian).
+// Non-negative, no ringing, a tunable blur. By default sigma = r / 3: the
+// radius is the width as for every other filter (natural radius 1.5, sigma
+// 0.5), and the cut sits at 3 sigma (e_r = 0.011). params() reports the sigma
+// in use. The fixed-sigma Gaussian cut at r (sigma 0.5 unless given) is
+// gaussian-cut (gaussian_cut.cpp), the same class under its own name. The
+// classic reconstruction uses the course variant, course-gaussian (the
+// course's uncut Gaussian) with the sigma in use.
 #include "core/error.h"
 #include "filter/filter_batch_impl.h"
 
@@ -20,8 +26,8 @@ namespace {
 
 class GaussianFilter final : public RadialFilter<GaussianFilter> {
  public:
-  GaussianFilter(float r, double sigma, bool subtract)
-      : RadialFilter(r), sigma_(sigma), subtract_(subtract),
+  GaussianFilter(std::string name, float r, double sigma, bool subtract)
+      : RadialFilter(r), name_(std::move(name)), sigma_(sigma), subtract_(subtract),
         k_(static_cast<float>(-0.5 / (sigma * sigma))),
         edge_(subtract ? std::exp(k_ * r * r) : 0.f) {}
   float g(float d) const { return std::exp(k_ * d * d) - edge_; }
@@ -31,10 +37,11 @@ class GaussianFilter final : public RadialFilter<GaussianFilter> {
     const double r2 = double(radius()) * radius(), er = std::exp(-r2 / (2 * sigma_ * sigma_));
     return 2 * M_PI * sigma_ * sigma_ * (1 - er) - (subtract_ ? er * M_PI * r2 : 0.0);
   }
-  std::string name() const override { return "gaussian"; }
+  std::string name() const override { return name_; }
   FilterParams params() const override { return {{"sigma", sigma_}, {"subtract_edge", subtract_ ? 1 : 0}}; }
 
  private:
+  std::string name_;  ///< gaussian or gaussian-cut
   double sigma_;
   bool subtract_;
   float k_;     ///< -1 / (2 sigma^2)
@@ -95,13 +102,25 @@ std::shared_ptr<const BatchKernel> gaussianBatch(const Filter& f) {
   return g ? std::make_shared<GaussianBatch>(*g) : nullptr;
 }
 
-std::unique_ptr<Filter> makeGaussian(float r, const FilterParams& p) {
-  const double sigma = p.at("sigma"), sub = p.at("subtract_edge");
+namespace {
+bool subtractEdge(const std::string& name, double value) {
+  if (value != 0 && value != 1)
+    throw OptionError("filter-param", name + " subtract_edge must be 0 or 1, got " + std::to_string(value));
+  return value == 1;
+}
+}  // namespace
+
+std::unique_ptr<Filter> makeGaussianNamed(const std::string& name, float r, double sigma, double subtract) {
   // -1 / (2 sigma^2) and 2 pi sigma^2 stay finite in float and double (fuzz_cli found sigma = 6e199)
-  requireRange("gaussian", "sigma", sigma, 1e-3, 1e3);
-  if (sub != 0 && sub != 1)
-    throw OptionError("filter-param", "gaussian subtract_edge must be 0 or 1, got " + std::to_string(sub));
-  return std::make_unique<GaussianFilter>(r, sigma, sub == 1);
+  requireRange(name, "sigma", sigma, 1e-3, 1e3);
+  return std::make_unique<GaussianFilter>(name, r, sigma, subtractEdge(name, subtract));
+}
+
+std::unique_ptr<Filter> makeGaussian(float r, const FilterParams& p) {
+  // sigma 0: r / 3, finite in -1 / (2 sigma^2) for every radius makeFilter takes ([1e-3, 1024])
+  if (p.at("sigma") == 0)
+    return std::make_unique<GaussianFilter>("gaussian", r, double(r) / 3, subtractEdge("gaussian", p.at("subtract_edge")));
+  return makeGaussianNamed("gaussian", r, p.at("sigma"), p.at("subtract_edge"));
 }
 
 }  // namespace aliaslab::filterimpl

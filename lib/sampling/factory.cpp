@@ -19,6 +19,7 @@ struct Entry {
 constexpr Entry kSamplers[] = {
     {"random", sampling::makeRandomSampler},
     {"uniform", sampling::makeUniformSampler},
+    {"uniform-shifted", sampling::makeUniformShiftedSampler},
     {"jittered", sampling::makeJitteredSampler},
     {"nrooks", sampling::makeNRooksSampler},
     {"multijittered", sampling::makeMultiJitteredSampler},

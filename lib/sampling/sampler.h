@@ -26,7 +26,10 @@
 // given the seed. A pattern may instead correlate neighbouring pixels on
 // purpose (zsobol shares one sequence over the image, bluenoise-dither
 // shifts one pattern by a blue-noise mask) so that the error moves to high
-// screen frequencies; it then returns true from correlatedAcrossPixels().
+// screen frequencies, or repeat one set in every pixel (uniform-shifted: one
+// shifted grid over the whole image); it then returns true from
+// correlatedAcrossPixels(). uniform, the fixed grid, is the same in every
+// pixel and for every seed (deterministic).
 // Each pixel's points are still unbiased (each point uniform over seeds) and
 // still a pure function of (seed, px, py): the correlation is between the
 // pixels of one seed, never between seeds.

@@ -12,6 +12,7 @@ namespace aliaslab::sampling {
 
 std::unique_ptr<Sampler> makeRandomSampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeUniformSampler(int spp, uint64_t seed);
+std::unique_ptr<Sampler> makeUniformShiftedSampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeJitteredSampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeNRooksSampler(int spp, uint64_t seed);
 std::unique_ptr<Sampler> makeMultiJitteredSampler(int spp, uint64_t seed);

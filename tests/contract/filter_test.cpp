@@ -1,7 +1,8 @@
 // Filter contract tests over every registered filter (allFilterNames(): the
-// study's filters and the course variants) and a range of radii, with the
+// study's filters, gaussian-cut and the course variants) and a range of radii, with the
 // batch evaluator and the importance sampler built beside each, plus the
-// published facts about the classic profiles.
+// published facts about the classic profiles (the Gaussians':
+// filter_gaussian_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -100,7 +101,7 @@ TEST_P(FilterContract, EvalBatchEqualsEval) {
       for (int b = 0; b < n; ++b)
         for (int a = 0; a < n; ++a) {
           const float e = filter->eval(x[s] - (cx[s] + a), y[s] - (cy[s] + b)), w = out[size_t(b * n + a) * stride + s];
-          if (filter->name() == "gaussian") {
+          if (filter->name() == "gaussian" || filter->name() == "gaussian-cut") {
             // per-axis exponentials: a few ulps per unit of the exponent
             EXPECT_NEAR(w, e, e > 0 ? 2.5e-7f * (4 - std::log(e)) * e : 0.f) << s << " " << a << " " << b;
           } else if (filter->name() == "blackmanharris") {
@@ -260,34 +261,6 @@ TEST(FilterFacts, MitchellStretchesToRadius) {
   EXPECT_NEAR(f5->integral(), 6.25, 1e-9);
 }
 
-TEST(FilterFacts, GaussianEdgeValueSubtractedOnlyWhenAsked) {
-  auto plain = makeFilter("gaussian", 1.f, {{"sigma", 0.5}});
-  auto sub = makeFilter("gaussian", 1.f, {{"sigma", 0.5}, {"subtract_edge", 1}});
-  const double er = std::exp(-1.0 / (2 * 0.25));
-  EXPECT_NEAR(plain->eval(0.99999f, 0), er, 1e-5);
-  EXPECT_NEAR(sub->eval(0.99999f, 0), 0.0, 1e-5);
-  EXPECT_NEAR(plain->integral(), 2 * M_PI * 0.25 * (1 - er), 1e-9);
-  EXPECT_NEAR(sub->integral(), 2 * M_PI * 0.25 * (1 - er) - er * M_PI, 1e-9);
-  EXPECT_EQ(plain->describe(), "gaussian r=1 sigma=0.5 subtract_edge=0");
-  EXPECT_EQ(makeFilter("gaussian", 1.5f)->describe(), "gaussian r=1.5 sigma=0.5 subtract_edge=0");
-  EXPECT_EQ(plain->eval(1.5f, 0), 0.f);
-}
-
-TEST(FilterFacts, CourseGaussianIsTheUncutGaussianOverTheCoursesSquare) {
-  // the classic gather's weight: exp(-d^2 / 2 sigma^2) uncut over pixels i-R..i+R, R = ceil(2 sigma - 0.5)
-  const auto course = makeCourseVariant(*makeFilter("gaussian", 1.f, {{"sigma", 0.5}, {"subtract_edge", 1}}));
-  ASSERT_NE(course, nullptr);
-  EXPECT_EQ(course->describe(), "course-gaussian r=1.5 sigma=0.5");
-  EXPECT_FLOAT_EQ(course->eval(1.5f, 0), std::exp(-2.f * (1.5f * 1.5f + 0.f)));
-  EXPECT_FLOAT_EQ(course->eval(1.4f, -1.5f), std::exp(-2.f * (1.4f * 1.4f + 1.5f * 1.5f)));  // the corner too: uncut
-  EXPECT_EQ(course->eval(1.5001f, 0), 0.f);
-  for (double sigma : {0.1, 0.26, 0.5, 0.75, 1.0, 1.3, 4.0})
-    EXPECT_EQ(defaultFilterRadius("course-gaussian", {{"sigma", sigma}}), std::ceil(2 * sigma - 0.5) + 0.5) << sigma;
-  const double axis = 0.5 * std::sqrt(2 * M_PI) * std::erf(1.5 / (0.5 * M_SQRT2));
-  EXPECT_NEAR(course->integral(), axis * axis, 1e-12);
-  EXPECT_EQ(makeCourseVariant(*makeFilter("tent", 1.f)), nullptr);
-}
-
 TEST(FilterFacts, BoxTentAndBlackmanHarrisClosedForms) {
   auto box = makeFilter("box", 0.5f), tent = makeFilter("tent", 2.f), bh = makeFilter("blackmanharris", 2.f);
   EXPECT_EQ(box->eval(0.5f, -0.5f), 1.f);  // closed square support
@@ -376,7 +349,10 @@ TEST(FilterFactory, MisspeltParameterIsNamed) {
 }
 
 TEST(FilterFactory, OutOfRangeParametersRejected) {
-  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", 0}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", -0.5}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", 0}}); }), "");  // 0: r / 3
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian-cut", 1, {{"sigma", 0}}); }), "filter-param");
+  EXPECT_EQ(optionOf([] { makeFilter("gaussian-cut", 1, {{"subtract_edge", 2}}); }), "filter-param");
   EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"sigma", NAN}}); }), "filter-param");
   EXPECT_EQ(optionOf([] { makeFilter("gaussian", 1, {{"subtract_edge", 0.5}}); }), "filter-param");
   EXPECT_EQ(optionOf([] { makeFilter("lanczos", 1, {{"tau", 0.5}}); }), "filter-param");
@@ -388,6 +364,7 @@ TEST(FilterFactory, NamesInDocumentedOrder) {
   const std::vector<std::string> expected = {"box", "tent", "gaussian", "mitchell", "catmullrom", "lanczos", "hann", "blackmanharris"};
   EXPECT_EQ(filterNames(), expected);
   std::vector<std::string> all = expected;
+  all.push_back("gaussian-cut");  // not one of the study's filters
   all.push_back("course-gaussian");
   EXPECT_EQ(allFilterNames(), all);
   for (const auto& n : allFilterNames()) EXPECT_EQ(makeFilter(n, 1)->name(), n);

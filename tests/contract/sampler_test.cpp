@@ -114,14 +114,15 @@ TEST_P(SamplerContract, PurePerPixelFunctionOfSeed) {
 }
 
 TEST_P(SamplerContract, NeighbouringPixelsAndSeedsGiveDifferentSets) {
-  const bool deterministic = GetParam() == "uniform";
+  // the grids repeat one set in every pixel: uniform's for every seed, uniform-shifted's shifted per seed
+  const bool deterministic = GetParam() == "uniform", samePerPixel = deterministic || GetParam() == "uniform-shifted";
   for (int spp : kCounts) {
     auto s = makeSampler(GetParam(), spp, 3);
     auto t = makeSampler(GetParam(), spp, 4);
     for (int p = 0; p < 16; ++p) {
       const auto here = pixel(*s, p, 5);
-      EXPECT_EQ(here != pixel(*s, p + 1, 5), !deterministic) << "spp " << spp;
-      EXPECT_EQ(here != pixel(*s, p, 6), !deterministic) << "spp " << spp;
+      EXPECT_EQ(here != pixel(*s, p + 1, 5), !samePerPixel) << "spp " << spp;
+      EXPECT_EQ(here != pixel(*s, p, 6), !samePerPixel) << "spp " << spp;
       EXPECT_EQ(here != pixel(*t, p, 5), !deterministic) << "seed, spp " << spp;
     }
   }
@@ -153,12 +154,15 @@ TEST_P(SamplerContract, NeighbourPixelMeansUncorrelated) {
 
 TEST_P(SamplerContract, CoordinateMeansAreOneHalf) {
   // Over P pixels the grand mean is within 5 standard errors (from the spread of pixel means) of 1/2.
+  // uniform-shifted's pixels of one seed are one set: its P pixels come from P seeds.
+  const bool seedPerPixel = GetParam() == "uniform-shifted";
   for (int spp : kCounts) {
     auto s = makeSampler(GetParam(), spp, 9);
     const int pixels = 4000;
     std::vector<double> mx, my;
     for (int p = 0; p < pixels; ++p) {
       double sx = 0, sy = 0;
+      if (seedPerPixel) s = makeSampler(GetParam(), spp, 9 + p);
       for (const Vec2& v : pixel(*s, p % 80, p / 80)) sx += v.x(), sy += v.y();
       mx.push_back(sx / spp), my.push_back(sy / spp);
     }
@@ -183,8 +187,9 @@ INSTANTIATE_TEST_SUITE_P(AllSamplers, SamplerContract, ::testing::ValuesIn(allSa
 
 // ---------------------------------------------------------------------------
 TEST(SamplerFactory, NamesInDocumentedOrder) {
-  const std::vector<std::string> expected = {"random", "uniform",    "jittered", "nrooks", "multijittered", "cmj",
-                                             "halton", "hammersley", "sobol",    "pmj02",  "bluenoise", "zsobol"};
+  const std::vector<std::string> expected = {"random", "uniform",    "uniform-shifted", "jittered", "nrooks",
+                                             "multijittered", "cmj", "halton", "hammersley", "sobol", "pmj02",
+                                             "bluenoise", "zsobol"};
   EXPECT_EQ(samplerNames(), expected);
   EXPECT_EQ(samplerWrapperNames(), std::vector<std::string>{"bluenoise-dither"});
   // every plain name, then the wrapper over every plain name
@@ -249,7 +254,7 @@ TEST(SamplerFactory, GridShapeIsMostSquareFactorisation) {
 TEST(SamplerFactory, WarningsExactlyForUnnaturalCounts) {
   for (int spp : kCounts) {
     const bool square = static_cast<int>(std::lround(std::sqrt(spp))) * static_cast<int>(std::lround(std::sqrt(spp))) == spp;
-    for (const char* grid : {"uniform", "jittered", "multijittered", "cmj"})
+    for (const char* grid : {"uniform", "uniform-shifted", "jittered", "multijittered", "cmj"})
       EXPECT_EQ(makeSampler(grid, spp, 0)->warning().empty(), square) << grid << " " << spp;
     for (const char* seq : {"sobol", "pmj02", "zsobol", "bluenoise-dither:sobol"}) {
       const std::string w = makeSampler(seq, spp, 0)->warning();
@@ -282,6 +287,39 @@ TEST(SamplerStructure, UniformIsTheGridOfCellCentres) {
         EXPECT_NEAR(pts[i].y(), (i / m + 0.5) / n, 1e-6) << "spp " << spp;
       }
     }
+  }
+}
+
+TEST(SamplerStructure, UniformShiftedIsTheGridShiftedByOneOffsetPerSeed) {
+  // In every pixel of a seed the m x n grid shifted by one offset (ox, oy) in [0, 1/m) x [0, 1/n); across seeds
+  // the offsets differ and cover the cell (each of 4 x 4 sub-cells of the offset cell hit by 256 seeds).
+  const auto byRow = [](const Vec2& a, const Vec2& b) { return a.y() < b.y() || (a.y() == b.y() && a.x() < b.x()); };
+  for (int spp : {1, 4, 8, 9, 16}) {
+    int m, n;
+    gridShape(spp, m, n);
+    std::vector<int> hits(16, 0);
+    std::vector<Vec2> offsets;
+    for (int seed = 0; seed < 256; ++seed) {
+      auto s = makeSampler("uniform-shifted", spp, seed);
+      const auto first = pixel(*s, 0, 0);
+      auto pts = first;
+      std::sort(pts.begin(), pts.end(), byRow);
+      const double ox = pts[0].x(), oy = pts[0].y();
+      ASSERT_GE(ox, 0.0);
+      ASSERT_LT(ox, 1.0 / m);
+      ASSERT_GE(oy, 0.0);
+      ASSERT_LT(oy, 1.0 / n);
+      for (int i = 0; i < spp; ++i) {
+        EXPECT_NEAR(pts[i].x(), ox + double(i % m) / m, 1e-6) << "spp " << spp << " seed " << seed;
+        EXPECT_NEAR(pts[i].y(), oy + double(i / m) / n, 1e-6) << "spp " << spp << " seed " << seed;
+      }
+      for (int p = 1; p < 6; ++p) ASSERT_EQ(pixel(*s, 7 * p - 11, 3 * p + 100), first) << "spp " << spp;
+      ++hits[cellOf(float(oy * n), 4) * 4 + cellOf(float(ox * m), 4)];
+      offsets.push_back(Vec2(float(ox), float(oy)));
+    }
+    for (int h : hits) EXPECT_GT(h, 0) << "spp " << spp;
+    std::sort(offsets.begin(), offsets.end(), byRow);
+    EXPECT_EQ(std::adjacent_find(offsets.begin(), offsets.end()), offsets.end()) << "spp " << spp;
   }
 }
 
