@@ -1,5 +1,7 @@
 #include "core/parallel.h"
 
+#include <time.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -18,7 +20,17 @@ int resolveThreads(int requested) {
 
 namespace {
 std::atomic<uint64_t> shuffleSeed{0};
+/// CPU seconds of the threads parallelFor started from this thread, added when joined.
+thread_local double joinedCpuSeconds = 0;
+
+double ownCpuSeconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
 }
+}  // namespace
+
+double threadCpuSeconds() { return ownCpuSeconds() + joinedCpuSeconds; }
 
 void setParallelShuffle(uint64_t seed) { shuffleSeed = seed; }
 
@@ -51,9 +63,15 @@ void parallelFor(int n, int threads, const std::function<void(int)>& userBody) {
     }
   };
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  std::vector<double> poolCpu(threads, 0.0);  // each started thread's CPU seconds, its own slot
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      worker();
+      poolCpu[t] = threadCpuSeconds();
+    });
   worker();
   for (auto& t : pool) t.join();
+  for (double c : poolCpu) joinedCpuSeconds += c;
   if (error) std::rethrow_exception(error);
 }
 

@@ -1,6 +1,10 @@
 // Timing of work phases: a Stopwatch, and a parallel loop that accounts its time the one way the study reports it.
 //
 // A Stopwatch starts when made; seconds() and ms() read the time since then (steady clock).
+// A CpuStopwatch likewise reads CPU time: the calling thread's (CLOCK_THREAD_CPUTIME_ID) plus that of the threads
+// parallelFor started from it in the meantime (core/parallel.h threadCpuSeconds), so the work's own cost however
+// many inner threads it used, and not the time it waited for a core a competing load held. Read it on the thread
+// that made it.
 // timedParallelFor(n, threads, inner, body) runs body(i) for i in [0, n) with parallelFor (core/parallel.h) and
 // returns the phase's time as thread-seconds:
 //   work = the sum over tasks of (task's wall seconds x `inner`, the threads the task uses inside itself),
@@ -25,6 +29,16 @@ class Stopwatch {
 
  private:
   Clock::time_point start_;
+};
+
+class CpuStopwatch {
+ public:
+  CpuStopwatch() : start_(threadCpuSeconds()) {}
+  double seconds() const { return threadCpuSeconds() - start_; }
+  double ms() const { return 1000.0 * seconds(); }
+
+ private:
+  double start_;
 };
 
 /// Thread-seconds of one parallel phase.

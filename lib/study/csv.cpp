@@ -27,7 +27,7 @@ const std::vector<std::string>& csvColumns() {
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
       "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
-      "prefilter", "flip"};
+      "prefilter", "flip", "cpu_ms", "cpu_ms_se"};
   return cols;
 }
 
@@ -47,7 +47,9 @@ size_t csvColumn(const std::string& name) {
   return static_cast<size_t>(it - cols.begin());
 }
 
-std::vector<size_t> csvTimingColumns() { return {21, 22}; }
+std::vector<size_t> csvTimingColumns() {
+  return {csvColumn("trace_ms"), csvColumn("reconstruct_ms"), csvColumn("cpu_ms"), csvColumn("cpu_ms_se")};
+}
 
 namespace {
 enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
@@ -86,7 +88,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
     << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
     << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp << ','
-    << quoted(r.prefilter) << ',' << real(r.flip);
+    << quoted(r.prefilter) << ',' << real(r.flip) << ',' << real(r.cpuMs) << ',' << real(r.cpuMsSe);
   return s.str();
 }
 

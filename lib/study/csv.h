@@ -7,11 +7,15 @@
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
 //   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
 //   lowfreq_error,lowfreq_error_se,blurred_mse (measure/spectrum.h),
-//   mean_spp,max_spp,prefilter,flip
+//   mean_spp,max_spp,prefilter,flip,cpu_ms,cpu_ms_se
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
 // fixed sampler and differ for adaptive ones, render/adaptive.h.
-// flip: mean LDR-FLIP of the K images against the target, measure/flip.h.)
+// flip: mean LDR-FLIP of the K images against the target, measure/flip.h.
+// cpu_ms: thread CPU milliseconds per image of the configuration's own work, the trace of its sample set plus
+// its own reconstruction (its share of the shared splat pass), inner threads included, mean over the seeds;
+// cpu_ms_se: their sd over the seeds / sqrt K. Unlike the wall times trace_ms and reconstruct_ms, a competing
+// load does not inflate it; core/stopwatch.h CpuStopwatch.)
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -55,6 +59,7 @@ struct CsvRow {
   double meanSpp = 0;  ///< mean samples per pixel actually spent (over pixels and seeds)
   int maxSpp = 0;      ///< most samples in one pixel (over seeds)
   std::string prefilter = "none";  ///< none | footprint (texture pre-filtering, docs/prefiltering.md)
+  double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
 };
 
 /// The header line (no newline).
@@ -63,7 +68,7 @@ const std::string& csvHeader();
 const std::vector<std::string>& csvColumns();
 /// Index of the column `name` in csvColumns(); throws std::out_of_range when there is none.
 size_t csvColumn(const std::string& name);
-/// Indices of the timing columns (trace_ms, reconstruct_ms), which may differ between runs.
+/// Indices of the timing columns (trace_ms, reconstruct_ms, cpu_ms, cpu_ms_se), which may differ between runs.
 std::vector<size_t> csvTimingColumns();
 
 /// One formatted line (no newline).

@@ -19,6 +19,7 @@ struct SeedTrace {
   std::unique_ptr<Accumulator> weighted;  ///< every weighted-average row of the set in one pass
   std::vector<double> splatSeconds;       ///< per weighted row, its share of the Accumulator pass
   double traceMs = 0, splatS = 0;
+  double traceCpuMs = 0, splatCpuMs = 0;  ///< CPU time of the trace and of the Accumulator pass (inner threads too)
   SpentSamples spent;  ///< samples per pixel actually traced (adaptive samplers vary)
   Image density;       ///< per-pixel sample count (adaptive sampler, seed 0, images on)
 };
@@ -28,6 +29,7 @@ struct RowImage {
   Reconstruction r;
   double flip = 0;  ///< meanFlip(image, target), computed in the (seed, row) task
   double traceMs = 0, reconMs = 0;
+  double cpuMs = 0;  ///< CPU time: the set's trace + this row's reconstruction (its share of the splat pass)
   double traceS = 0, resolveS = 0, flipS = 0;  ///< this task's share of the phases
 };
 
@@ -41,9 +43,10 @@ int innerThreads(int threads, size_t tasks) { return std::max(1, threads / int(s
 SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
   SeedTrace t;
   const Stopwatch trace;
+  const CpuStopwatch traceCpu;
   const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
   t.samples = source->trace(g.tracer, g.scene.width, g.scene.height, innerThreads);
-  t.traceMs = trace.ms();
+  t.traceMs = trace.ms(), t.traceCpuMs = traceCpu.ms();
   t.spent = spentSamples(t.samples);
   if (k == 0 && g.images && source->adaptive()) t.density = sampleDensity(t.samples);
   g.inFlight.add(bufferBytes(t.samples));
@@ -52,10 +55,11 @@ SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
     if (p.mode == ReconMode::WeightedAverage) filters.push_back(p.filter.filter.get());
   if (!filters.empty()) {
     const Stopwatch splat;
+    const CpuStopwatch splatCpu;
     t.weighted = std::make_unique<Accumulator>(g.scene.width, g.scene.height, filters);
     g.inFlight.add(t.weighted->bytes());
     t.weighted->add(t.samples, innerThreads, &t.splatSeconds);
-    t.splatS = splat.seconds();
+    t.splatS = splat.seconds(), t.splatCpuMs = splatCpu.ms();
   }
   return t;
 }
@@ -69,6 +73,7 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
   if (p.mode == ReconMode::ImportanceSampled) {
     const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
     const Stopwatch trace;
+    const CpuStopwatch cpu;
     const SampleBuffer samples = source->traceImportance(g.tracer, filter, g.scene.width, g.scene.height, innerThreads);
     out.traceMs = trace.ms();
     out.traceS = out.traceMs / 1000;
@@ -76,16 +81,25 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
     const Stopwatch resolve;
     out.r = reconstruct(samples, filter, p.mode, innerThreads);
     out.reconMs = resolve.ms();
+    out.cpuMs = cpu.ms();
     out.resolveS = out.reconMs / 1000;
     g.inFlight.remove(bufferBytes(samples));
   } else {
     const Stopwatch resolve;
+    const CpuStopwatch resolveCpu;
     out.r = p.mode == ReconMode::WeightedAverage ? t.weighted->resolve(weightedIndex)
                                                  : reconstruct(t.samples, filter, p.mode, innerThreads);
     out.traceMs = t.traceMs;
     out.reconMs = resolve.ms();
+    out.cpuMs = t.traceCpuMs + resolveCpu.ms();
     out.resolveS = out.reconMs / 1000;
-    if (p.mode == ReconMode::WeightedAverage) out.reconMs += 1000.0 * t.splatSeconds[weightedIndex];
+    if (p.mode == ReconMode::WeightedAverage) {
+      out.reconMs += 1000.0 * t.splatSeconds[weightedIndex];
+      // the row's share of the pass's CPU time in the proportion of its share of the wall time
+      double all = 0;
+      for (double v : t.splatSeconds) all += v;
+      out.cpuMs += all > 0 ? t.splatCpuMs * t.splatSeconds[weightedIndex] / all : t.splatCpuMs / t.splatSeconds.size();
+    }
   }
   const Stopwatch flip;
   out.flip = p.flipTarget->mean(out.r.image);
@@ -103,6 +117,7 @@ void foldSeeds(const GroupContext& g, PendingRow& p, const std::vector<RowImage*
     p.flipSum += img.flip;
     p.stats += img.r.stats;
     p.traceMs += img.traceMs / g.config.seeds, p.reconMs += img.reconMs / g.config.seeds;
+    p.cpuMs.push_back(img.cpuMs);
     if (k0 + int(i) == 0 && g.images) p.seed0 = std::move(img.r.image);
   }
 }

@@ -9,7 +9,9 @@
 //   C  foldSeeds       one task per row: the window's images added to its metrics IN SEED ORDER
 // Every task writes only its own slot; slots are folded in (seed, row) order, so nothing depends on which thread
 // ran what or when it finished (tests/programs/sweep_parallel_test.cpp runs the tasks in a shuffled order). Time goes into
-// the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep_summary.h), as thread-seconds.
+// the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep_summary.h), as thread-seconds, and
+// each row's own work per seed (its set's trace + its reconstruction) as thread CPU time (core/stopwatch.h
+// CpuStopwatch, inner threads included) into PendingRow::cpuMs, in seed order.
 #pragma once
 #include <functional>
 #include <vector>

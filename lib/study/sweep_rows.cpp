@@ -15,6 +15,17 @@ namespace aliaslab {
 namespace fs = std::filesystem;
 
 namespace {
+/// Mean over the seeds and its standard error (sd over the seeds / sqrt K; NaN for K < 2).
+void cpuMeanAndSe(const std::vector<double>& v, double& mean, double& se) {
+  const double k = double(v.size());
+  mean = 0, se = NAN;
+  for (double x : v) mean += x / k;
+  if (v.size() < 2) return;
+  double ss = 0;
+  for (double x : v) ss += (x - mean) * (x - mean);
+  se = std::sqrt(ss / (k - 1) / k);
+}
+
 std::string supersampleParams(int spp) {
   const int k = static_cast<int>(std::lround(std::sqrt(spp)));
   return "supersample " + std::to_string(k) + "x" + std::to_string(k) + " sub-pixels, binomial 1-2-1, box";
@@ -71,6 +82,7 @@ void finishRow(PendingRow& p, const fs::path& imageDir, bool images, const Group
   r.negativePixels = static_cast<long long>(p.stats.negativePixels);
   r.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
   r.traceMs = p.traceMs, r.reconstructMs = p.reconMs;
+  cpuMeanAndSe(p.cpuMs, r.cpuMs, r.cpuMsSe);
   sm = p.spectrum->result();
   r.lowfreqError = sm.lowfreqError, r.lowfreqErrorSe = sm.lowfreqErrorSe, r.blurredMse = sm.blurredMse;
   if (images)

@@ -33,6 +33,7 @@ struct PendingRow {
   std::unique_ptr<SpectrumAccumulator> spectrum;
   ReconStats stats;
   double traceMs = 0, reconMs = 0;
+  std::vector<double> cpuMs;  ///< per seed, in seed order: CPU ms of its trace + this row's reconstruction
   Image seed0;
   const FlipReference* flipTarget = nullptr;  ///< what the flip column compares against (the study's target)
   double flipSum = 0;                         ///< sum over the seeds of meanFlip(I_k, target), in seed order

@@ -281,6 +281,9 @@ TEST(SweepEndToEnd, ZonePlateUniformHasNoNoiseAndMoreAliasingThanJittered) {
     auto f = splitCsvLine(l);
     ASSERT_EQ(f.size(), csvColumns().size());
     for (const auto& x : f) EXPECT_FALSE(x.empty());
+    // thread CPU time of the row's own work (4 seeds: a finite standard error)
+    EXPECT_GT(std::stod(f[csvColumn("cpu_ms")]), 0.0) << l;
+    EXPECT_GE(std::stod(f[csvColumn("cpu_ms_se")]), 0.0) << l;
     if (f[4] == "16" && f[5] == "box" && f[6] == "1") row[f[3]] = f;
   }
   ASSERT_EQ(row.size(), 2u);

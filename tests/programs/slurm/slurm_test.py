@@ -34,7 +34,7 @@ from cluster import CLIENTS, DAEMONS, Cluster  # noqa: E402
 
 TERMINAL = {"COMPLETED", "FAILED", "CANCELLED", "TIMEOUT", "NODE_FAIL", "OUT_OF_MEMORY", "PREEMPTED", "BOOT_FAIL",
             "DEADLINE"}
-TIMING = {"trace_ms", "reconstruct_ms", "threads"}  # columns that may differ between runs
+TIMING = {"trace_ms", "reconstruct_ms", "cpu_ms", "cpu_ms_se", "threads"}  # columns that may differ between runs
 SHARDS = 3
 DEADLINE = time.monotonic() + 420  # every wait ends by then, well inside CTest's 600 s, so clean-up runs
 
