@@ -39,10 +39,12 @@ const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_test"); }
 
-// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each.
+// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each, one target
+// (several targets: sweep_targets_test.cpp).
 std::string tinyArgs(int threads = 2) {
   return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
-         "--radii 1 --seeds 4 --ref-spp 256 --threads " + std::to_string(threads) + " --quiet --no-images --cache " +
+         "--radii 1 --seeds 4 --ref-spp 256 --target area --threads " + std::to_string(threads) +
+         " --quiet --no-images --cache " +
          (workDir() / "cache").string();
 }
 
@@ -250,6 +252,7 @@ TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {
   c.spp = {4};
   c.seeds = 3;
   c.refSpp = 64;
+  c.targets = {"area"};
   c.threads = 2;
   c.images = false;
   c.progress = false;
@@ -452,6 +455,9 @@ TEST(StudyPlan, ValidationReadsSceneSizesFromTheRenderLine) {
   EXPECT_EQ(s.width, scene->width);
   EXPECT_EQ(s.height, scene->height);
   EXPECT_EQ(s.width, 48);
-  EXPECT_EQ(plan.target.label, "box:0.5");
+  ASSERT_EQ(plan.targets.size(), 3u);  // the default targets: area, the natural Gaussian, the band-limited Lanczos
+  EXPECT_EQ(plan.targets[0].label, "box:0.5");
+  EXPECT_EQ(plan.targets[1].label, "gaussian:1.5");
+  EXPECT_EQ(plan.targets[2].label, "lanczos:3");
   EXPECT_EQ(plan.groups.size(), expandStudy(c).size());
 }

@@ -50,6 +50,7 @@ const std::map<std::string, Measured>& study() {
     c.radii = {0.5};
     c.seeds = 8;
     c.refSpp = 256;
+    c.targets = {"area"};  // lowfreq_error against the area = against the rows' own reference (box 0.5)
     c.threads = 2;
     c.images = false;
     c.progress = false;
