@@ -214,6 +214,15 @@ double meanSquaredDifference(const Image& a, const Image& b) {
 
 double halvesError(const Image& a, const Image& b) { return meanSquaredDifference(a, b) / 4.0; }
 
+Image halfDifference(const Image& a, const Image& b) {
+  requireSameSize(a, b, "halfDifference");
+  Image out(a.width(), a.height());
+  const size_t n = channelCount(a);
+  for (size_t i = 0; i < n; ++i)
+    out.data()[i] = static_cast<float>(0.5 * (static_cast<double>(a.data()[i]) - b.data()[i]));
+  return out;
+}
+
 Image averageImages(const Image& a, const Image& b) {
   requireSameSize(a, b, "averageImages");
   Image out(a.width(), a.height());

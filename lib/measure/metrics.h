@@ -95,6 +95,10 @@ double meanSquaredDifference(const Image& a, const Image& b);
 /// mean over pixels and channels of (a - b)^2 / 4, the variance of their mean.
 double halvesError(const Image& a, const Image& b);
 
+/// The per-pixel, per-channel half-difference (a - b) / 2 of two independent halves: its square estimates the
+/// variance of their mean (averageImages) without bias.
+Image halfDifference(const Image& a, const Image& b);
+
 /// The per-pixel, per-channel mean (a + b) / 2.
 Image averageImages(const Image& a, const Image& b);
 

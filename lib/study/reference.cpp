@@ -47,20 +47,6 @@ std::string jsonNumber(double v) { return formatNumber(v, "%.9g"); }
 // The batch size actually used: at most half the total, so there are two halves.
 int effectiveBatch(const ReferenceOptions& o) { return std::min(o.batchSpp, o.spp / 2); }
 
-// The number in `"field": <number>` of a small JSON text, or -1.
-double jsonField(const std::string& text, const std::string& field) {
-  const size_t at = text.find("\"" + field + "\":");
-  if (at == std::string::npos) return -1;
-  try { return std::stod(text.substr(at + field.size() + 3)); } catch (const std::exception&) { return -1; }
-}
-// The text in `"field": "<text>"` of a small JSON text, or "".
-std::string jsonText(const std::string& text, const std::string& field) {
-  const std::string open = "\"" + field + "\": \"";
-  const size_t at = text.find(open);
-  if (at == std::string::npos) return {};
-  const size_t end = text.find('"', at + open.size());
-  return end == std::string::npos ? std::string() : text.substr(at + open.size(), end - at - open.size());
-}
 }  // namespace
 
 void validateReferenceOptions(const ReferenceOptions& o) {
@@ -74,7 +60,7 @@ void validateReferenceOptions(const ReferenceOptions& o) {
 }
 
 std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& o) {
-  constexpr uint64_t kReferenceAlgorithm = 2;  // see reference.h
+  constexpr uint64_t kReferenceAlgorithm = 3;  // see reference.h
   uint64_t h = hashWords(scene.contentHash, o.spp, o.seed, effectiveBatch(o), kReferenceAlgorithm);
   h = hashBytes(filterDescribe, h);
   h = hashBytes(o.sampler, h);
@@ -131,6 +117,7 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
     ref.filter = specs[i];
     ref.describe = filters[i]->describe();
     ref.image = averageImages(ra.image, rb.image);
+    ref.halfDiff = halfDifference(ra.image, rb.image);
     ref.error = halvesError(ra.image, rb.image);
     ref.stats = ra.stats;
     ref.stats += rb.stats;
@@ -160,7 +147,8 @@ std::string imageContentHash(const std::string& path) { return hex16(hashBytes(r
 
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames,
-                              const std::vector<std::string>& imageHashes) {
+                              const std::vector<std::string>& imageHashes,
+                              const std::vector<std::string>& diffHashes) {
   std::ostringstream j;
   j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(manifestScenePath(scene.path))
     << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
@@ -175,68 +163,11 @@ std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
       << ", \"ref_error\": " << jsonNumber(r.error) << ", \"undefined_pixels\": " << r.stats.undefinedPixels
       << ", \"key\": " << jsonString(r.key) << ", \"image\": " << jsonString(i < imageNames.size() ? imageNames[i] : "");
     if (i < imageHashes.size()) j << ", \"image_hash\": " << jsonString(imageHashes[i]);
+    if (i < diffHashes.size()) j << ", \"diff_hash\": " << jsonString(diffHashes[i]);
     j << "}";
   }
   j << "\n  ]\n}\n";
   return j.str();
-}
-
-ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
-                              const ReferenceOptions& o, const std::string& cacheDir) {
-  std::error_code ec;
-  fs::create_directories(cacheDir, ec);
-  ReferenceSet set;
-  set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
-  set.images.resize(specs.size());
-
-  // Load what the cache holds: one task per entry (each reads two files and writes only its own slot).
-  std::vector<char> cached(specs.size(), 0);
-  parallelFor(int(specs.size()), o.threads, [&](int i) {
-    const std::string describe = makeFilter(specs[i].first, static_cast<float>(specs[i].second))->describe();
-    const std::string key = referenceKey(scene, describe, o);
-    const fs::path exr = fs::path(cacheDir) / (key + ".exr"), json = fs::path(cacheDir) / (key + ".json");
-    if (!fs::exists(exr) || !fs::exists(json)) return;
-    try {
-      ReferenceImage& r = set.images[i];
-      const std::string manifest = readFileBytes(json.string());
-      const std::string stored = jsonText(manifest, "image_hash"), actual = imageContentHash(exr.string());
-      if (stored != actual) {
-        std::fprintf(stderr, "note: cached reference %s does not match its manifest %s (%s); rendering it again\n",
-                     exr.string().c_str(), json.string().c_str(),
-                     stored.empty() ? "no content hash" : "content hash differs");
-        return;
-      }
-      r.image = readImage(exr.string());
-      r.error = jsonField(manifest, "ref_error");
-      if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height) {
-        r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
-        cached[i] = 1;
-      }
-    } catch (const InputError&) {
-    }  // unreadable entry: render it again (its slot is overwritten below)
-  });
-  std::vector<FilterSpec> missing;
-  std::vector<size_t> missingIndex;
-  for (size_t i = 0; i < specs.size(); ++i)
-    if (!cached[i]) missing.push_back(specs[i]), missingIndex.push_back(i);
-  if (missing.empty()) return set;
-
-  // Render the missing ones together and store each with its manifest.
-  ReferenceSet fresh = renderReferences(scene, missing, o);
-  set.seconds = fresh.seconds;
-  set.accumulatorBytes = fresh.accumulatorBytes;
-  for (size_t m = 0; m < missing.size(); ++m) {
-    ReferenceImage& r = fresh.images[m];
-    const std::string exr = (fs::path(cacheDir) / (r.key + ".exr")).string();
-    writeImage(exr, r.image);
-    ReferenceSet one;
-    one.spp = fresh.spp, one.sampler = fresh.sampler, one.seed = fresh.seed, one.seconds = fresh.seconds;
-    one.images = {r};
-    writeTextFile((fs::path(cacheDir) / (r.key + ".json")).string(),
-                  referenceManifest(scene, one, {r.key + ".exr"}, {imageContentHash(exr)}));
-    set.images[missingIndex[m]] = std::move(r);
-  }
-  return set;
 }
 
 }  // namespace aliaslab

@@ -6,24 +6,30 @@
 // independent scramble: seed hashWords(seed, batch)). Even batches go into
 // accumulator a, odd ones into b (film/film.h Accumulator, double
 // precision): two independent halves. The reference is their mean
-// G = (Ga + Gb) / 2 and its error estimate is
-//   ref_error = mean over pixels and channels of (Ga - Gb)^2 / 4,
-// the variance of that mean. No sample outlives its batch, so memory is
+// G = (Ga + Gb) / 2, and it keeps the half-difference D = (Ga - Gb) / 2:
+// per pixel and channel D^2 is an unbiased estimate of Var G, and for two
+// references of one pass (same samples, same halves) D_G D_T estimates
+// Cov(G, T) (docs/science.md, "The reference is an estimate too"). Its
+// scalar error estimate is
+//   ref_error = mean over pixels and channels of D^2 = mean (Ga - Gb)^2 / 4,
+// the mean variance of G. No sample outlives its batch, so memory is
 // independent of refSpp: 2 x width x height x filters x 4 doubles plus one
 // batch of samples.
 //
 // The cache key hashes the scene's content hash (scene and OBJ bytes, size,
 // tracing flags), the filter's describe(), refSpp, the sampler, the seed and
 // the batch size, and kReferenceAlgorithm, a number raised whenever a code
-// change alters reference pixels (so a cache made by older code is not
-// reused; 2 since the batched splat, which moved Gaussian and
-// Blackman-Harris weights by float ulps). Each reference is stored as <cache>/<key>.exr beside
-// <key>.json (its manifest). cachedReferences() loads what is there and
-// renders the missing ones together in one pass; files are written to a
-// temporary name and renamed, so concurrent shards can share a cache. Each
-// manifest records the content hash of its EXR ("image_hash"); an entry whose
-// EXR does not match it (replaced, damaged, or made before the hash) is not
-// trusted: a note says so on stderr and the reference is rendered again.
+// change alters what a cache entry holds (so a cache made by older code is
+// not reused; 2 since the batched splat, which moved Gaussian and
+// Blackman-Harris weights by float ulps; 3 since entries keep D). Each
+// reference is stored as <cache>/<key>.exr (G) and <key>.diff.exr (D) beside
+// <key>.json (its manifest); study/reference_cache.cpp. cachedReferences()
+// loads what is there and renders the missing ones together in one pass;
+// files are written to a temporary name and renamed, so concurrent shards
+// can share a cache. Each manifest records the content hashes of both EXRs
+// ("image_hash", "diff_hash"); an entry whose files do not match them
+// (replaced, damaged, or made before the hash) is not trusted: a note says
+// so on stderr and the reference is rendered again.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -57,6 +63,7 @@ struct ReferenceImage {
   FilterSpec filter;
   std::string describe;  ///< Filter::describe()
   Image image;           ///< G = (Ga + Gb) / 2
+  Image halfDiff;        ///< D = (Ga - Gb) / 2: per value, D^2 estimates Var G without bias
   double error = 0;      ///< ref_error: mean (Ga - Gb)^2 / 4
   ReconStats stats;      ///< pixel counts of the resolve (both halves summed)
   std::string key;       ///< cache key, 16 hex digits
@@ -94,7 +101,8 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
 /// `imageNames[i]` is the image file of filter i as a path from the manifest's folder ("" for none).
 std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
                               const std::vector<std::string>& imageNames,
-                              const std::vector<std::string>& imageHashes = {});
+                              const std::vector<std::string>& imageHashes = {},
+                              const std::vector<std::string>& diffHashes = {});
 
 /// The content hash stored in a cache manifest ("image_hash"): 16 hex digits of hashBytes over the file's bytes.
 std::string imageContentHash(const std::string& path);

@@ -232,6 +232,22 @@ TEST(Integrity, AReplacedCachedReferenceIsNotTrusted) {
   EXPECT_EQ(results(readText((d / "o" / "study.csv").string())), results(csv));
 }
 
+TEST(Integrity, AReplacedHalfDifferenceIsNotTrusted) {
+  const fs::path d = dirFor("cache-diff");
+  const auto first = sweep(d, scene() + std::vector<std::string>{"--seeds", "2", "--out", "o"});
+  ASSERT_EQ(first.exitCode, 0) << first.err;
+  // Each cache entry holds G (<key>.exr) and D (<key>.diff.exr); replace only the D images.
+  int replaced = 0;
+  for (const auto& e : fs::directory_iterator(d / "cache"))
+    if (e.path().string().size() > 9 && e.path().string().substr(e.path().string().size() - 9) == ".diff.exr")
+      writeImage(e.path().string(), Image(8, 8, Color(7, 7, 7))), ++replaced;
+  ASSERT_GT(replaced, 0) << "the cache keeps no half-difference images";
+  fs::remove(d / "o" / "study.csv");
+  const auto again = sweep(d, scene() + std::vector<std::string>{"--seeds", "2", "--out", "o"});
+  ASSERT_EQ(again.exitCode, 0) << again.err;
+  EXPECT_NE(again.err.find("no matching half-difference image"), std::string::npos) << again.err;
+}
+
 TEST(Integrity, LeftoversOfAKilledRunAreRemoved) {
   const fs::path d = dirFor("partial");
   fs::create_directories(d / "o" / "images" / "x");
