@@ -8,8 +8,8 @@ namespace aliaslab {
 
 // Interim (until measure/metrics.h takes RefEstimates): the per-target terms from one MetricAccumulator against G
 // and the area, per-seed sums against each target, one SpectrumAccumulator per distinct reference; the point
-// estimates corrected by the references' ref_error; blur uncorrected (needs the references' halves) with blur_se
-// NaN.
+// estimates corrected by the references' variance from their half-differences (mean D^2, and mean (D_G - D_T)^2
+// for blur); the standard errors are the seeds' only, blur_se NaN.
 struct RowMeasure::State {
   const ReferenceImage& own;
   std::vector<const ReferenceImage*> targets;
@@ -29,6 +29,17 @@ struct RowMeasure::State {
 };
 
 namespace {
+// mean over values of (a - b)^2 (b null: of a^2), in double.
+double meanSquare(const Image& a, const Image* b = nullptr) {
+  const size_t n = size_t(a.width()) * a.height() * 3;
+  double sum = 0;
+  for (size_t i = 0; i < n; ++i) {
+    const double d = double(a.data()[i]) - (b ? double(b->data()[i]) : 0.0);
+    sum += d * d;
+  }
+  return n ? sum / double(n) : 0.0;
+}
+
 const ReferenceImage& areaOf(const std::vector<const ReferenceImage*>& targets) {
   for (const ReferenceImage* r : targets)
     if (r->filter == FilterSpec{"box", 0.5}) return *r;
@@ -59,7 +70,7 @@ RowResult RowMeasure::result() const {
   const State& s = *s_;
   const Metrics m = s.metrics.result();
   RowResult r;
-  r.refVar = s.own.error;
+  r.refVar = meanSquare(s.own.halfDiff);
   r.mse = m.mse - r.refVar, r.mseSe = m.mseSe;
   r.aliasing = m.aliasing - r.refVar, r.aliasingSe = m.aliasingSe;
   r.noise = m.noise, r.noiseSe = m.noiseSe;
@@ -70,7 +81,7 @@ RowResult RowMeasure::result() const {
   for (size_t j = 0; j < s.targets.size(); ++j) {
     const ReferenceImage& t = *s.targets[j];
     RowTargetResult x;
-    x.refVar = t.error;
+    x.refVar = meanSquare(t.halfDiff);
     double sum = 0, sq = 0;
     for (double v : s.perSeed[j]) {
       x.perSeed.push_back(v - x.refVar);
@@ -79,9 +90,10 @@ RowResult RowMeasure::result() const {
     x.mseTarget = sum / K;
     for (double v : x.perSeed) sq += (v - x.mseTarget) * (v - x.mseTarget);
     x.mseTargetSe = s.identical ? 0.0 : K > 1 ? std::sqrt(sq / (K - 1) / K) : std::numeric_limits<double>::quiet_NaN();
-    x.blur = &t == &s.own ? 0.0 : meanSquaredDifference(s.own.image, t.image);
-    x.blurSe = &t == &s.own ? 0.0 : std::numeric_limits<double>::quiet_NaN();
-    x.cross = x.mseTarget - r.noise - r.aliasing - x.blur;
+    const bool same = &t == &s.own;
+    x.blur = same ? 0.0 : meanSquaredDifference(s.own.image, t.image) - meanSquare(s.own.halfDiff, &t.halfDiff);
+    x.blurSe = same ? 0.0 : std::numeric_limits<double>::quiet_NaN();
+    x.cross = same ? 0.0 : x.mseTarget - r.noise - r.aliasing - x.blur;
     const SpectrumMetrics sm = s.targetSpectra[j] ? s.targetSpectra[j]->result() : r.spectrum;
     x.blurredMse = sm.blurredMse, x.lowfreqError = sm.lowfreqError, x.lowfreqErrorSe = sm.lowfreqErrorSe;
     r.targets.push_back(std::move(x));

@@ -325,7 +325,8 @@ TEST(SweepBadInput, RefusedBeforeAnyWorkWithTheMessageAndNoCsv) {
 
 // One target (docs/science.md, "One target, four terms"): the target column, the four terms adding up to
 // mse_target on every row, blur = 0 and mse_target = mse for the target's own filter, and blur equal to the
-// mean squared difference of the two cached references, computed here from the EXR files.
+// mean squared difference of the two cached references less the variance of their difference (mean (D_G - D_T)^2
+// of their half-differences), computed here from the EXR files.
 TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
   const fs::path out = workDir() / "target";
   ASSERT_EQ(run("--scenes " + kScene + " --size 24 24 --samplers jittered --spp 4 --filters box,gaussian --radii 1 "
@@ -341,7 +342,7 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
   const fs::path manifest = out / "references" / "zoneplate.json";
   std::ifstream in(manifest);
   ASSERT_TRUE(in) << manifest;
-  std::map<std::string, Image> refs;
+  std::map<std::string, Image> refs, diffs;
   for (std::string line; std::getline(in, line);) {
     const size_t f = line.find("\"filter\": \""), r = line.find("\"radius\": "), im = line.find("\"image\": \"");
     if (f == std::string::npos || im == std::string::npos) continue;
@@ -349,6 +350,8 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
     const std::string radius = line.substr(r + 10, line.find(',', r) - r - 10);
     const std::string image = line.substr(im + 10, line.find('"', im + 10) - im - 10);
     refs[name + ":" + radius] = readImage((manifest.parent_path() / image).string());
+    const std::string diff = image.substr(0, image.size() - 4) + ".diff.exr";  // <key>.exr beside <key>.diff.exr
+    diffs[name + ":" + radius] = readImage((manifest.parent_path() / diff).string());
   }
   ASSERT_TRUE(refs.count("gaussian:1") && refs.count("box:1") && refs.count("box:0.5"));
   const auto lines = readCsvLines((out / "study.csv").string());
@@ -362,7 +365,9 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
     const double sum = std::stod(f[cNoise]) + std::stod(f[cAliasing]) + blur + cross;
     EXPECT_NEAR(sum, mseTarget, 1e-7 * mseTarget);  // the CSV prints 9 significant digits
     const std::string key = f[cFilter] + ":" + f[cRadius];
-    EXPECT_NEAR(blur, meanSquaredDifference(refs.at(key), refs.at("gaussian:1")), 1e-8 * blur + 1e-15);
+    const double expected = meanSquaredDifference(refs.at(key), refs.at("gaussian:1")) -
+                            meanSquaredDifference(diffs.at(key), diffs.at("gaussian:1"));
+    EXPECT_NEAR(blur, expected, 1e-7 * std::abs(blur) + 1e-15);
     if (key == "gaussian:1") {
       EXPECT_EQ(blur, 0.0);
       EXPECT_EQ(cross, 0.0);
