@@ -60,9 +60,10 @@ void finishRow(PendingRow& p, const fs::path& imageDir, bool images, const Group
                SpectrumMetrics& sm) {
   const Metrics m = p.metrics->result();
   CsvRow& r = p.row;
-  r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.mseArea, r.psnr = m.psnr;
-  r.mseTarget = m.mseTarget, r.blur = m.blur, r.cross = m.cross;
-  r.mseSe = m.mseSe, r.noiseSe = m.noiseSe, r.aliasingSe = m.aliasingSe, r.mseTargetSe = m.mseTargetSe;
+  const TargetMetrics& t = m.targets[0];  // the study's target T (startRows), then the area reference A
+  r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.targets[1].mseTarget, r.psnr = m.psnr;
+  r.mseTarget = t.mseTarget, r.blur = t.blur, r.cross = t.cross;
+  r.mseSe = m.mseSe, r.noiseSe = m.noiseSe, r.aliasingSe = m.aliasingSe, r.mseTargetSe = t.mseTargetSe;
   r.refError = p.reference->error;
   r.flip = p.flipSum / seeds;
   r.meanSpp = spent.meanSpp, r.maxSpp = spent.maxSpp;

@@ -47,8 +47,10 @@ PhaseTime startRows(std::vector<PendingRow>& rows, const RowReferences& refs, in
   return timedParallelFor(int(rows.size()), threads, 1, [&](int i) {
     PendingRow& p = rows[i];
     p.reference = p.mode == ReconMode::Supersample ? &refs.area() : &refs.of(p.filter.spec);
-    p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, refs.area().image, refs.target().image);
-    p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
+    // targets: T, then A (mse_area); no halves yet (exact references: nothing subtracted)
+    p.metrics = std::make_unique<MetricAccumulator>(
+        RefEstimate{&p.reference->image}, std::vector<RefEstimate>{{&refs.target().image}, {&refs.area().image}});
+    p.spectrum = std::make_unique<SpectrumAccumulator>(RefEstimate{&p.reference->image}, std::vector<RefEstimate>{});
     p.flipTarget = &refs.flipTarget();
   });
 }
