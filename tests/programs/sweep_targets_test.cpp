@@ -129,15 +129,18 @@ TEST(SweepTargets, TheTermsOfEachTargetAndItsOwnColumns) {
     EXPECT_NEAR(mean, num(f, "mse_target"), 1e-6 * std::abs(num(f, "mse_target"))) << row;
     // The flag rule: mse_target cannot be told from zero.
     EXPECT_EQ(f[col("flagged")], num(f, "mse_target") < 2 * num(f, "mse_target_se") ? "1" : "0") << row;
-    // The fixed grid is the same for every seed: deterministic, no standard error; jittered is not.
+    // The fixed grid is the same for every seed: deterministic, no noise and equal per-seed values (its standard
+    // errors are the references' part alone); jittered is not.
     if (f[col("sampler")] == "uniform") {
       EXPECT_EQ(f[col("deterministic")], "1") << row;
-      EXPECT_EQ(num(f, "mse_target_se"), 0.0) << row;
+      EXPECT_EQ(num(f, "noise"), 0.0) << row;
+      EXPECT_EQ(num(f, "noise_se"), 0.0) << row;
       for (size_t k = 1; k < seeds.size(); ++k) EXPECT_EQ(seeds[k], seeds[0]) << row;
     } else {
       EXPECT_EQ(f[col("deterministic")], "0") << row;
-      EXPECT_GT(num(f, "mse_target_se"), 0.0) << row;
+      EXPECT_GT(num(f, "noise_se"), 0.0) << row;
     }
+    EXPECT_GT(num(f, "mse_target_se"), 0.0) << row;  // the references' error is in every standard error
   }
 }
 
