@@ -20,6 +20,9 @@
 #include "core/error.h"
 #include "study/config.h"
 #include "study/csv.h"
+#include "study/presets.h"
+#include "filter/filter.h"
+#include "sampling/sampler.h"
 #include "support/scratch_dir.h"
 
 using namespace aliaslab;
@@ -223,4 +226,29 @@ TEST(SweepReferenceError, AliasingAgreesBetween256And4096SppReferencesWhileTheUn
     if (before - after > 3 * std::hypot(num(c, "aliasing_se"), num(f, "aliasing_se"))) ++uncorrectedApart;
   }
   EXPECT_EQ(uncorrectedApart, 3);  // at 64 spp the 256-spp reference's error is ~10 standard errors
+}
+
+// The bundled studies: references at least 64 x the highest spp, the three targets; the presented study at 256 px
+// with every sampler and filter and no per-configuration images.
+TEST(SweepPresets, ConvergedReferencesAndThreeTargets) {
+  for (const std::string name : {"default", "full"}) {
+    StudyConfig c;
+    ASSERT_TRUE(applyStudyPreset(name, c)) << name;
+    EXPECT_GE(c.refSpp, 64 * *std::max_element(c.spp.begin(), c.spp.end())) << name;
+    EXPECT_EQ(c.targets, (std::vector<std::string>{"area", "gaussian:1.5", "lanczos:3"})) << name;
+    EXPECT_NO_THROW(parseTargets(c.targets)) << name;
+  }
+  StudyConfig full;
+  applyStudyPreset("full", full);
+  EXPECT_EQ(full.longSide, 256);
+  EXPECT_EQ(full.samplers, samplerNames());
+  EXPECT_EQ(full.filters, filterNames());
+  EXPECT_EQ(full.spp, (std::vector<int>{4, 16, 64}));
+  EXPECT_EQ(full.radii, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
+  EXPECT_EQ(full.seeds, 8);
+  EXPECT_EQ(full.refSpp, 4096);
+  EXPECT_EQ(full.images, std::optional<bool>(false));
+  StudyConfig quick;
+  applyStudyPreset("default", quick);
+  EXPECT_EQ(quick.maxSize, 48);
 }
