@@ -158,7 +158,8 @@ std::vector<Target> parseTargets(const std::vector<std::string>& texts) {
     Target parsed = parseTarget(t);
     for (const Target& seen : out)
       if (seen.spec == parsed.spec)
-        throw OptionError("target", "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label + "')");
+        throw OptionError("target",
+                          "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label + "')");
     out.push_back(std::move(parsed));
   }
   return out;

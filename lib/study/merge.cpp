@@ -96,7 +96,8 @@ std::string measuredValues(const std::vector<std::string>& f) {
 
 void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs) {
   static const size_t kScene = csvColumn("scene"), kSampler = csvColumn("sampler"), kSpp = csvColumn("spp"),
-                      kFilter = csvColumn("filter"), kRadius = csvColumn("radius"), kRecon = csvColumn("reconstruction"), kTarget = csvColumn("target");
+                      kFilter = csvColumn("filter"), kRadius = csvColumn("radius"), kRecon = csvColumn("reconstruction"),
+                      kTarget = csvColumn("target");
   std::vector<std::string> all;
   struct Origin {
     std::string file;

@@ -13,8 +13,9 @@
 // instead, and its sample set reconstructed the same way; mean_spp and
 // max_spp record the samples it actually spent. Groups with prefilter
 // "footprint" trace with a second Tracer of the same scene whose options
-// turn pre-filtering on; every reference stays un-prefiltered. Each image goes straight into
-// its configuration's RowMeasure (study/row_measure.h: against its own reference and every target at once). When the K seeds are done, the
+// turn pre-filtering on; every reference stays un-prefiltered. Each image goes
+// straight into its configuration's RowMeasure (study/row_measure.h: against
+// its own reference and every target at once). When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
 // the seed-0 image, signed error and noise map are written. Each row's
 // radial error and noise spectra (measure/spectrum.h; files: study/spectrum_files.h) go to

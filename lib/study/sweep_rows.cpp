@@ -76,7 +76,8 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
   base.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
   base.traceMs = p.traceMs, base.reconstructMs = p.reconMs;
   sm = m.spectrum;
-  base.lowfreqErrorOwn = sm.lowfreqError, base.lowfreqErrorOwnSe = sm.lowfreqErrorSe, base.blurredMseOwn = sm.blurredMse;
+  base.lowfreqErrorOwn = sm.lowfreqError, base.lowfreqErrorOwnSe = sm.lowfreqErrorSe;
+  base.blurredMseOwn = sm.blurredMse;
   p.rows.clear();
   for (size_t j = 0; j < targets.size(); ++j) {
     if (!p.missing[j]) continue;

@@ -64,8 +64,8 @@ std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const s
 /// "Configuration finished": its measures into its missing target rows (p.rows; `targets` the study's, whose
 /// measures come first in p.measure's result, `areaIndex` the pixel area's position there), its spectra into
 /// `spectrum`, and (images on) its images into `imageDir`; the accumulators and images are released.
-void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaIndex, const std::filesystem::path& imageDir,
-               bool images, const GroupSpent& spent, int seeds, SpectrumMetrics& spectrum);
+void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaIndex,
+               const std::filesystem::path& imageDir, bool images, const GroupSpent& spent, int seeds, SpectrumMetrics& spectrum);
 
 /// A finished group's configurations, in order (`rows[i]` the target rows of configuration i, `spectra[i]` its
 /// spectra): spectra first (a row in the study CSV always has its spectra; a repeat is dropped at the end), then

@@ -52,7 +52,8 @@ double num(const std::vector<std::string>& f, const std::string& name) { return 
 // A configuration's identity without its target.
 std::string configuration(const std::vector<std::string>& f) {
   std::string k;
-  for (const char* c : {"scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"}) k += f[col(c)] + "|";
+  for (const char* c : {"scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"})
+    k += f[col(c)] + "|";
   return k;
 }
 
@@ -157,7 +158,8 @@ TEST(SweepTargets, AConfigurationIsDoneOnlyWhenAllItsTargetRowsArePresent) {
   std::vector<std::string> kept;
   for (const std::string& l : lines) {
     const auto f = splitCsvLine(l);
-    const bool dropOne = f[col("sampler")] == "jittered" && f[col("filter")] == "box" && f[col("target")] == "lanczos:2";
+    const bool dropOne =
+        f[col("sampler")] == "jittered" && f[col("filter")] == "box" && f[col("target")] == "lanczos:2";
     const bool dropAll = f[col("sampler")] == "uniform" && f[col("filter")] == "tent";
     if (!dropOne && !dropAll) kept.push_back(l);
   }
