@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # README command (a): install what is missing, build, run the default study
+# (the quick one: 48 px, references at 4096 spp, three targets; lib/study/presets.h)
 # on every scene in scenes/, then draw its charts and the HTML report.
 # A run writes only into its own folder, runs/default/ (git-ignored; set
 # ALIASLAB_RUN_DIR for another), never into the committed reference study in

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# The full reference study (docs/science.md, "The full study"): every bundled
-# scene at 256 px on the larger side, every sampler and filter, radii 0.5-2,
-# spp 4, 16, 64, 8 seeds, references at 8192 spp: `sweep --preset full`,
-# sharded. Hours of work (results/study_speed.md, "The full study").
+# The full reference study, the one the page presents (docs/science.md, "The
+# full study"): every bundled scene at 256 px on the larger side, every sampler
+# and filter, radii 0.5, 1, 1.5, 2, spp 4, 16, 64, 8 seeds, references at
+# 4096 spp (64 x the highest spp), three targets (area, gaussian:1.5,
+# lanczos:3: one CSV row per configuration and target), no per-configuration
+# images: `sweep --preset full`, sharded. Hours of work (results/study_speed.md,
+# "The full study").
 #
 #   bash experiments/run_full_study.sh [N] [extra sweep options...]
 #       GNU parallel on this machine: N shards (default: the number of cores),

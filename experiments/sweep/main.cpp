@@ -1,12 +1,12 @@
 // sweep: scenes x samplers x spp x prefilter x filters x radii x reconstruction modes,
-// K seeds each, one CSV row per configuration (lib/study/sweep.h).
+// K seeds each, one CSV row per configuration and target (lib/study/sweep.h).
 //
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
 //   sweep --preset default                     (the default study, results/study)
 //   sweep --preset full                        (the full reference study, results/study_full;
 //                                               run it sharded: experiments/run_full_study.sh)
-//   sweep ... --target gaussian:1.5            (decompose the error against another common target)
+//   sweep ... --target area,gaussian:1.5       (the targets the error is decomposed against; first = primary)
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
@@ -76,11 +76,12 @@ int main(int argc, char** argv) {
   app.add_option("--long-side", c.longSide,
                  "scale scenes up or down so the larger side is exactly this (0 = off; overrides --max-size)")
       ->capture_default_str();
-  app.add_option("--target", c.target,
-                 "the common target T of mse_target, blur and cross: 'area' (the pixel-area reference, box r=0.5, "
-                 "written box:0.5) or filter:radius, e.g. gaussian:1.5 or lanczos:2, rendered and cached with the "
-                 "references (definitions: docs/science.md)")
-      ->capture_default_str();
+  app.add_option("--target", c.targets,
+                 "the targets T of mse_target, blur, cross, blurred_mse and lowfreq_error, a comma list (first = "
+                 "primary; one CSV row per configuration and target): 'area' (the pixel-area reference, box r=0.5, "
+                 "written box:0.5) or filter:radius, e.g. gaussian:1.5 or lanczos:3; each is another reference "
+                 "rendered and cached with the others (definitions: docs/science.md)")
+      ->delimiter(',')->capture_default_str();
   app.add_option("--out", c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
   app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
   app.add_option("--cache", c.cache, "reference cache folder")->capture_default_str();

@@ -1,10 +1,12 @@
 #include "measure/metrics.h"
 
-#include <cmath>
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+
+#include "measure/standard_errors.h"
 
 namespace aliaslab {
 
@@ -18,28 +20,37 @@ void requireSameSize(const Image& a, const Image& b, const char* what) {
   if (a.width() != b.width() || a.height() != b.height())
     throw std::invalid_argument(std::string(what) + ": image sizes differ");
 }
+
+void requireEstimate(const RefEstimate& e, const Image& like, const char* what) {
+  if (!e.mean) throw std::invalid_argument(std::string(what) + ": no reference image");
+  requireSameSize(*e.mean, like, what);
+  if (e.halfDiff) requireSameSize(*e.halfDiff, like, what);
+}
+
+/// The value i of a half-difference (0 for an exact reference).
+inline double half(const float* d, size_t i) { return d ? static_cast<double>(d[i]) : 0.0; }
+
+/// 4 windowSumVariance(w D) / N^2 as a variance of the mean: x already holds 2 w D.
+double referencePart(const std::vector<double>& x, const Image& like, double n, double radius) {
+  return windowSumVariance(x, like.width(), like.height(), correlationLag(radius)) / (n * n);
+}
 }  // namespace
 
-MetricAccumulator::MetricAccumulator(const Image& reference, const Image& areaReference, const Image& target)
-    : reference_(reference), area_(areaReference), target_(target) {
-  requireSameSize(reference, areaReference, "MetricAccumulator");
-  requireSameSize(reference, target, "MetricAccumulator (target)");
-  mean_.assign(channelCount(reference), 0.0);
-  m2_.assign(channelCount(reference), 0.0);
-  const float* g = reference.data();
-  const float* t = target.data();
-  for (size_t i = 0; i < mean_.size(); ++i) {
-    const double d = static_cast<double>(g[i]) - t[i];
-    blur_ += d * d;
-  }
+MetricAccumulator::MetricAccumulator(RefEstimate reference, std::vector<RefEstimate> targets)
+    : reference_(reference), targets_(std::move(targets)) {
+  if (!reference_.mean) throw std::invalid_argument("MetricAccumulator: no reference image");
+  requireEstimate(reference_, *reference_.mean, "MetricAccumulator");
+  for (const RefEstimate& t : targets_) requireEstimate(t, *reference_.mean, "MetricAccumulator (target)");
+  mean_.assign(channelCount(*reference_.mean), 0.0);
+  m2_.assign(channelCount(*reference_.mean), 0.0);
+  sseTarget_.resize(targets_.size());
 }
 
 void MetricAccumulator::add(const Image& image) {
-  requireSameSize(image, reference_, "MetricAccumulator::add");
+  requireSameSize(image, *reference_.mean, "MetricAccumulator::add");
   ++count_;
   const float* v = image.data();
-  const float* g = reference_.data();
-  const float* a = area_.data();
+  const float* g = reference_.mean->data();
   const size_t n = mean_.size();
   double* mean = mean_.data();
   double* m2 = m2_.data();
@@ -59,18 +70,15 @@ void MetricAccumulator::add(const Image& image) {
     std::memcpy(mean + i, &m, sizeof m), std::memcpy(m2 + i, &s, sizeof s);
   }
   for (; i < n; ++i) update(static_cast<double>(v[i]), mean[i], m2[i]);
-  // The squared errors against A and T, and the products of this image's error against G with every
-  // earlier image's (row count_-1 of the Gram matrix C), summed in channel order. A loop of its own: the
-  // running sums are serial and kept the Welford loop from vectorising.
-  const float* t = target_.data();
-  double sseArea = sseArea_, sseTarget = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const double x = v[i];
-    sseArea += (x - a[i]) * (x - a[i]);
-    sseTarget += (x - t[i]) * (x - t[i]);
+  // The squared errors against each target, and the products of this image's error against G with every
+  // earlier image's (row count_-1 of the Gram matrix C), summed in channel order.
+  for (size_t j = 0; j < targets_.size(); ++j) {
+    const float* t = targets_[j].mean->data();
+    double sse = 0;
+    for (size_t i = 0; i < n; ++i) sse += (static_cast<double>(v[i]) - t[i]) * (static_cast<double>(v[i]) - t[i]);
+    sseTarget_[j].push_back(sse);
   }
-  sseArea_ = sseArea;
-  sseTarget_.push_back(sseTarget);
+  if (!images_.empty()) identical_ = identical_ && std::memcmp(v, images_[0].data(), n * sizeof(float)) == 0;
   images_.push_back(image);
   std::vector<double> row(images_.size(), 0.0);
   for (size_t l = 0; l < images_.size(); ++l) {
@@ -82,102 +90,93 @@ void MetricAccumulator::add(const Image& image) {
   gram_.push_back(std::move(row));
 }
 
-namespace {
-// Jackknife standard error from the K leave-one-out values.
-double jackknifeSe(const std::vector<double>& leaveOneOut) {
-  const double k = static_cast<double>(leaveOneOut.size());
-  double mean = 0;
-  for (double v : leaveOneOut) mean += v / k;
-  double ss = 0;
-  for (double v : leaveOneOut) ss += (v - mean) * (v - mean);
-  return std::sqrt((k - 1) / k * ss);
-}
-
-// Standard error of a degree-2 U-statistic U = mean over seed pairs k < l of h(k, l). Two estimates of Var(U):
-// - unbiased (Hoeffding): Var(U) = E[U^2] - theta^2 and theta^2 = E[h(k, l) h(i, j)] for four distinct seeds, so
-//   V = U^2 - (mean over pairs of disjoint pairs of h(k, l) h(i, j)), the disjoint sum being S^2 + Q - sum_j R_j^2
-//   (S = sum of h over pairs, Q = sum of h^2, R_j = sum over l != j of h(j, l)). It can come out negative.
-// - the leave-one-seed-out jackknife V_J, never negative, whose expectation lies between Var(U) and
-//   2 (K-1) / (K-2) Var(U) (the upper end when the pair terms share no per-seed part, e.g. zero aliasing).
-// The result is sqrt(max(V, V_J (K-2) / (2 (K-1)))): the unbiased value, floored by the jackknife scaled to a
-// lower bound in expectation, so a chance negative V does not claim a zero error. h is centred on U first
-// (V does not change) so no large terms cancel. Needs K >= 4 (NaN otherwise).
-double pairStatisticSe(const std::vector<std::vector<double>>& h) {
-  const int K = static_cast<int>(h.size());
-  if (K < 4) return std::numeric_limits<double>::quiet_NaN();
-  const double pairs = K * (K - 1) / 2.0;
-  double u = 0;
-  for (int a = 0; a < K; ++a)
-    for (int b = 0; b < a; ++b) u += h[a][b] / pairs;
-  double s = 0, q = 0, r2 = 0;
-  std::vector<double> r(K, 0.0);
-  for (int a = 0; a < K; ++a)
-    for (int b = 0; b < a; ++b) {
-      const double c = h[a][b] - u;
-      s += c, q += c * c, r[a] += c, r[b] += c;
-    }
-  for (double v : r) r2 += v * v;
-  const double disjoint = (s * s + q - r2) / (pairs * (K - 2) * (K - 3) / 2.0);
-  const double mean = s / pairs;  // 0 up to rounding
-  const double unbiased = mean * mean - disjoint;
-  std::vector<double> leaveOneOut(K);
-  for (int j = 0; j < K; ++j) leaveOneOut[j] = (s - r[j]) / (pairs - (K - 1));
-  const double jack = jackknifeSe(leaveOneOut);
-  return std::sqrt(std::max(unbiased, jack * jack * (K - 2) / (2.0 * (K - 1))));
-}
-}  // namespace
-
 Metrics MetricAccumulator::result() const {
   if (count_ < 2) throw std::logic_error("MetricAccumulator::result: needs at least 2 images");
-  const double n = static_cast<double>(mean_.size());
+  const size_t N = mean_.size();
+  const double n = static_cast<double>(N);
   const double k = count_;
-  const float* g = reference_.data();
-  const float* t = target_.data();
-  double variance = 0, bias2 = 0, cross = 0;
-  for (size_t i = 0; i < mean_.size(); ++i) {
+  const int K = count_;
+  const Image& G = *reference_.mean;
+  const float* g = G.data();
+  const float* dg = reference_.halfDiff ? reference_.halfDiff->data() : nullptr;
+  double variance = 0, bias2 = 0, varG = 0;
+  std::vector<double> x;  // 2 (m - G) D_G: the reference part of aliasing and mse
+  if (dg) x.resize(N);
+  for (size_t i = 0; i < N; ++i) {
     variance += m2_[i] / (count_ - 1);
     const double d = mean_[i] - g[i];
     bias2 += d * d;
-    cross += d * (static_cast<double>(g[i]) - t[i]);
+    if (dg) varG += half(dg, i) * half(dg, i), x[i] = 2 * d * dg[i];
   }
-  // The trace of the Gram matrix and the per-seed target sums.
-  const int K = count_;
-  double trace = 0, sseTarget = 0;
-  for (int a = 0; a < K; ++a) trace += gram_[a][a], sseTarget += sseTarget_[a];
+  const double refG = dg ? referencePart(x, G, n, reference_.radius) : 0.0;
+  double trace = 0;
+  for (int a = 0; a < K; ++a) trace += gram_[a][a];
   Metrics m;
   m.images = count_;
+  m.deterministic = identical_;
+  m.refVar = varG / n;
   m.noise = variance / n;
-  m.aliasing = bias2 / n - m.noise / count_;
-  m.mse = trace / (n * k);
-  m.mseArea = sseArea_ / (n * k);
-  m.mseTarget = sseTarget / (n * k);
-  m.blur = blur_ / n;
-  m.cross = 2 * cross / n;
+  m.aliasing = bias2 / n - m.noise / count_ - m.refVar;
+  m.mse = trace / (n * k) - m.refVar;
   m.psnr = m.mse > 0 ? 10.0 * std::log10(1.0 / m.mse) : std::numeric_limits<double>::infinity();
 
-  // mse and mse_target are means of independent per-seed terms: their leave-one-out jackknife is the classic
-  // sd over seeds / sqrt(K). noise and aliasing are means over seed pairs: the unbiased pair variance.
-  std::vector<double> mseOut(K), targetOut(K);
-  for (int j = 0; j < K; ++j) {
-    mseOut[j] = (trace - gram_[j][j]) / (n * (k - 1));
-    targetOut[j] = (sseTarget - sseTarget_[j]) / (n * (k - 1));
-  }
-  m.mseSe = jackknifeSe(mseOut);
-  m.mseTargetSe = jackknifeSe(targetOut);
-  // aliasing = mean over pairs of C_kl / N; noise = mean over pairs of |e_k - e_l|^2 / (2N) = (C_kk + C_ll - 2 C_kl) / (2N)
+  // Seed parts. mse is a mean of independent per-seed terms: its leave-one-out jackknife is the classic sd over
+  // seeds / sqrt(K). noise and aliasing are means over seed pairs: aliasing = mean over pairs of C_kl / N, noise =
+  // mean over pairs of |e_k - e_l|^2 / (2N) = (C_kk + C_ll - 2 C_kl) / (2N).
+  std::vector<double> mseOut(K);
+  for (int j = 0; j < K; ++j) mseOut[j] = (trace - gram_[j][j]) / (n * (k - 1));
   std::vector<std::vector<double>> aliasingPairs(K), noisePairs(K);
   for (int a = 0; a < K; ++a)
     for (int b = 0; b < a; ++b) {
       aliasingPairs[a].push_back(gram_[a][b] / n);
       noisePairs[a].push_back((gram_[a][a] + gram_[b][b] - 2 * gram_[a][b]) / (2 * n));
     }
-  m.aliasingSe = pairStatisticSe(aliasingPairs);
+  const double mseSeed = jackknifeSe(mseOut), aliasingSeed = pairStatisticSe(aliasingPairs);
+  m.mseSe = std::sqrt(mseSeed * mseSeed + refG);
+  m.aliasingSe = std::sqrt(aliasingSeed * aliasingSeed + refG);  // NaN stays NaN (K < 4)
   m.noiseSe = pairStatisticSe(noisePairs);
+
+  for (size_t j = 0; j < targets_.size(); ++j) {
+    const Image& T = *targets_[j].mean;
+    const float* t = T.data();
+    const float* dt = targets_[j].halfDiff ? targets_[j].halfDiff->data() : nullptr;
+    const bool halves = dg || dt;
+    double blur = 0, cross = 0, varT = 0, varDelta = 0, covariance = 0;
+    std::vector<double> xt, xb;  // 2 (m - T) D_T and 2 (G - T)(D_G - D_T): reference parts of mse_target, blur
+    if (dt) xt.resize(N);
+    if (halves) xb.resize(N);
+    for (size_t i = 0; i < N; ++i) {
+      const double gt = static_cast<double>(g[i]) - t[i];
+      blur += gt * gt;
+      cross += (mean_[i] - g[i]) * gt;
+      if (!halves) continue;
+      const double a = half(dg, i), b = half(dt, i);
+      varT += b * b, varDelta += (a - b) * (a - b), covariance += a * (a - b);
+      xb[i] = 2 * gt * (a - b);
+      if (dt) xt[i] = 2 * (mean_[i] - t[i]) * b;
+    }
+    TargetMetrics tm;
+    tm.refVar = varT / n;
+    const std::vector<double>& sse = sseTarget_[j];
+    double sseSum = 0;
+    for (int a = 0; a < K; ++a) sseSum += sse[a];
+    tm.mseTarget = sseSum / (n * k) - tm.refVar;
+    for (int a = 0; a < K; ++a) tm.perSeed.push_back(sse[a] / n - tm.refVar);
+    tm.blur = blur / n - varDelta / n;
+    tm.cross = 2 * cross / n + 2 * covariance / n;
+    std::vector<double> targetOut(K);
+    for (int a = 0; a < K; ++a) targetOut[a] = (sseSum - sse[a]) / (n * (k - 1));
+    const double targetSeed = jackknifeSe(targetOut);
+    const double refT = dt ? referencePart(xt, T, n, targets_[j].radius) : 0.0;
+    tm.mseTargetSe = std::sqrt(targetSeed * targetSeed + refT);
+    tm.blurSe = halves ? std::sqrt(referencePart(xb, T, n, std::max(reference_.radius, targets_[j].radius))) : 0.0;
+    m.targets.push_back(std::move(tm));
+  }
   return m;
 }
 
 Image MetricAccumulator::noiseMap() const {
-  Image out(reference_.width(), reference_.height());
+  Image out(reference_.mean->width(), reference_.mean->height());
   const double k = count_ > 1 ? count_ - 1 : 1;
   for (int y = 0; y < out.height(); ++y)
     for (int x = 0; x < out.width(); ++x) {
@@ -188,15 +187,8 @@ Image MetricAccumulator::noiseMap() const {
   return out;
 }
 
-Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference) {
-  MetricAccumulator acc(reference, areaReference);
-  for (const Image& image : images) acc.add(image);
-  return acc.result();
-}
-
-Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference,
-                       const Image& target) {
-  MetricAccumulator acc(reference, areaReference, target);
+Metrics computeMetrics(const std::vector<Image>& images, RefEstimate reference, std::vector<RefEstimate> targets) {
+  MetricAccumulator acc(reference, std::move(targets));
   for (const Image& image : images) acc.add(image);
   return acc.result();
 }

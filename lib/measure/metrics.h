@@ -1,37 +1,30 @@
-// Error metrics of one configuration (docs/science.md, "Metrics of one
-// configuration" and "One target, four terms").
+// Error metrics of one configuration (docs/science.md, "Metrics of one configuration", "One target, four
+// terms", "The references' own error" and "Standard errors").
 //
-// Protocol: construct a MetricAccumulator with the reference G of the
-// configuration's (filter, radius), the pixel-area reference A (box,
-// r = 0.5) and the study's target T (by default T = A), add() the K images
-// I_k rendered with independent seeds (any order), then result(). Per pixel
-// and channel it keeps the running mean m and the sum of squared deviations
-// (Welford, double). With s^2 the unbiased variance over the K images and
-// every mean taken over pixels and channels:
-//   mse        = mean over k of mean (I_k - G)^2
+// Protocol: construct a MetricAccumulator with the reference G of the configuration's (filter, radius) and the
+// study's targets T_j, each a RefEstimate (the mean of two independent halves and their half-difference D),
+// add() the K images I_k rendered with independent seeds (any order), then result(). Per pixel and channel it
+// keeps the running mean m and the sum of squared deviations (Welford, double). With s^2 the unbiased variance
+// over the K images, every mean taken over pixels and channels, and Var X estimated by mean D_X^2:
+//   mse        = mean over k of mean (I_k - G)^2  -  mean D_G^2
 //   noise      = mean s^2
-//   aliasing   = mean (m - G)^2  -  noise / K
-//   mse_area   = mean over k of mean (I_k - A)^2
-//   mse_target = mean over k of mean (I_k - T)^2
-//   blur       = mean (G - T)^2                 (the references alone)
-//   cross      = 2 mean (m - G)(G - T)
+//   aliasing   = mean (m - G)^2  -  noise / K  -  mean D_G^2
 //   psnr       = 10 log10(1 / mse)
-// Since mean_k (I_k - G)^2 = (m - G)^2 + (K-1)/K s^2 per value, mse =
-// aliasing + noise, and since I_k - T = (I_k - m) + (m - G) + (G - T),
-// mse_target = noise + aliasing + blur + cross; both hold up to rounding.
+// and per target T:
+//   mse_target = mean over k of mean (I_k - T)^2  -  mean D_T^2
+//   blur       = mean (G - T)^2  -  mean (D_G - D_T)^2        (the references alone)
+//   cross      = 2 mean (m - G)(G - T)  +  2 mean D_G (D_G - D_T)
+// so that mse = aliasing + noise and mse_target = noise + aliasing + blur + cross still hold up to rounding. A
+// reference without halves (halfDiff == nullptr) is exact: nothing is subtracted (the metrics of before).
 //
-// Standard errors over the seeds (the seeds are the independent units; the
-// pixels of one image are not independent of each other, since a sample
-// lands in several pixels' footprints). With e_k = I_k - G and the K x K Gram
-// matrix C_kl = sum over values of e_k e_l: mse = tr C / (N K) is a mean of
-// per-seed terms, and so is mse_target: their *_se is the sd over seeds /
-// sqrt(K) (= their jackknife). aliasing = mean over seed pairs of C_kl / N
-// and noise = mean over pairs of (C_kk + C_ll - 2 C_kl) / (2N) are pair
-// statistics: their *_se is the unbiased (Hoeffding) variance, floored by the
-// jackknife scaled to a lower bound (metrics.cpp, docs/science.md "Standard
-// errors"); they need K >= 4 (NaN otherwise). C needs every pair of seeds,
-// so the accumulator keeps the K images (K float images per configuration in
-// flight); no running state of fixed size gives all pair products.
+// Standard errors: se^2 = seed part + reference part. The seed part is taken over the seeds with G and T held
+// fixed (the seeds are the independent units; pixels of one image are not): with e_k = I_k - G and the K x K
+// Gram matrix C_kl = sum over values of e_k e_l, mse = tr C / (N K) and mse_target are means of per-seed terms
+// (sd over seeds / sqrt(K)); aliasing and noise are means over seed pairs (measure/standard_errors.h
+// pairStatisticSe; NaN when K < 4). The reference part is taken over spatial windows with the images held fixed:
+// for a statistic mean (w - delta)^2 - mean D^2 (w the residual against the true reference), it is
+// 4 windowSumVariance(w D) / N^2 with w = m - G (aliasing, mse), m - T (mse_target), G - T (blur). C needs every
+// pair of seeds, so the accumulator keeps the K images (K float images per configuration in flight).
 #pragma once
 #include <vector>
 
@@ -39,27 +32,43 @@
 
 namespace aliaslab {
 
+/// A reference estimate made of two independent halves a and b (study/reference.h): mean = (a + b) / 2,
+/// halfDiff = (a - b) / 2. Per value, halfDiff^2 is an unbiased estimate of Var(mean); for two references
+/// made from the same samples (same batches in the same halves), the product of their halfDiffs is an
+/// unbiased estimate of their covariance. halfDiff == nullptr: an exact reference (variance 0).
+/// radius: the reference filter's radius in pixels; its errors are correlated only between pixels less than
+/// 2 radius apart (they share no sample otherwise), which the standard errors' reference part uses. The default,
+/// 4, is the largest radius of the studies: safe for any filter up to it, only noisier for narrower ones.
+struct RefEstimate {
+  const Image* mean = nullptr;
+  const Image* halfDiff = nullptr;
+  double radius = 4;
+};
+
+/// The terms against one target T (all with the references' variance subtracted; see docs/science.md).
+struct TargetMetrics {
+  double mseTarget = 0, mseTargetSe = 0;  ///< mean_k mean (I_k - T)^2 - mean Var T
+  double blur = 0, blurSe = 0;            ///< mean (G - T)^2 - mean Var(G - T)
+  double cross = 0;                       ///< mse_target - noise - aliasing - blur (corrected terms)
+  double refVar = 0;                      ///< mean Var T, the estimate subtracted (the target's ref_error)
+  std::vector<double> perSeed;            ///< per seed k: mean (I_k - T)^2 - mean Var T (mean = mseTarget)
+};
+
 struct Metrics {
-  double mse = 0;        ///< mean squared error against G, per pixel and channel
-  double aliasing = 0;   ///< structured (seed-independent) part of mse
-  double noise = 0;      ///< seed-to-seed part of mse: mean unbiased variance
-  double mseArea = 0;    ///< mean squared error against the pixel-area reference A
-  double mseTarget = 0;  ///< mean squared error against the study's target T
-  double blur = 0;       ///< mean (G - T)^2: the filter's own deviation from the target
-  double cross = 0;      ///< 2 mean (m - G)(G - T): mse_target - noise - aliasing - blur
-  double psnr = 0;       ///< 10 log10(1 / mse), in dB (+inf when mse == 0)
-  double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;  ///< jackknife standard errors over seeds
-  int images = 0;        ///< K, the number of images added
+  double mse = 0, mseSe = 0;            ///< mean_k mean (I_k - G)^2 - mean Var G
+  double aliasing = 0, aliasingSe = 0;  ///< mean (m - G)^2 - noise / K - mean Var G
+  double noise = 0, noiseSe = 0;        ///< mean s^2 (unchanged: the reference does not enter it)
+  double psnr = 0;                      ///< 10 log10(1 / mse), mse the corrected one (+inf when <= 0)
+  double refVar = 0;                    ///< mean Var G (= the reference's ref_error)
+  bool deterministic = false;           ///< all K images identical bit for bit (the seeds change nothing)
+  std::vector<TargetMetrics> targets;   ///< in the order given to the accumulator
+  int images = 0;                       ///< K, the number of images added
 };
 
 class MetricAccumulator {
  public:
-  /// `reference` = G, `areaReference` = A, `target` = T; all the same size.
-  /// They are held by reference and must outlive the accumulator.
-  MetricAccumulator(const Image& reference, const Image& areaReference, const Image& target);
-  /// The target is the area reference (T = A).
-  MetricAccumulator(const Image& reference, const Image& areaReference)
-      : MetricAccumulator(reference, areaReference, areaReference) {}
+  /// G and the targets T_j, all the same size; images held by pointer, must outlive the accumulator.
+  MetricAccumulator(RefEstimate reference, std::vector<RefEstimate> targets);
 
   /// Adds one image I_k (same size as the references).
   void add(const Image& image);
@@ -71,22 +80,18 @@ class MetricAccumulator {
   Image noiseMap() const;
 
  private:
-  const Image& reference_;
-  const Image& area_;
-  const Image& target_;
+  RefEstimate reference_;
+  std::vector<RefEstimate> targets_;
   int count_ = 0;
-  std::vector<double> mean_, m2_;  ///< per pixel and channel
-  double sseArea_ = 0;
-  double blur_ = 0;                ///< sum of (G - T)^2
-  std::vector<Image> images_;      ///< the K images (for the pair products of C)
+  bool identical_ = true;                  ///< every image so far equals the first bit for bit
+  std::vector<double> mean_, m2_;          ///< per pixel and channel
+  std::vector<Image> images_;              ///< the K images (for the pair products of C)
   std::vector<std::vector<double>> gram_;  ///< gram_[k][l] = C_kl for l <= k
-  std::vector<double> sseTarget_;  ///< per seed: sum of (I_k - T)^2
+  std::vector<std::vector<double>> sseTarget_;  ///< [target][seed]: sum of (I_k - T)^2
 };
 
 /// Metrics of K images in one call (convenience over MetricAccumulator).
-Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference);
-Metrics computeMetrics(const std::vector<Image>& images, const Image& reference, const Image& areaReference,
-                       const Image& target);
+Metrics computeMetrics(const std::vector<Image>& images, RefEstimate reference, std::vector<RefEstimate> targets);
 
 /// Mean over pixels and channels of (a - b)^2.
 double meanSquaredDifference(const Image& a, const Image& b);

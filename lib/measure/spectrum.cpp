@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 #include <unsupported/Eigen/FFT>
 
 namespace aliaslab {
@@ -82,16 +84,57 @@ RadialSpectrum radialSpectrum(const Image& image) {
   return r;
 }
 
-SpectrumAccumulator::SpectrumAccumulator(const Image& reference)
-    : reference_(reference), width_(reference.width()), height_(reference.height()) {
+SpectrumAccumulator::SpectrumAccumulator(RefEstimate reference, std::vector<RefEstimate> targets)
+    : reference_(reference.mean ? *reference.mean
+                                : throw std::invalid_argument("SpectrumAccumulator: no reference image")),
+      width_(reference_.width()),
+      height_(reference_.height()) {
   const size_t n = static_cast<size_t>(width_) * height_;
   radius_.resize(n);
   for (int v = 0; v < height_; ++v)
-    for (int u = 0; u < width_; ++u) radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
+    for (int u = 0; u < width_; ++u)
+      radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
   gain_.resize(n);
   for (size_t i = 0; i < n; ++i) gain_[i] = blurGain(radius_[i]);
   sum_.assign(3 * n, Complex(0, 0));
   sumSquares_.assign(n, 0.0);
+  auto sameSize = [&](const Image* im) {
+    if (im && (im->width() != width_ || im->height() != height_))
+      throw std::invalid_argument("SpectrumAccumulator: reference sizes differ");
+  };
+  sameSize(reference.halfDiff);
+  if (reference.halfDiff) own_ = energies(*reference.halfDiff, &ownRadial_);
+  for (const RefEstimate& t : targets) {
+    if (!t.mean) throw std::invalid_argument("SpectrumAccumulator: no target image");
+    sameSize(t.mean), sameSize(t.halfDiff);
+    TargetState state;
+    state.shift.resize(3 * n);
+    std::vector<Complex> e;
+    const double inv = 1.0 / static_cast<double>(n);
+    for (int c = 0; c < 3; ++c) {  // DFT(G - T) = -DFT(T - G)
+      dft2(*t.mean, &reference_, c, e);
+      for (size_t i = 0; i < n; ++i) state.shift[c * n + i] = -e[i] * inv;
+    }
+    if (t.halfDiff) state.halves = energies(*t.halfDiff, nullptr);
+    targets_.push_back(std::move(state));
+  }
+}
+
+SpectrumAccumulator::Energies SpectrumAccumulator::energies(const Image& image, RadialSpectrum* radial) const {
+  const auto p = powerSpectrum(image);
+  Energies out;
+  for (size_t i = 0; i < p.size(); ++i) {
+    out.total += p[i];
+    if (radius_[i] < kLowFrequencyCutoff) out.low += p[i];
+    out.blurred += p[i] * gain_[i];
+    if (radial) radial->energy[binOf(radius_[i])] += p[i], ++radial->count[binOf(radius_[i])];
+  }
+  return out;
+}
+
+double SpectrumAccumulator::share(double low, double total, const Energies& ref) const {
+  const double t = total - ref.total;
+  return t > 0 ? std::clamp((low - ref.low) / t, 0.0, 1.0) : 0.0;
 }
 
 void SpectrumAccumulator::add(const Image& image) {
@@ -100,6 +143,7 @@ void SpectrumAccumulator::add(const Image& image) {
   const size_t n = static_cast<size_t>(width_) * height_;
   const double inv = 1.0 / static_cast<double>(n);
   double low = 0, total = 0, blurred = 0;
+  std::vector<double> lowT(targets_.size(), 0.0), totalT(targets_.size(), 0.0), blurredT(targets_.size(), 0.0);
   thread_local std::vector<Complex> e;  // reused image after image
   for (int c = 0; c < 3; ++c) {
     dft2(image, &reference_, c, e);
@@ -112,23 +156,52 @@ void SpectrumAccumulator::add(const Image& image) {
       if (radius_[i] < kLowFrequencyCutoff) low += p;
       blurred += p * gain_[i];
     }
+    for (size_t j = 0; j < targets_.size(); ++j) {  // I_k - T = e_k + (G - T)
+      const Complex* shift = targets_[j].shift.data() + c * n;
+      double l = 0, t = 0, b = 0;
+      for (size_t i = 0; i < n; ++i) {
+        const double p = std::norm(e[i] * inv + shift[i]) / 3.0;
+        t += p, b += p * gain_[i];
+        if (radius_[i] < kLowFrequencyCutoff) l += p;
+      }
+      lowT[j] += l, totalT[j] += t, blurredT[j] += b;
+    }
   }
-  lowFractions_.push_back(total > 0 ? low / total : 0.0);
+  lowFractions_.push_back(share(low, total, own_));
   blurred_ += blurred;
+  for (size_t j = 0; j < targets_.size(); ++j) {
+    targets_[j].lowFractions.push_back(share(lowT[j], totalT[j], targets_[j].halves));
+    targets_[j].blurred += blurredT[j];
+  }
   ++count_;
 }
+
+namespace {
+/// The mean of the per-seed shares and its standard error over the seeds.
+std::pair<double, double> meanAndSe(const std::vector<double>& f) {
+  const double k = static_cast<double>(f.size());
+  double mean = 0;
+  for (double v : f) mean += v / k;
+  double var = 0;
+  for (double v : f) var += (v - mean) * (v - mean) / (k - 1);
+  return {mean, std::sqrt(var / k)};
+}
+}  // namespace
 
 SpectrumMetrics SpectrumAccumulator::result() const {
   if (count_ < 2) throw std::logic_error("SpectrumAccumulator::result needs at least 2 images");
   SpectrumMetrics m;
   m.images = count_;
   const double k = count_;
-  double mean = 0;
-  for (double f : lowFractions_) mean += f / k;
-  double var = 0;
-  for (double f : lowFractions_) var += (f - mean) * (f - mean) / (k - 1);
-  m.lowfreqError = mean, m.lowfreqErrorSe = std::sqrt(var / k);
-  m.blurredMse = blurred_ / k;
+  std::tie(m.lowfreqError, m.lowfreqErrorSe) = meanAndSe(lowFractions_);
+  m.blurredMse = blurred_ / k - own_.blurred;
+  for (const TargetState& t : targets_) {
+    SpectrumTargetMetrics tm;
+    std::tie(tm.lowfreqError, tm.lowfreqErrorSe) = meanAndSe(t.lowFractions);
+    tm.blurredMse = t.blurred / k - t.halves.blurred;
+    m.targets.push_back(tm);
+  }
+  m.reference = ownRadial_;
   const size_t n = static_cast<size_t>(width_) * height_;
   for (size_t i = 0; i < n; ++i) {
     const int b = binOf(radius_[i]);

@@ -16,25 +16,40 @@
 // energy / count is the radially averaged power and the energies sum to the
 // mean square.
 //
-// Protocol of SpectrumAccumulator: construct with the reference G, add() the
+// Protocol of SpectrumAccumulator: construct with the reference G and the
+// study's targets T_j (RefEstimates: mean and half-difference D), add() the
 // K images I_k, result(). Per image it takes the spectrum of the error
 // e_k = I_k - G and keeps, per frequency, sum_k E_k and sum_k |E_k|^2, so the
 // noise spectrum (of I_k - m, m the mean of the K images) follows at the end
 // without keeping the images:
-//   errorSpectrum = mean_k P[e_k]                  (energies sum to mse)
+//   errorSpectrum = mean_k P[e_k]                  (energies sum to the mse
+//                                                   before the subtraction of
+//                                                   mean D_G^2)
 //   noiseSpectrum = sum_k P[e_k - mean_j e_j]/(K-1) (energies sum to noise,
 //                                                   the unbiased variance)
-//   lowfreq_error    = mean over k of f_k, f_k = the share of P[e_k] at
-//                      rho < kLowFrequencyCutoff (a quarter of Nyquist,
-//                      0.125 cycle per pixel; DC included); 0 for an
-//                      error-free image
-//   lowfreq_error_se = standard deviation of f_k over k / sqrt(K)
+//   reference     = P[D_G], the reference's own error spectrum (estimated)
+//   lowfreq_error    = mean over k of f_k, f_k = the share of the error's
+//                      energy at rho < kLowFrequencyCutoff (a quarter of
+//                      Nyquist, 0.125 cycle per pixel; DC included), with
+//                      the reference's share subtracted from both parts:
+//                      f_k = (L_k - L_D) / (E_k - E_D), L the energy below
+//                      the cutoff and E the total, of P[e_k] and of P[D_G];
+//                      clamped to [0, 1]; 0 when E_k - E_D <= 0 (an error
+//                      that cannot be told from the reference's, as an
+//                      error-free image)
+//   lowfreq_error_se = standard deviation of f_k over k / sqrt(K) (over the
+//                      seeds, the reference held fixed)
 //   blurred_mse      = mean over k of the mean square of e_k blurred by a
 //                      Gaussian of sigma = kBlurSigma = 1 pixel, applied as
 //                      the transfer function exp(-2 pi^2 sigma^2 rho^2) on
 //                      the DFT (a circular convolution: the blur wraps at the
-//                      image border), so blurred_mse = mean_k sum P[e_k] *
+//                      image border), minus the same of D_G: blurred_mse =
+//                      mean_k sum P[e_k] g(rho) - sum P[D_G] g(rho), g =
 //                      exp(-4 pi^2 sigma^2 rho^2)
+// The same three against each target T, from the error I_k - T: by
+// linearity its DFT is E_k + DFT(G - T), the latter computed once per target
+// (no extra FFT per image), and D_T takes the place of D_G. With no halves
+// (halfDiff == nullptr) nothing is subtracted.
 // White noise has lowfreq_error = pi 0.125^2 = 0.049 (the disc's share of
 // the frequency square); error pushed to high frequencies has less.
 //
@@ -44,6 +59,7 @@
 #include <vector>
 
 #include "core/image.h"
+#include "measure/metrics.h"  // RefEstimate
 
 namespace aliaslab {
 
@@ -70,20 +86,42 @@ RadialSpectrum radialSpectrum(const Image& image);
 /// Radius in cycles per pixel of DFT index (u, v) of a W x H image.
 double frequencyRadius(int u, int v, int width, int height);
 
-struct SpectrumMetrics {
+/// The measures against one target T (docs/science.md, "Where the error sits").
+struct SpectrumTargetMetrics {
   double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;
+};
+
+struct SpectrumMetrics {
+  double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< against the own reference G
+  std::vector<SpectrumTargetMetrics> targets;                   ///< against each target, in order
   RadialSpectrum error, noise;
+  RadialSpectrum reference;  ///< P[D_G]: the own reference's error spectrum (zero without halves)
   int images = 0;
 };
 
 class SpectrumAccumulator {
  public:
-  explicit SpectrumAccumulator(const Image& reference);
+  /// G and the targets T_j, all the same size. The images are copied or reduced on construction: they need not
+  /// outlive it.
+  SpectrumAccumulator(RefEstimate reference, std::vector<RefEstimate> targets);
   void add(const Image& image);
   /// Needs at least 2 images (for the noise spectrum and the standard error).
   SpectrumMetrics result() const;
 
  private:
+  /// What one error's share and blurred energy need: the energies of a reference's half-difference.
+  struct Energies {
+    double low = 0, total = 0, blurred = 0;
+  };
+  struct TargetState {
+    std::vector<std::complex<double>> shift;  ///< per channel and frequency: DFT(G - T) / (W H)
+    Energies halves;                          ///< of P[D_T]
+    std::vector<double> lowFractions;         ///< f_k against T
+    double blurred = 0;                       ///< sum over k of the blurred energy of I_k - T
+  };
+  Energies energies(const Image& image, RadialSpectrum* radial) const;
+  double share(double low, double total, const Energies& ref) const;
+
   Image reference_;  ///< a copy (a temporary may be passed)
   int width_, height_;
   std::vector<double> radius_;                      ///< rho per frequency
@@ -92,6 +130,9 @@ class SpectrumAccumulator {
   std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
   std::vector<double> lowFractions_;                ///< f_k
   double blurred_ = 0;
+  Energies own_;                                    ///< of P[D_G]
+  RadialSpectrum ownRadial_;                        ///< P[D_G] binned
+  std::vector<TargetState> targets_;
   int count_ = 0;
 };
 

@@ -151,6 +151,20 @@ Target parseTarget(const std::string& text) {
   return {{name, r}, name + ":" + formatNumber(r)};
 }
 
+std::vector<Target> parseTargets(const std::vector<std::string>& texts) {
+  if (texts.empty()) throw OptionError("target", "needs at least one target (e.g. area)");
+  std::vector<Target> out;
+  for (const std::string& t : texts) {
+    Target parsed = parseTarget(t);
+    for (const Target& seen : out)
+      if (seen.spec == parsed.spec)
+        throw OptionError("target",
+                          "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label + "')");
+    out.push_back(std::move(parsed));
+  }
+  return out;
+}
+
 void parseShard(const std::string& text, int& index, int& count) {
   const size_t slash = text.find('/');
   try {

@@ -17,7 +17,11 @@
 //
 // Built once, passed down: every distinct (filter, radius) of a study is made
 // (makeFilter) once by expandStudy and shared by its configurations
-// (StudyFilter); the target is parsed once (Target) with its CSV label.
+// (StudyFilter); the targets are parsed once (Target, parseTargets) with their CSV labels.
+//
+// Several targets: a study measures every configuration against each target T of `targets` (each only another
+// reference from the same samples, rendered in the one reference pass); the CSV has one row per (configuration,
+// target). The first target is the primary one.
 #pragma once
 #include <map>
 #include <memory>
@@ -47,7 +51,9 @@ struct StudyConfig {
   int width = 0, height = 0;  ///< size override (0: each scene's `# render:` size)
   int maxSize = 0;          ///< scale each scene down so its larger side is at most this (0: off)
   int longSide = 0;         ///< scale each scene up or down so its larger side is exactly this (0: off)
-  std::string target = "area";  ///< the common target T: "area" (= box:0.5) or "filter:radius"
+  /// the targets T (first = primary): "area" (= box:0.5) or "filter:radius"; area, the natural-width Gaussian
+  /// (sigma = r/3 = 0.5) and the band-limited Lanczos-windowed sinc with its zeros on integer pixels
+  std::vector<std::string> targets = {"area", "gaussian:1.5", "lanczos:3"};
   std::string out = "results/study";  ///< output folder
   std::string csv;          ///< CSV path (default out/study.csv, or out/study.shard-i-of-N.csv)
   std::string cache = "results/cache/refs";  ///< reference cache folder
@@ -73,7 +79,7 @@ struct Configuration {
   ReconMode mode = ReconMode::WeightedAverage;
 };
 
-/// The common target T of a study, parsed once: its (filter, radius) and the CSV's `target` column.
+/// A target T of a study, parsed once: its (filter, radius) and the CSV's `target` column.
 struct Target {
   FilterSpec spec;    ///< "area" is the pixel-area reference (box, r = 0.5)
   std::string label;  ///< "filter:radius" with the radius in %g ("box:0.5" for "area")
@@ -115,6 +121,10 @@ std::vector<FilterSpec> studyFilters(const StudyConfig& config);
 /// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("target")
 /// naming the valid forms.
 Target parseTarget(const std::string& text);
+
+/// The targets of a study, in order (the first is the primary). Throws OptionError("target") for an empty list,
+/// an unusable entry (parseTarget) or one given twice ("area" and "box:0.5" are the same target).
+std::vector<Target> parseTargets(const std::vector<std::string>& texts);
 
 /// Parses "i/N" (0 <= i < N). Throws OptionError("shard").
 void parseShard(const std::string& text, int& index, int& count);

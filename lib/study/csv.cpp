@@ -27,7 +27,8 @@ const std::vector<std::string>& csvColumns() {
       "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
       "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
-      "prefilter", "flip", "cpu_ms", "cpu_ms_se"};
+      "prefilter", "flip", "target_ref_error", "blur_se", "deterministic", "mse_target_seeds", "blurred_mse_own",
+      "lowfreq_error_own", "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se"};
   return cols;
 }
 
@@ -56,6 +57,13 @@ enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParam
            kRefSpp = 15, kTarget = 24 };
 
 std::string real(double v) { return formatNumber(v, "%.9g"); }
+
+// Per-seed values in one field: %.9g joined by ';' (no comma, so never quoted).
+std::string joinReals(const std::vector<double>& values) {
+  std::string out;
+  for (double v : values) out += (out.empty() ? "" : ";") + real(v);
+  return out;
+}
 
 std::string quoted(const std::string& s) {
   if (s.find_first_of(",\"\n") == std::string::npos) return s;
@@ -88,7 +96,10 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
     << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
     << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp << ','
-    << quoted(r.prefilter) << ',' << real(r.flip) << ',' << real(r.cpuMs) << ',' << real(r.cpuMsSe);
+    << quoted(r.prefilter) << ',' << real(r.flip) << ',' << real(r.targetRefError) << ',' << real(r.blurSe) << ','
+    << r.deterministic << ',' << joinReals(r.mseTargetSeeds) << ',' << real(r.blurredMseOwn) << ','
+    << real(r.lowfreqErrorOwn) << ',' << real(r.lowfreqErrorOwnSe) << ',' << real(r.cpuMs)
+    << ',' << real(r.cpuMsSe);
   return s.str();
 }
 

@@ -1,4 +1,4 @@
-// The study CSV: one row per configuration, appended whole, resumable,
+// The study CSV: one row per (configuration, target), appended whole, resumable,
 // shardable, mergeable.
 //
 // Columns (exact order; meanings in docs/science.md and the README):
@@ -7,11 +7,21 @@
 //   nan_pixels,negative_pixels,undefined_pixels,trace_ms,reconstruct_ms,threads,
 //   target,mse_target,blur,cross,mse_se,noise_se,aliasing_se,mse_target_se,
 //   lowfreq_error,lowfreq_error_se,blurred_mse (measure/spectrum.h),
-//   mean_spp,max_spp,prefilter,flip,cpu_ms,cpu_ms_se
+//   mean_spp,max_spp,prefilter,flip,
+//   target_ref_error,blur_se,deterministic,mse_target_seeds,
+//   blurred_mse_own,lowfreq_error_own,lowfreq_error_own_se,cpu_ms,cpu_ms_se
+// Against the configuration's own reference G (the same on every target row of a configuration): mse, aliasing,
+// noise, psnr, ref_error (mean Var G), their *_se; mse_area against the pixel-area reference; blurred_mse_own,
+// lowfreq_error_own(_se). Against the row's target T: mse_target, blur, cross, their *_se, target_ref_error
+// (mean Var T), blurred_mse, lowfreq_error(_se), flip, mse_target_seeds (the K per-seed mse_target values joined
+// by ';', their mean is mse_target). Every mean square that holds a reference estimate has that reference's
+// variance subtracted (measure/metrics.h), so an unbiased configuration has aliasing 0 within its *_se.
+// flagged: 1 when mse_target < 2 mse_target_se (the error cannot be told from zero given the seeds' and the
+// references' error). deterministic: 1 when the K images were identical (the fixed grid: no standard error).
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
 // fixed sampler and differ for adaptive ones, render/adaptive.h.
-// flip: mean LDR-FLIP of the K images against the target, measure/flip.h.
+// flip: mean LDR-FLIP of the K images against the row's target, measure/flip.h.
 // cpu_ms: thread CPU milliseconds per image of the configuration's own work, the trace of its sample set plus
 // its own reconstruction (its share of the shared splat pass), inner threads included, mean over the seeds;
 // cpu_ms_se: their sd over the seeds / sqrt K. Unlike the wall times trace_ms and reconstruct_ms, a competing
@@ -19,7 +29,7 @@
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
-// ref_spp, target, prefilter): a rerun skips configurations whose key is already in the file.
+// ref_spp, target, prefilter): a rerun skips configurations whose rows (one per target) are all in the file.
 // CsvAppender opens an existing file for resumption: it checks the header and rows first (a file that is
 // not a study CSV is never modified),
 // truncates a trailing partial line (a killed run), and appends each new row
@@ -52,13 +62,18 @@ struct CsvRow {
   double traceMs = 0, reconstructMs = 0;
   double flip = 0;
   int threads = 0;
-  std::string target;  ///< the study's target T as "filter:radius" (default "box:0.5", the pixel area)
+  std::string target;  ///< the row's target T as "filter:radius" ("box:0.5" is the pixel area)
   double mseTarget = 0, blur = 0, cross = 0;
   double mseSe = 0, noiseSe = 0, aliasingSe = 0, mseTargetSe = 0;
   double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< measure/spectrum.h
   double meanSpp = 0;  ///< mean samples per pixel actually spent (over pixels and seeds)
   int maxSpp = 0;      ///< most samples in one pixel (over seeds)
   std::string prefilter = "none";  ///< none | footprint (texture pre-filtering, docs/prefiltering.md)
+  double targetRefError = 0;       ///< mean Var T: the target's own error (subtracted from mse_target)
+  double blurSe = 0;               ///< standard error of blur (the references' error)
+  int deterministic = 0;           ///< 1 when the K images were identical bit for bit
+  std::vector<double> mseTargetSeeds;  ///< per seed k: corrected mse_target of image k (mean = mseTarget)
+  double blurredMseOwn = 0, lowfreqErrorOwn = 0, lowfreqErrorOwnSe = 0;  ///< against the own reference G
   double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
 };
 

@@ -96,7 +96,8 @@ std::string measuredValues(const std::vector<std::string>& f) {
 
 void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs) {
   static const size_t kScene = csvColumn("scene"), kSampler = csvColumn("sampler"), kSpp = csvColumn("spp"),
-                      kFilter = csvColumn("filter"), kRadius = csvColumn("radius"), kRecon = csvColumn("reconstruction");
+                      kFilter = csvColumn("filter"), kRadius = csvColumn("radius"), kRecon = csvColumn("reconstruction"),
+                      kTarget = csvColumn("target");
   std::vector<std::string> all;
   struct Origin {
     std::string file;
@@ -143,7 +144,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
                                 std::to_string(it->second.line) +
                                 " give different results for the same configuration (" + f[kScene] + ", " +
                                 f[kSampler] + " spp " + f[kSpp] + ", " + f[kFilter] + " r " + f[kRadius] + ", " +
-                                f[kRecon] + "): shards of different studies? Merge the shards of one study only");
+                                f[kRecon] + ", target " + f[kTarget] + "): shards of different studies? Merge the shards of one study only");
       ++next;
     }
     all.insert(all.end(), lines.begin(), lines.end());

@@ -1,13 +1,16 @@
 // The bundled studies, by name: a preset fills a StudyConfig, and whatever the
 // caller sets afterwards (explicit options) overrides it.
-//   default: every bundled scene at most 48 px, course and modern samplers and
-//            filters, radii 0.5, 1, 2, spp 4, 16, 64, 8 seeds, references at
-//            512 spp, images on; results/study (under 10 minutes on 2 cores,
+//   default: the quick study (README command (a)): every bundled scene at most
+//            48 px, course and modern samplers and filters, radii 0.5, 1, 2,
+//            spp 4, 16, 64, 8 seeds, references at 4096 spp (64 x the highest
+//            spp), images on; results/study (under 15 minutes on 2 cores,
 //            results/study_speed.md).
-//   full:    the full reference study (docs/science.md, "The full study"):
-//            every scene at 256 px on the larger side, every sampler and
-//            filter, radii 0.5-2, references at 8192 spp; results/study_full.
-//            Hours on 2 cores: run it sharded.
+//   full:    the presented study (docs/science.md, "The full study"): every
+//            scene at 256 px on the larger side, every sampler and filter,
+//            radii 0.5, 1, 1.5, 2, spp 4, 16, 64, 8 seeds, references at 4096
+//            spp, no per-configuration images; results/study_full. Hours on 2
+//            cores: run it sharded.
+// Both measure against three targets: area, gaussian:1.5 (sigma 0.5) and lanczos:3.
 #pragma once
 #include <string>
 #include <vector>

@@ -1,5 +1,6 @@
 #include "study/sweep.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -109,16 +110,18 @@ void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& 
   if (run.sum.images) fs::create_directories(imageDir);
   std::vector<SpectrumMetrics> spectra(rows.size());
   const PhaseTime finish = timedParallelFor(int(rows.size()), run.threads, 1, [&](int i) {
-    finishRow(rows[i], imageDir, run.sum.images, spent, run.config.seeds, spectra[i]);
+    finishRow(rows[i], run.plan.targets, refs.areaIndex(), imageDir, run.sum.images, spent, run.config.seeds,
+              spectra[i]);
   });
   phases.finish += finish.work, phases.waiting += finish.idle;
-  std::vector<CsvRow> csvRows;
-  for (const PendingRow& p : rows) csvRows.push_back(p.row);
+  std::vector<std::vector<CsvRow>> csvRows;
+  size_t written = 0;
+  for (PendingRow& p : rows) written += p.rows.size(), csvRows.push_back(std::move(p.rows));
   phases.io += run.writer.submit([&config = run.config, csvRows = std::move(csvRows), spectra = std::move(spectra),
                                   out = run.out.get(), &written = run.spectraWritten] {
     writeRows(config, csvRows, spectra, *out, written);
   });
-  run.sum.rowsWritten += rows.size();
+  run.sum.rowsWritten += written;
 }
 
 // One scene (its groups): the rows still missing, the scene built and its references, then each group.
@@ -130,10 +133,11 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   const SceneSize size = run.plan.sceneSizes.at(path);  // read by validateStudy from the render line
   if (run.out) checkSameSceneSize(run.csv, run.out->resumedLines(), stem, size.width, size.height);
 
-  std::vector<FilterSpec> specs{kAreaSpec};
-  if (run.plan.target.spec != kAreaSpec) specs.push_back(run.plan.target.spec);
+  std::vector<FilterSpec> specs{kAreaSpec};  // the area, every target, then the rows' (filter, radius)
+  for (const Target& t : run.plan.targets)
+    if (std::find(specs.begin(), specs.end(), t.spec) == specs.end()) specs.push_back(t.spec);
   run.sum.phases.io += run.writer.wait();  // `out`'s keys are read by planRows and added to by the writer
-  auto pending = planRows(config, run.plan.target, stem, size, groups, run.out.get(), specs, run.sum.rowsSkipped);
+  auto pending = planRows(config, run.plan.targets, stem, size, groups, run.out.get(), specs, run.sum.rowsSkipped);
   bool any = config.refsOnly;
   for (const auto& p : pending) any = any || !p.empty();
   if (!any) {
@@ -145,7 +149,7 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   const ReferenceSet refs = sceneReferences(config, *scene, specs, referenceOptions(config), run.sum.images);
   run.sum.phases.references += clock.seconds();
   if (config.refsOnly) return;
-  const RowReferences rowRefs(refs, specs, run.plan.target.spec);
+  const RowReferences rowRefs(refs, specs, run.plan.targets);
   for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs);
 }
 

@@ -1,8 +1,9 @@
-// The sweep: every configuration of a StudyConfig measured into one CSV row.
+// The sweep: every configuration of a StudyConfig measured into one CSV row per target of the study.
 //
 // For each (scene, sampler, spp, prefilter) group of this shard, in canonical order:
-// the references of every (filter, radius) plus the pixel-area reference
-// come from the cache (or are rendered in one pass); then for each seed
+// the references of every (filter, radius) plus the pixel-area reference and
+// every target come from the cache (or are rendered in one pass; each keeps
+// its halves' difference); then for each seed
 // k = 0 .. K-1 the sample set is traced ONCE (render/render.h traceSamples,
 // sampler seed k) and reconstructed from memory with every (filter, radius)
 // in the weighted and classic modes, and with the 3x3-binomial supersample
@@ -12,8 +13,9 @@
 // instead, and its sample set reconstructed the same way; mean_spp and
 // max_spp record the samples it actually spent. Groups with prefilter
 // "footprint" trace with a second Tracer of the same scene whose options
-// turn pre-filtering on; every reference stays un-prefiltered. Each image goes straight into
-// its configuration's MetricAccumulator. When the K seeds are done, the
+// turn pre-filtering on; every reference stays un-prefiltered. Each image goes
+// straight into its configuration's RowMeasure (study/row_measure.h: against
+// its own reference and every target at once). When the K seeds are done, the
 // group's rows are appended whole (CsvAppender) and, when images are on,
 // the seed-0 image, signed error and noise map are written. Each row's
 // radial error and noise spectra (measure/spectrum.h; files: study/spectrum_files.h) go to
@@ -32,8 +34,9 @@
 // writer), sweep_memory.h (the memory bound and the in-flight count),
 // sweep_summary.h (what the sweep reports).
 //
-// Resuming: configurations whose key is already in the CSV are skipped (a
-// group whose rows are all present is not traced). At the end the CSV is
+// Resuming: configurations whose rows (one per target) are all in the CSV are
+// skipped (a group whose rows are all present is not traced); one with a
+// target row missing is measured again and only its missing rows written. At the end the CSV is
 // rewritten in canonical order, so an interrupted-and-resumed run, or merged
 // shards, give the same file as one uninterrupted run (timing aside).
 #pragma once

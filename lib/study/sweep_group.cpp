@@ -27,7 +27,7 @@ struct SeedTrace {
 // One (seed, row) image (phase B's slot), with the thread-seconds of its parts.
 struct RowImage {
   Reconstruction r;
-  double flip = 0;  ///< meanFlip(image, target), computed in the (seed, row) task
+  std::vector<double> flip;  ///< per target: meanFlip(image, T), computed in the (seed, row) task
   double traceMs = 0, reconMs = 0;
   double cpuMs = 0;  ///< CPU time: the set's trace + this row's reconstruction (its share of the splat pass)
   double traceS = 0, resolveS = 0, flipS = 0;  ///< this task's share of the phases
@@ -102,7 +102,7 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
     }
   }
   const Stopwatch flip;
-  out.flip = p.flipTarget->mean(out.r.image);
+  for (const FlipReference* t : p.flipTargets) out.flip.push_back(t->mean(out.r.image));
   out.flipS = flip.seconds();
   g.inFlight.add(imageBytes(g.scene.width, g.scene.height));
   return out;
@@ -112,9 +112,8 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
 void foldSeeds(const GroupContext& g, PendingRow& p, const std::vector<RowImage*>& seedImages, int k0) {
   for (size_t i = 0; i < seedImages.size(); ++i) {
     RowImage& img = *seedImages[i];
-    p.metrics->add(img.r.image);
-    p.spectrum->add(img.r.image);
-    p.flipSum += img.flip;
+    p.measure->add(img.r.image);
+    for (size_t j = 0; j < img.flip.size(); ++j) p.flipSums[j] += img.flip[j];
     p.stats += img.r.stats;
     p.traceMs += img.traceMs / g.config.seeds, p.reconMs += img.reconMs / g.config.seeds;
     p.cpuMs.push_back(img.cpuMs);

@@ -32,7 +32,7 @@ std::string supersampleParams(int spp) {
 }
 
 // The row of a configuration before measurement (identifying columns only).
-CsvRow templateRow(const StudyConfig& c, const Target& target, const std::string& stem, SceneSize size,
+CsvRow templateRow(const StudyConfig& c, const std::string& stem, SceneSize size,
                    const SampleSetGroup& g, const Configuration& cfg) {
   CsvRow r;
   r.scene = stem, r.width = size.width, r.height = size.height;
@@ -41,72 +41,94 @@ CsvRow templateRow(const StudyConfig& c, const Target& target, const std::string
   r.filterParams = cfg.mode == ReconMode::Supersample ? supersampleParams(g.spp) : cfg.filter.filter->describe();
   r.reconstruction = toString(cfg.mode);
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
-  r.target = target.label;
   r.prefilter = g.prefilter;
   return r;
 }
 }  // namespace
 
-std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const Target& target, const std::string& stem,
-                                              SceneSize size, const std::vector<const SampleSetGroup*>& groups,
-                                              const CsvAppender* out, std::vector<FilterSpec>& specs, size_t& skipped) {
+std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const std::vector<Target>& targets,
+                                              const std::string& stem, SceneSize size,
+                                              const std::vector<const SampleSetGroup*>& groups, const CsvAppender* out,
+                                              std::vector<FilterSpec>& specs, size_t& skipped) {
   std::vector<std::vector<PendingRow>> pending(groups.size());
   for (size_t g = 0; g < groups.size(); ++g)
     for (const Configuration& cfg : groups[g]->configs) {
       PendingRow p;
       p.mode = cfg.mode;
       p.filter = cfg.filter;
-      p.row = templateRow(config, target, stem, size, *groups[g], cfg);
-      if (out && out->has(csvKey(p.row))) {
-        ++skipped;
-        continue;
+      p.row = templateRow(config, stem, size, *groups[g], cfg);
+      bool any = false;
+      for (const Target& t : targets) {
+        CsvRow keyed = p.row;
+        keyed.target = t.label;
+        p.missing.push_back(!out || !out->has(csvKey(keyed)));
+        any = any || p.missing.back();
+        skipped += p.missing.back() ? 0 : 1;
       }
+      if (!any) continue;
       if (std::find(specs.begin(), specs.end(), cfg.filter.spec) == specs.end()) specs.push_back(cfg.filter.spec);
       pending[g].push_back(std::move(p));
     }
   return pending;
 }
 
-void finishRow(PendingRow& p, const fs::path& imageDir, bool images, const GroupSpent& spent, int seeds,
-               SpectrumMetrics& sm) {
-  const Metrics m = p.metrics->result();
-  CsvRow& r = p.row;
-  r.mse = m.mse, r.aliasing = m.aliasing, r.noise = m.noise, r.mseArea = m.mseArea, r.psnr = m.psnr;
-  r.mseTarget = m.mseTarget, r.blur = m.blur, r.cross = m.cross;
-  r.mseSe = m.mseSe, r.noiseSe = m.noiseSe, r.aliasingSe = m.aliasingSe, r.mseTargetSe = m.mseTargetSe;
-  r.refError = p.reference->error;
-  r.flip = p.flipSum / seeds;
-  r.meanSpp = spent.meanSpp, r.maxSpp = spent.maxSpp;
-  r.flagged = m.mse < 4.0 * p.reference->error ? 1 : 0;
-  r.nanPixels = static_cast<long long>(p.stats.nanPixels);
-  r.negativePixels = static_cast<long long>(p.stats.negativePixels);
-  r.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
-  r.traceMs = p.traceMs, r.reconstructMs = p.reconMs;
-  cpuMeanAndSe(p.cpuMs, r.cpuMs, r.cpuMsSe);
-  sm = p.spectrum->result();
-  r.lowfreqError = sm.lowfreqError, r.lowfreqErrorSe = sm.lowfreqErrorSe, r.blurredMse = sm.blurredMse;
+void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaIndex, const fs::path& imageDir,
+               bool images, const GroupSpent& spent, int seeds, SpectrumMetrics& sm) {
+  const RowResult m = p.measure->result();
+  CsvRow base = p.row;
+  base.mse = m.mse, base.aliasing = m.aliasing, base.noise = m.noise, base.psnr = m.psnr;
+  base.mseArea = m.targets[areaIndex].mseTarget;
+  base.mseSe = m.mseSe, base.noiseSe = m.noiseSe, base.aliasingSe = m.aliasingSe;
+  base.refError = m.refVar;
+  base.deterministic = m.deterministic ? 1 : 0;
+  base.meanSpp = spent.meanSpp, base.maxSpp = spent.maxSpp;
+  base.nanPixels = static_cast<long long>(p.stats.nanPixels);
+  base.negativePixels = static_cast<long long>(p.stats.negativePixels);
+  base.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
+  base.traceMs = p.traceMs, base.reconstructMs = p.reconMs;
+  cpuMeanAndSe(p.cpuMs, base.cpuMs, base.cpuMsSe);
+  sm = m.spectrum;
+  base.lowfreqErrorOwn = sm.lowfreqError, base.lowfreqErrorOwnSe = sm.lowfreqErrorSe;
+  base.blurredMseOwn = sm.blurredMse;
+  p.rows.clear();
+  for (size_t j = 0; j < targets.size(); ++j) {
+    if (!p.missing[j]) continue;
+    const RowTargetResult& t = m.targets[j];
+    CsvRow r = base;
+    r.target = targets[j].label;
+    r.mseTarget = t.mseTarget, r.mseTargetSe = t.mseTargetSe, r.blur = t.blur, r.blurSe = t.blurSe, r.cross = t.cross;
+    r.targetRefError = t.refVar;
+    r.mseTargetSeeds = t.perSeed;
+    r.lowfreqError = t.lowfreqError, r.lowfreqErrorSe = t.lowfreqErrorSe, r.blurredMse = t.blurredMse;
+    r.flip = p.flipSums[j] / seeds;
+    r.flagged = r.mseTarget < 2.0 * r.mseTargetSe ? 1 : 0;
+    p.rows.push_back(std::move(r));
+  }
   if (images)
-    writeConfigurationImages(imageDir.string(), configurationImageBase(r), p.seed0, p.reference->image,
-                             p.metrics->noiseMap(), spent.density0);
-  p.metrics.reset(), p.spectrum.reset(), p.seed0 = Image();  // a finished row's K images and sums are not needed again
+    writeConfigurationImages(imageDir.string(), configurationImageBase(base), p.seed0, p.reference->image,
+                             p.measure->noiseMap(), spent.density0);
+  p.measure.reset(), p.seed0 = Image();  // a finished configuration's K images and sums are not needed again
 }
 
-void writeRows(const StudyConfig& config, const std::vector<CsvRow>& rows, const std::vector<SpectrumMetrics>& spectra,
-               CsvAppender& out, std::set<std::string>& spectraWritten) {
+void writeRows(const StudyConfig& config, const std::vector<std::vector<CsvRow>>& rows,
+               const std::vector<SpectrumMetrics>& spectra, CsvAppender& out, std::set<std::string>& spectraWritten) {
   std::map<std::string, std::vector<std::pair<std::string, const SpectrumMetrics*>>> byFile;
+  std::vector<CsvRow> all;
   for (size_t i = 0; i < rows.size(); ++i) {
-    const CsvRow& r = rows[i];
+    if (rows[i].empty()) continue;
+    const CsvRow& r = rows[i].front();
     byFile[spectrumCsvPath(csvPath(config), r.scene)].emplace_back(
         r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
             formatNumber(r.radius, "%.9g") + ',' + r.reconstruction + ',' + r.prefilter,
         &spectra[i]);
+    all.insert(all.end(), rows[i].begin(), rows[i].end());
   }
   for (const auto& [path, lines] : byFile) {
     fs::create_directories(fs::path(path).parent_path());
     appendSpectrumCsv(path, lines);
     spectraWritten.insert(path);
   }
-  out.append(rows);
+  out.append(all);
 }
 
 }  // namespace aliaslab

@@ -1,11 +1,14 @@
 // The rows of the sweep: a configuration from its template (identifying columns) to its CSV line.
 //
-// Protocol, per group of one scene: planRows lists the rows still missing from the CSV (resume), each with the
-// configuration's filter (built once by expandStudy), and collects the (filter, radius) references they need;
-// each row then gets its reference and accumulators (study/sweep_scene.h startRows); the group's seeds are
-// folded into them (study/sweep_group.h); finishRow turns a row's sums into its numbers, spectra and images (one
-// task per row, each writing only its own files); writeRows writes the group's spectra and CSV lines in row
-// order, on the writer's thread (study/group_writer.h).
+// A configuration has one CSV row per target of the study (the target column is part of the key); it is measured
+// once for all targets. Protocol, per group of one scene: planRows lists the configurations with a target row
+// still missing from the CSV (resume; a configuration is done only when all its target rows are there), each
+// with the configuration's filter (built once by expandStudy), and collects the (filter, radius) references they
+// need; each configuration then gets its reference and its RowMeasure against every target (study/sweep_scene.h
+// startRows); the group's seeds are folded into them (study/sweep_group.h); finishRow turns a configuration's
+// sums into its missing target rows, spectra and images (one task per configuration, each writing only its own
+// files); writeRows writes the group's spectra and CSV lines in order, on the writer's thread
+// (study/group_writer.h).
 #pragma once
 #include <filesystem>
 #include <memory>
@@ -17,26 +20,27 @@
 #include "study/config.h"
 #include "study/csv.h"
 #include "measure/flip.h"
-#include "measure/metrics.h"
 #include "measure/spectrum.h"
+#include "study/row_measure.h"
 #include "study/study_scene.h"
 
 namespace aliaslab {
 
-/// One configuration (row) in flight: its row, filter, reference and running metrics.
+/// One configuration in flight: its rows' identifying columns, filter, reference and running measures.
 struct PendingRow {
-  CsvRow row;
+  CsvRow row;                                  ///< the identifying columns, target not set
+  std::vector<bool> missing;                   ///< per target of the study: its row is not in the CSV yet
   ReconMode mode = ReconMode::WeightedAverage;
   StudyFilter filter;                          ///< the configuration's (filter, radius), built once
   const ReferenceImage* reference = nullptr;   ///< set by startRows
-  std::unique_ptr<MetricAccumulator> metrics;
-  std::unique_ptr<SpectrumAccumulator> spectrum;
+  std::unique_ptr<RowMeasure> measure;         ///< against G and every target (then the area if not a target)
   ReconStats stats;
   double traceMs = 0, reconMs = 0;
   std::vector<double> cpuMs;  ///< per seed, in seed order: CPU ms of its trace + this row's reconstruction
   Image seed0;
-  const FlipReference* flipTarget = nullptr;  ///< what the flip column compares against (the study's target)
-  double flipSum = 0;                         ///< sum over the seeds of meanFlip(I_k, target), in seed order
+  std::vector<const FlipReference*> flipTargets;  ///< per target: what its flip column compares against
+  std::vector<double> flipSums;  ///< per target: sum over the seeds of meanFlip(I_k, T), in seed order
+  std::vector<CsvRow> rows;      ///< finishRow: the missing target rows, in target order
 };
 
 /// What an adaptive sampler actually spent in a group (mean over seeds of the mean spp, max over seeds),
@@ -50,22 +54,25 @@ struct GroupSpent {
 /// The (filter, radius) of the pixel-area reference (box, r = 0.5).
 inline const FilterSpec kAreaSpec{"box", 0.5};
 
-/// Resume: the rows of `groups` (one scene, named `stem` and rendered at `size`) still missing from the CSV `out`
-/// (all of them when there is none), one list per group; adds the (filter, radius) of each to `specs` (the
-/// references to render) and counts the rows present in `skipped`.
-std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const Target& target, const std::string& stem,
+/// Resume: the configurations of `groups` (one scene, named `stem` and rendered at `size`) with a target row still
+/// missing from the CSV `out` (all of them when there is none), one list per group; adds the (filter, radius) of
+/// each to `specs` (the references to render) and counts the rows already present in `skipped`.
+std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const std::vector<Target>& targets,
+                                              const std::string& stem,
                                               SceneSize size, const std::vector<const SampleSetGroup*>& groups,
                                               const CsvAppender* out, std::vector<FilterSpec>& specs, size_t& skipped);
 
-/// "Row finished": the row's metrics into its CSV row, its spectra into `spectrum`, and (images on) its images
-/// into `imageDir`; the row's accumulators and images are released.
-void finishRow(PendingRow& p, const std::filesystem::path& imageDir, bool images, const GroupSpent& spent, int seeds,
-               SpectrumMetrics& spectrum);
+/// "Configuration finished": its measures into its missing target rows (p.rows; `targets` the study's, whose
+/// measures come first in p.measure's result, `areaIndex` the pixel area's position there), its spectra into
+/// `spectrum`, and (images on) its images into `imageDir`; the accumulators and images are released.
+void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaIndex,
+               const std::filesystem::path& imageDir, bool images, const GroupSpent& spent, int seeds, SpectrumMetrics& spectrum);
 
-/// A finished group's rows, in row order: spectra first (a row in the study CSV always has its spectra; a repeat
-/// is dropped at the end), then the CSV rows, each file with one write (the CSV with one fsync). Touches only the
-/// files, `out` and `spectraWritten` (the spectrum CSVs to put in canonical order at the end).
-void writeRows(const StudyConfig& config, const std::vector<CsvRow>& rows, const std::vector<SpectrumMetrics>& spectra,
-               CsvAppender& out, std::set<std::string>& spectraWritten);
+/// A finished group's configurations, in order (`rows[i]` the target rows of configuration i, `spectra[i]` its
+/// spectra): spectra first (a row in the study CSV always has its spectra; a repeat is dropped at the end), then
+/// the CSV rows, each file with one write (the CSV with one fsync). Touches only the files, `out` and
+/// `spectraWritten` (the spectrum CSVs to put in canonical order at the end).
+void writeRows(const StudyConfig& config, const std::vector<std::vector<CsvRow>>& rows,
+               const std::vector<SpectrumMetrics>& spectra, CsvAppender& out, std::set<std::string>& spectraWritten);
 
 }  // namespace aliaslab

@@ -1,5 +1,6 @@
 #include "study/sweep_scene.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -40,16 +41,28 @@ ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene,
   return refs;
 }
 
-RowReferences::RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const FilterSpec& target)
-    : of_(byFilter(set, specs)), area_(*of_.at(kAreaSpec)), target_(*of_.at(target)), flip_(target_.image) {}
+RowReferences::RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs,
+                             const std::vector<Target>& targets)
+    : of_(byFilter(set, specs)) {
+  for (const Target& t : targets) {
+    if (t.spec == kAreaSpec) areaIndex_ = measured_.size();
+    measured_.push_back(of_.at(t.spec));
+    flip_.push_back(std::make_unique<FlipReference>(measured_.back()->image));
+  }
+  if (std::find(measured_.begin(), measured_.end(), &area()) == measured_.end()) {
+    areaIndex_ = measured_.size();
+    measured_.push_back(&area());
+  }
+}
 
 PhaseTime startRows(std::vector<PendingRow>& rows, const RowReferences& refs, int threads) {
   return timedParallelFor(int(rows.size()), threads, 1, [&](int i) {
     PendingRow& p = rows[i];
     p.reference = p.mode == ReconMode::Supersample ? &refs.area() : &refs.of(p.filter.spec);
-    p.metrics = std::make_unique<MetricAccumulator>(p.reference->image, refs.area().image, refs.target().image);
-    p.spectrum = std::make_unique<SpectrumAccumulator>(p.reference->image);
-    p.flipTarget = &refs.flipTarget();
+    p.measure = std::make_unique<RowMeasure>(*p.reference, refs.measured());
+    p.flipTargets.clear();
+    for (size_t j = 0; j < refs.targets(); ++j) p.flipTargets.push_back(&refs.flipTarget(j));
+    p.flipSums.assign(refs.targets(), 0.0);
   });
 }
 

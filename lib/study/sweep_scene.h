@@ -1,13 +1,15 @@
 // One scene of the sweep: the references its rows need, and each row's start.
 //
 // Protocol: for the rows planRows left to measure (study/sweep_rows.h), sceneReferences loads the references of
-// their (filter, radius), of the pixel area and of the target from the cache or renders the missing ones in one
+// their (filter, radius), of the pixel area and of every target from the cache or renders the missing ones in one
 // pass (study/reference.h), then writes the scene's reference manifest and, with images on, reference-area.png
-// (with refsOnly it stops after the cache). RowReferences is that set as the rows look it up, with the target
-// prepared once for the flip column (read-only, shared by every (seed, row) task). startRows gives each row of a
-// group its reference (the area for supersample rows) and its metric and spectrum accumulators, one task per row.
+// (with refsOnly it stops after the cache). RowReferences is that set as the rows look it up, with each target
+// prepared once for the flip column (read-only, shared by every (seed, row) task). startRows gives each
+// configuration of a group its reference (the area for supersample rows) and its RowMeasure against the
+// measured list (the targets in order, then the area when it is not a target), one task per configuration.
 #pragma once
 #include <map>
+#include <memory>
 #include <vector>
 
 #include "core/stopwatch.h"
@@ -25,24 +27,29 @@ ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene,
 
 class RowReferences {
  public:
-  /// `set` holds the references of `specs` (in that order, kAreaSpec and `target` among them) and outlives this.
-  RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const FilterSpec& target);
+  /// `set` holds the references of `specs` (in that order, kAreaSpec and every target among them) and outlives this.
+  RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const std::vector<Target>& targets);
   RowReferences(const RowReferences&) = delete;
   RowReferences& operator=(const RowReferences&) = delete;
 
   const ReferenceImage& of(const FilterSpec& spec) const { return *of_.at(spec); }
-  const ReferenceImage& area() const { return area_; }
-  const ReferenceImage& target() const { return target_; }
-  const FlipReference& flipTarget() const { return flip_; }
+  const ReferenceImage& area() const { return *of_.at(kAreaSpec); }
+  /// The targets in order, then the area when it is not one of them: what every RowMeasure measures against.
+  const std::vector<const ReferenceImage*>& measured() const { return measured_; }
+  /// The area's position in measured().
+  size_t areaIndex() const { return areaIndex_; }
+  /// Target j prepared for the flip column.
+  const FlipReference& flipTarget(size_t j) const { return *flip_[j]; }
+  size_t targets() const { return flip_.size(); }
 
  private:
   std::map<FilterSpec, const ReferenceImage*> of_;
-  const ReferenceImage& area_;
-  const ReferenceImage& target_;
-  const FlipReference flip_;
+  std::vector<const ReferenceImage*> measured_;
+  size_t areaIndex_ = 0;
+  std::vector<std::unique_ptr<FlipReference>> flip_;
 };
 
-/// Each row's reference and accumulators, one task per row on `threads` threads; returns the phase's time.
+/// Each configuration's reference and measures, one task per row on `threads` threads; returns the phase's time.
 PhaseTime startRows(std::vector<PendingRow>& rows, const RowReferences& refs, int threads);
 
 }  // namespace aliaslab

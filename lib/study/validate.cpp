@@ -81,7 +81,7 @@ StudyPlan validateStudy(const StudyConfig& c) {
     throw OptionError("size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("max-size", "must be >= 0");
   if (c.longSide < 0) throw OptionError("long-side", "must be >= 0");
-  plan.target = parseTarget(c.target);
+  plan.targets = parseTargets(c.targets);
   // A name or number listed twice would make every configuration of it twice (the CSV keeps one).
   auto once = [](const auto& list, const char* key) {
     for (size_t i = 0; i < list.size(); ++i)
@@ -115,13 +115,15 @@ StudyPlan validateStudy(const StudyConfig& c) {
                                       return x.mode == ReconMode::WeightedAverage;
                                     }));
   }
-  const double references = double(studyFilters(c).size() + 2) * (3 * sizeof(float) + 4 * sizeof(double));
+  // per reference: its mean and half-difference images and a pass's 4 sums (the filters, the area and the targets)
+  const double references =
+      double(studyFilters(c).size() + c.targets.size() + 1) * (6 * sizeof(float) + 4 * sizeof(double));
   for (const std::string& path : expandScenePaths(c.scenes)) {
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     refuseOutputOverInput("csv", csvPath(c), {path});
     const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
     // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
-    // the references (an image and a pass's 4 sums per (filter, radius), the area and the target).
+    // the references.
     const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
     const double pixels = double(size.width) * size.height;
     requireMemory(double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup, weightedRows,

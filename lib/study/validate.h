@@ -27,7 +27,7 @@ namespace aliaslab {
 
 /// A validated study: what validateStudy checked, ready to run.
 struct StudyPlan {
-  Target target;
+  std::vector<Target> targets;  ///< parsed once, in order (the first is the primary)
   std::vector<SampleSetGroup> groups;  ///< every group in canonical order (unsharded), filters built
   std::vector<std::string> notes;      ///< skipped combinations
   std::map<std::string, SceneSize> sceneSizes;  ///< per scene file: its size in this study (render line, overrides)
@@ -36,7 +36,7 @@ struct StudyPlan {
 /// Checks names, numbers, the reference options, scenes (existence, parse and
 /// size from the render line; no acceleration structure is built), memory and
 /// the output folders (created if missing, must be writable). Throws InputError.
-/// Returns the plan it checked (target parsed, groups expanded, filters built).
+/// Returns the plan it checked (targets parsed, groups expanded, filters built).
 StudyPlan validateStudy(const StudyConfig& config);
 
 /// Creates every (folder, key) that is missing and checks that it is writable; when one fails, the folders

@@ -87,7 +87,7 @@ void oneMore(benchmark::State& state, const std::string& path, const std::string
   Workload& w = workload(path);
   const auto filter = makeFilter(filterName, radius);
   const Image stand = reconstruct(w.samples, *filter, ReconMode::WeightedAverage, 1).image;  // any image will do
-  MetricAccumulator metrics(stand, stand);
+  MetricAccumulator metrics(RefEstimate{&stand}, {RefEstimate{&stand}});
   double total = 0;
   for (auto _ : state) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -118,7 +118,7 @@ void sweepPairs(benchmark::State& state, const std::string& path) {
       labels.push_back(label);
     }
   const Image stand = reconstruct(w.samples, *filters[0], ReconMode::WeightedAverage, 1).image;
-  std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(stand, stand));
+  std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(RefEstimate{&stand}, {RefEstimate{&stand}}));
   std::vector<double> pairSeconds(filters.size(), 0.0), seconds;
   // the work no filter owns; resolve and metrics of every pair; making and freeing the accumulator
   double sharedTotal = 0, resolveTotal = 0, sumsTotal = 0;

@@ -39,10 +39,12 @@ const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_test"); }
 
-// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each.
+// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each, one target
+// (several targets: sweep_targets_test.cpp).
 std::string tinyArgs(int threads = 2) {
   return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
-         "--radii 1 --seeds 4 --ref-spp 256 --threads " + std::to_string(threads) + " --quiet --no-images --cache " +
+         "--radii 1 --seeds 4 --ref-spp 256 --target area --threads " + std::to_string(threads) +
+         " --quiet --no-images --cache " +
          (workDir() / "cache").string();
 }
 
@@ -250,6 +252,7 @@ TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {
   c.spp = {4};
   c.seeds = 3;
   c.refSpp = 64;
+  c.targets = {"area"};
   c.threads = 2;
   c.images = false;
   c.progress = false;
@@ -325,7 +328,8 @@ TEST(SweepBadInput, RefusedBeforeAnyWorkWithTheMessageAndNoCsv) {
 
 // One target (docs/science.md, "One target, four terms"): the target column, the four terms adding up to
 // mse_target on every row, blur = 0 and mse_target = mse for the target's own filter, and blur equal to the
-// mean squared difference of the two cached references, computed here from the EXR files.
+// mean squared difference of the two cached references less the variance of their difference (mean (D_G - D_T)^2
+// of their half-differences), computed here from the EXR files.
 TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
   const fs::path out = workDir() / "target";
   ASSERT_EQ(run("--scenes " + kScene + " --size 24 24 --samplers jittered --spp 4 --filters box,gaussian --radii 1 "
@@ -341,7 +345,7 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
   const fs::path manifest = out / "references" / "zoneplate.json";
   std::ifstream in(manifest);
   ASSERT_TRUE(in) << manifest;
-  std::map<std::string, Image> refs;
+  std::map<std::string, Image> refs, diffs;
   for (std::string line; std::getline(in, line);) {
     const size_t f = line.find("\"filter\": \""), r = line.find("\"radius\": "), im = line.find("\"image\": \"");
     if (f == std::string::npos || im == std::string::npos) continue;
@@ -349,6 +353,8 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
     const std::string radius = line.substr(r + 10, line.find(',', r) - r - 10);
     const std::string image = line.substr(im + 10, line.find('"', im + 10) - im - 10);
     refs[name + ":" + radius] = readImage((manifest.parent_path() / image).string());
+    const std::string diff = image.substr(0, image.size() - 4) + ".diff.exr";  // <key>.exr beside <key>.diff.exr
+    diffs[name + ":" + radius] = readImage((manifest.parent_path() / diff).string());
   }
   ASSERT_TRUE(refs.count("gaussian:1") && refs.count("box:1") && refs.count("box:0.5"));
   const auto lines = readCsvLines((out / "study.csv").string());
@@ -362,7 +368,9 @@ TEST(SweepTarget, TermsAddUpAndBlurIsTheDistanceBetweenTheCachedReferences) {
     const double sum = std::stod(f[cNoise]) + std::stod(f[cAliasing]) + blur + cross;
     EXPECT_NEAR(sum, mseTarget, 1e-7 * mseTarget);  // the CSV prints 9 significant digits
     const std::string key = f[cFilter] + ":" + f[cRadius];
-    EXPECT_NEAR(blur, meanSquaredDifference(refs.at(key), refs.at("gaussian:1")), 1e-8 * blur + 1e-15);
+    const double expected = meanSquaredDifference(refs.at(key), refs.at("gaussian:1")) -
+                            meanSquaredDifference(diffs.at(key), diffs.at("gaussian:1"));
+    EXPECT_NEAR(blur, expected, 1e-7 * std::abs(blur) + 1e-15);
     if (key == "gaussian:1") {
       EXPECT_EQ(blur, 0.0);
       EXPECT_EQ(cross, 0.0);
@@ -380,12 +388,14 @@ TEST(SweepTarget, DefaultTargetIsThePixelAreaWrittenBox05EqualToMseAreaWithStand
     const auto f = splitCsvLine(l);
     EXPECT_EQ(f[column("target")], "box:0.5");
     EXPECT_EQ(f[column("mse_target")], f[column("mse_area")]) << l;
-    // 4 seeds: every standard error defined; the uniform grid is the same for every seed, so it has none
+    // 4 seeds: every standard error defined; the uniform grid is the same for every seed (deterministic), so
+    // its noise has none and its other standard errors are the references' part alone
     for (const char* se : {"mse_se", "noise_se", "aliasing_se", "mse_target_se"}) {
       const double v = std::stod(f[column(se)]);
-      if (f[column("sampler")] == "uniform") EXPECT_EQ(v, 0.0) << se << " " << l;
+      if (f[column("sampler")] == "uniform" && std::string(se) == "noise_se") EXPECT_EQ(v, 0.0) << se << " " << l;
       else EXPECT_GT(v, 0.0) << se << " " << l;
     }
+    EXPECT_EQ(f[column("deterministic")], f[column("sampler")] == "uniform" ? "1" : "0") << l;
   }
 }
 
@@ -455,6 +465,9 @@ TEST(StudyPlan, ValidationReadsSceneSizesFromTheRenderLine) {
   EXPECT_EQ(s.width, scene->width);
   EXPECT_EQ(s.height, scene->height);
   EXPECT_EQ(s.width, 48);
-  EXPECT_EQ(plan.target.label, "box:0.5");
+  ASSERT_EQ(plan.targets.size(), 3u);  // the default targets: area, the natural Gaussian, the band-limited Lanczos
+  EXPECT_EQ(plan.targets[0].label, "box:0.5");
+  EXPECT_EQ(plan.targets[1].label, "gaussian:1.5");
+  EXPECT_EQ(plan.targets[2].label, "lanczos:3");
   EXPECT_EQ(plan.groups.size(), expandStudy(c).size());
 }

@@ -43,6 +43,11 @@ double gaussian(uint64_t key) {
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * M_PI * u2);
 }
 
+// The metrics against G with the targets T (first) and A (second), all exact (no halves).
+Metrics metricsOf(const std::vector<Image>& images, const Image& g, const Image& a, const Image& t) {
+  return computeMetrics(images, RefEstimate{&g}, {RefEstimate{&t}, RefEstimate{&a}});
+}
+
 std::vector<Image> noisyImages(const Image& g, double sigma) {
   std::vector<Image> images;
   for (int k = 0; k < K; ++k) {
@@ -63,7 +68,7 @@ std::vector<Image> noisyImages(const Image& g, double sigma) {
 
 TEST(Metrics, AliasingRecoversMeanSquaredBiasAndNoiseRecoversVariance) {
   const Image g = referenceImage();
-  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  const Metrics m = metricsOf(noisyImages(g, kSigma), g, g, g);
   const double b2 = meanBiasSquared(), s2 = kSigma * kSigma;
   // Standard errors: var((m-G)^2) ~ 4 b^2 s2/K + 2 s2^2/K^2 per value; var(s^2) = 2 s2^2/(K-1).
   const double seAliasing = std::sqrt((4 * b2 * s2 / K + 2 * s2 * s2 / (K * K) + 2 * s2 * s2 / (K - 1) / (K * K)) / kN);
@@ -76,14 +81,14 @@ TEST(Metrics, AliasingRecoversMeanSquaredBiasAndNoiseRecoversVariance) {
 
 TEST(Metrics, MseIsAliasingPlusNoiseExactly) {
   const Image g = referenceImage();
-  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  const Metrics m = metricsOf(noisyImages(g, kSigma), g, g, g);
   EXPECT_NEAR(m.mse, m.aliasing + m.noise, 1e-12 * m.mse);
 }
 
 TEST(Metrics, ZeroNoiseGivesNoiseExactlyZeroAndAllErrorInAliasing) {
   const Image g = referenceImage();
   const std::vector<Image> images = noisyImages(g, 0.0);
-  const Metrics m = computeMetrics(images, g, g);
+  const Metrics m = metricsOf(images, g, g, g);
   // Independent computation in double of mean (I - G)^2 from the float images.
   double direct = 0;
   for (size_t i = 0; i < static_cast<size_t>(kN); ++i) {
@@ -101,25 +106,25 @@ TEST(Metrics, MseAreaMeasuresAgainstTheAreaReference) {
   const Image g = referenceImage();
   Image a = g;
   for (size_t i = 0; i < static_cast<size_t>(kN); ++i) a.data()[i] += 0.2f;  // A = G + 0.2
-  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, a);
+  const Metrics m = metricsOf(noisyImages(g, kSigma), g, a, a);
   // E[(b + e - 0.2)^2] = mean b^2 - 0.4 mean b + 0.04 + sigma^2.
   double meanB = 0;
   for (int y = 0; y < H; ++y)
     for (int x = 0; x < W; ++x)
       for (int c = 0; c < 3; ++c) meanB += bias(x, y, c) / kN;
   const double expected = meanBiasSquared() - 0.4 * meanB + 0.04 + kSigma * kSigma;
-  EXPECT_NEAR(m.mseArea, expected, 5 * kSigma * std::sqrt((0.3 * 0.3 * 4) / (K * kN)) + 1e-5);
+  EXPECT_NEAR(m.targets[1].mseTarget, expected, 5 * kSigma * std::sqrt((0.3 * 0.3 * 4) / (K * kN)) + 1e-5);
 }
 
 TEST(Metrics, PsnrIsTenLog10OfInverseMse) {
   const Image g = referenceImage();
-  const Metrics m = computeMetrics(noisyImages(g, kSigma), g, g);
+  const Metrics m = metricsOf(noisyImages(g, kSigma), g, g, g);
   EXPECT_NEAR(m.psnr, 10.0 * std::log10(1.0 / m.mse), 1e-12);
 }
 
 TEST(Metrics, NoiseMapAveragesToTheNoise) {
   const Image g = referenceImage();
-  MetricAccumulator acc(g, g);
+  MetricAccumulator acc(RefEstimate{&g}, {RefEstimate{&g}});
   for (const Image& im : noisyImages(g, kSigma)) acc.add(im);
   const Image map = acc.noiseMap();
   double mean = 0;
@@ -144,7 +149,7 @@ TEST(Metrics, HalvesErrorIsTheVarianceOfTheMeanOfTwoHalves) {
 
 TEST(Metrics, NeedsTwoImages) {
   const Image g = referenceImage();
-  MetricAccumulator acc(g, g);
+  MetricAccumulator acc(RefEstimate{&g}, {RefEstimate{&g}});
   acc.add(g);
   EXPECT_THROW(acc.result(), std::logic_error);
 }
@@ -167,7 +172,7 @@ TEST(Metrics, RunningUpdateMatchesTwoPassStatistics) {
         images[i].set(x, y, Color(value(q), value(q + 1), value(q + 2)));
       }
     }
-  const Metrics m = computeMetrics(images, g, a);
+  const Metrics m = metricsOf(images, g, a, a);
   const size_t n = static_cast<size_t>(w) * h * 3;
   double variance = 0, bias2 = 0, sse = 0, sseArea = 0;
   for (size_t c = 0; c < n; ++c) {
@@ -185,7 +190,7 @@ TEST(Metrics, RunningUpdateMatchesTwoPassStatistics) {
   EXPECT_NEAR(m.noise, noise, 1e-12 * noise);
   EXPECT_NEAR(m.aliasing, bias2 / n - noise / k, 1e-12 * (bias2 / n));
   EXPECT_NEAR(m.mse, sse / (n * k), 1e-12 * m.mse);
-  EXPECT_NEAR(m.mseArea, sseArea / (n * k), 1e-12 * m.mseArea);
+  EXPECT_NEAR(m.targets[1].mseTarget, sseArea / (n * k), 1e-12 * m.targets[1].mseTarget);
 }
 
 // ---- One target, four terms (docs/science.md, "One target, four terms") ----
@@ -241,7 +246,7 @@ double meanOver(F f) {
 TEST(Decomposition, EachTermIsRecoveredFromConstructedImages) {
   const Decomposed d = decomposedImages(kSigma);
   const Image area = d.target;  // A = T here; mse_area must then equal mse_target
-  const Metrics m = computeMetrics(d.images, d.reference, area, d.target);
+  const Metrics m = metricsOf(d.images, d.reference, area, d.target);
   const double s2 = kSigma * kSigma;
   const double c2 = meanOver([](int x, int y, int c) { return blurPattern(x, y, c) * blurPattern(x, y, c); });
   const double b2 = meanOver([](int x, int y, int c) { return structured(x, y, c) * structured(x, y, c); });
@@ -249,8 +254,8 @@ TEST(Decomposition, EachTermIsRecoveredFromConstructedImages) {
   ASSERT_GT(std::abs(bc), 1e-4);  // the construction has a real cross term
 
   // blur comes from the references alone: exact up to the float rounding of G = T + c.
-  EXPECT_NEAR(m.blur, c2, 1e-6 * c2 + 1e-9);
-  EXPECT_NEAR(m.blur, meanSquaredDifference(d.reference, d.target), 1e-12 * c2);
+  EXPECT_NEAR(m.targets[0].blur, c2, 1e-6 * c2 + 1e-9);
+  EXPECT_NEAR(m.targets[0].blur, meanSquaredDifference(d.reference, d.target), 1e-12 * c2);
   // The seed-dependent terms within five standard errors of their expectations (model below):
   // aliasing as in the test above; cross - 2 mean(b c) = 2 mean(e_bar c), sd 2 sigma sqrt(mean c^2 / (K N));
   // mse_target - E = mean over k of 2 mean(e_k (b + c)) + (mean e^2 - sigma^2).
@@ -261,17 +266,18 @@ TEST(Decomposition, EachTermIsRecoveredFromConstructedImages) {
   const double seTarget = std::sqrt((4 * s2 * bc2 + 2 * s2 * s2) / (K * kN));
   EXPECT_NEAR(m.aliasing, b2, 5 * seAliasing);
   EXPECT_NEAR(m.noise, s2, 5 * seNoise);
-  EXPECT_NEAR(m.cross, 2 * bc, 5 * seCross);
-  EXPECT_NEAR(m.mseTarget, bc2 + s2, 5 * seTarget);
-  EXPECT_NEAR(m.mseArea, m.mseTarget, 1e-12 * m.mseTarget);
+  EXPECT_NEAR(m.targets[0].cross, 2 * bc, 5 * seCross);
+  EXPECT_NEAR(m.targets[0].mseTarget, bc2 + s2, 5 * seTarget);
+  EXPECT_NEAR(m.targets[1].mseTarget, m.targets[0].mseTarget, 1e-12 * m.targets[0].mseTarget);
   // The four terms add up to mse_target (rounding only), and mse_target = mse + blur + cross.
-  EXPECT_NEAR(m.noise + m.aliasing + m.blur + m.cross, m.mseTarget, 1e-12 * m.mseTarget);
-  EXPECT_NEAR(m.mse + m.blur + m.cross, m.mseTarget, 1e-12 * m.mseTarget);
+  const TargetMetrics& t = m.targets[0];
+  EXPECT_NEAR(m.noise + m.aliasing + t.blur + t.cross, t.mseTarget, 1e-12 * t.mseTarget);
+  EXPECT_NEAR(m.mse + t.blur + t.cross, t.mseTarget, 1e-12 * t.mseTarget);
 }
 
 TEST(Decomposition, CrossIsTwiceTheMeanProductOfStructuredErrorAndBlurComputedIndependently) {
   const Decomposed d = decomposedImages(kSigma);
-  const Metrics m = computeMetrics(d.images, d.reference, d.target, d.target);
+  const Metrics m = metricsOf(d.images, d.reference, d.target, d.target);
   // Two-pass computation here: m per value, then 2 mean (m - G)(G - T), and mean over k of (I_k - T)^2.
   double cross = 0, target = 0;
   for (size_t i = 0; i < static_cast<size_t>(kN); ++i) {
@@ -281,16 +287,16 @@ TEST(Decomposition, CrossIsTwiceTheMeanProductOfStructuredErrorAndBlurComputedIn
     cross += 2 * (mean - g) * (g - t) / kN;
     for (const Image& im : d.images) target += (im.data()[i] - t) * (im.data()[i] - t) / (kN * K);
   }
-  EXPECT_NEAR(m.cross, cross, 1e-12 * std::abs(cross));
-  EXPECT_NEAR(m.mseTarget, target, 1e-12 * target);
+  EXPECT_NEAR(m.targets[0].cross, cross, 1e-12 * std::abs(cross));
+  EXPECT_NEAR(m.targets[0].mseTarget, target, 1e-12 * target);
 }
 
 TEST(Decomposition, TargetEqualToTheFilterReferenceLeavesNoBlurAndNoCross) {
   const Decomposed d = decomposedImages(kSigma);
-  const Metrics m = computeMetrics(d.images, d.reference, d.target, d.reference);
-  EXPECT_EQ(m.blur, 0.0);
-  EXPECT_EQ(m.cross, 0.0);
-  EXPECT_NEAR(m.mseTarget, m.mse, 1e-12 * m.mse);
+  const Metrics m = metricsOf(d.images, d.reference, d.target, d.reference);
+  EXPECT_EQ(m.targets[0].blur, 0.0);
+  EXPECT_EQ(m.targets[0].cross, 0.0);
+  EXPECT_NEAR(m.targets[0].mseTarget, m.mse, 1e-12 * m.mse);
 }
 
 // ---- Standard errors over seeds ----
@@ -342,9 +348,9 @@ std::vector<Spread> seedSpread(double structuredAmplitude, int k) {
         }
       images.push_back(std::move(im));
     }
-    const Metrics m = computeMetrics(images, g, g, t);
-    const double v[] = {m.mse, m.noise, m.aliasing, m.mseTarget};
-    const double e[] = {m.mseSe, m.noiseSe, m.aliasingSe, m.mseTargetSe};
+    const Metrics m = metricsOf(images, g, g, t);
+    const double v[] = {m.mse, m.noise, m.aliasing, m.targets[0].mseTarget};
+    const double e[] = {m.mseSe, m.noiseSe, m.aliasingSe, m.targets[0].mseTargetSe};
     for (int i = 0; i < 4; ++i) values[i].push_back(v[i]), se2[i] += e[i] * e[i] / reps;
   }
   std::vector<Spread> out;
@@ -377,12 +383,12 @@ TEST(StandardErrors, MatchTheSpreadOverRepetitionsWithStructuredError) { expectS
 TEST(StandardErrors, NoiseAndAliasingNeedFourSeeds) {
   const Image g = referenceImage();
   const auto images = noisyImages(g, kSigma);
-  const Metrics two = computeMetrics({images[0], images[1], images[2]}, g, g);
+  const Metrics two = metricsOf({images[0], images[1], images[2]}, g, g, g);
   EXPECT_TRUE(std::isnan(two.noiseSe));
   EXPECT_TRUE(std::isnan(two.aliasingSe));
   EXPECT_GT(two.mseSe, 0.0);  // a mean: sd over 3 seeds / sqrt(3)
   // For the means the jackknife is the classic sd / sqrt(K): check against the per-seed mse values.
-  const Metrics all = computeMetrics(images, g, g);
+  const Metrics all = metricsOf(images, g, g, g);
   double mean = 0, ss = 0;
   std::vector<double> perSeed;
   for (const Image& im : images) perSeed.push_back(meanSquaredDifference(im, g)), mean += perSeed.back() / K;

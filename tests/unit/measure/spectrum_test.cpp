@@ -3,6 +3,7 @@
 // the accumulator's totals equal the independently computed mse and noise.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -72,7 +73,8 @@ TEST(Spectrum, WhiteNoiseIsFlat) {
     EXPECT_NEAR(r.power(b) / expected, 1.0, tol) << "bin " << b;
   }
   // and the low-frequency share is the disc's share of the frequency square, pi / 64
-  SpectrumAccumulator acc(Image(w, h));
+  const Image zero(w, h);
+  SpectrumAccumulator acc(RefEstimate{&zero}, {});
   acc.add(im);
   acc.add(whiteNoise(w, h, 6));
   EXPECT_NEAR(acc.result().lowfreqError, kTau / 2 * 0.125 * 0.125, 0.006);
@@ -105,10 +107,10 @@ TEST(Spectrum, AccumulatorTotalsAreMseAndNoise) {
       for (int x = 0; x < w; ++x) im.set(x, y, im.get(x, y) + g.get(x, y) + bias.get(x, y));
     images.push_back(std::move(im));
   }
-  SpectrumAccumulator acc(g);
+  SpectrumAccumulator acc(RefEstimate{&g}, {});
   for (const Image& im : images) acc.add(im);
   const SpectrumMetrics s = acc.result();
-  const Metrics m = computeMetrics(images, g, g);
+  const Metrics m = computeMetrics(images, RefEstimate{&g}, {});
   EXPECT_NEAR(s.error.total(), m.mse, 1e-9 * m.mse);
   EXPECT_NEAR(s.noise.total(), m.noise, 1e-9 * m.noise);
   EXPECT_EQ(s.images, k);
@@ -124,7 +126,7 @@ TEST(Spectrum, LowFrequencyShareAndBlurOfSinusoids) {
   const int w = 64, h = 64;
   const Image g(w, h, Color(0.5f, 0.5f, 0.5f));
   for (const auto& [f, low] : std::vector<std::pair<double, double>>{{4.0 / 64, 1.0}, {20.0 / 64, 0.0}}) {
-    SpectrumAccumulator acc(g);
+    SpectrumAccumulator acc(RefEstimate{&g}, {});
     for (int i = 0; i < 3; ++i) acc.add(sinusoid(w, h, f, 0, 0.1 * (i + 1), i, &g));
     const SpectrumMetrics s = acc.result();
     EXPECT_NEAR(s.lowfreqError, low, 1e-12);  // float images: leakage ~1e-14
@@ -132,19 +134,83 @@ TEST(Spectrum, LowFrequencyShareAndBlurOfSinusoids) {
     const double mse = (0.01 + 0.04 + 0.09) / 3 / 2;
     EXPECT_NEAR(s.blurredMse, mse * std::exp(-2 * kTau * kTau / 2 * kBlurSigma * kBlurSigma * f * f), 1e-6 * mse);
   }
-  SpectrumAccumulator dc(g);
+  SpectrumAccumulator dc(RefEstimate{&g}, {});
   dc.add(Image(w, h, Color(0.6f, 0.6f, 0.6f)));
   dc.add(Image(w, h, Color(0.3f, 0.3f, 0.3f)));
   const SpectrumMetrics s = dc.result();
   EXPECT_NEAR(s.blurredMse, (0.01 + 0.04) / 2, 1e-7);
   EXPECT_NEAR(s.lowfreqError, 1.0, 1e-12);
   // half the energy below the cutoff, half above: 0.5
-  SpectrumAccumulator mix(g);
+  SpectrumAccumulator mix(RefEstimate{&g}, {});
   for (int i = 0; i < 2; ++i) {
     const Image lowPart = sinusoid(w, h, 0, 3.0 / 64, 0.1, i, &g);
     mix.add(sinusoid(w, h, 25.0 / 64, 0, 0.1, 0.3 * i, &lowPart));
   }
   EXPECT_NEAR(mix.result().lowfreqError, 0.5, 1e-9);
+}
+
+// The measures against a target T (by linearity, from the spectra of I_k - G) against a direct power spectrum of
+// I_k - T here, with the target's half-difference D_T subtracted: blurred_mse = mean_k B[I_k - T] - B[D_T],
+// lowfreq share f_k = (L[I_k - T] - L[D_T]) / (E[I_k - T] - E[D_T]) (L below the cutoff, E in total, B blurred).
+struct Energy {
+  double low = 0, total = 0, blurred = 0;
+};
+Energy directEnergy(const Image& im) {
+  const auto p = powerSpectrum(im);
+  Energy e;
+  for (int v = 0; v < im.height(); ++v)
+    for (int u = 0; u < im.width(); ++u) {
+      const double rho = frequencyRadius(u, v, im.width(), im.height()), q = p[size_t(v) * im.width() + u];
+      e.total += q, e.low += rho < kLowFrequencyCutoff ? q : 0.0;
+      e.blurred += q * std::exp(-kTau * kTau * kBlurSigma * kBlurSigma * rho * rho);
+    }
+  return e;
+}
+
+Image difference(const Image& a, const Image& b) {
+  Image d(a.width(), a.height());
+  for (size_t i = 0; i < 3 * size_t(a.width()) * a.height(); ++i)
+    d.data()[i] = static_cast<float>(double(a.data()[i]) - b.data()[i]);
+  return d;
+}
+
+TEST(Spectrum, TargetMeasuresEqualADirectSpectrumOfTheErrorAgainstTheTarget) {
+  const int w = 40, h = 36, k = 4;
+  const Image g = whiteNoise(w, h, 20, 0.5);
+  const Image t = sinusoid(w, h, 2.0 / w, 3.0 / h, 0.05, 0.2, &g);  // T = G + a low-frequency difference
+  const Image gHalf = whiteNoise(w, h, 21, 0.03), tHalf = whiteNoise(w, h, 22, 0.03);
+  std::vector<Image> images;
+  for (int i = 0; i < k; ++i) {
+    Image im = whiteNoise(w, h, 200 + i, 0.2);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) im.set(x, y, im.get(x, y) + g.get(x, y));
+    images.push_back(std::move(im));
+  }
+  SpectrumAccumulator acc(RefEstimate{&g, &gHalf}, {RefEstimate{&t, &tHalf}, RefEstimate{&t}});
+  for (const Image& im : images) acc.add(im);
+  const SpectrumMetrics s = acc.result();
+  ASSERT_EQ(s.targets.size(), 2u);
+  const Energy dt = directEnergy(tHalf), dg = directEnergy(gHalf);
+  auto check = [&](const SpectrumTargetMetrics& m, const Image& ref, const Energy& half, const char* what) {
+    SCOPED_TRACE(what);
+    std::vector<double> f;
+    double blurred = 0, mean = 0, var = 0;
+    for (const Image& im : images) {
+      const Energy e = directEnergy(difference(im, ref));
+      f.push_back(std::clamp((e.low - half.low) / (e.total - half.total), 0.0, 1.0));
+      blurred += e.blurred / k;
+    }
+    for (double v : f) mean += v / k;
+    for (double v : f) var += (v - mean) * (v - mean) / (k - 1);
+    EXPECT_NEAR(m.blurredMse, blurred - half.blurred, 1e-6 * blurred);
+    EXPECT_NEAR(m.lowfreqError, mean, 1e-6 * mean);
+    EXPECT_NEAR(m.lowfreqErrorSe, std::sqrt(var / k), 1e-5 * std::sqrt(var / k));
+  };
+  check(s.targets[0], t, dt, "target with halves");
+  check(s.targets[1], t, Energy{}, "exact target");
+  check({s.lowfreqError, s.lowfreqErrorSe, s.blurredMse}, g, dg, "own reference with halves");
+  EXPECT_GT(dt.blurred, 1e-3 * s.targets[0].blurredMse);  // the subtraction is not negligible here
+  EXPECT_NEAR(s.reference.total(), dg.total, 1e-12 * dg.total);
 }
 
 // A spectrum CSV's data lines after canonicaliseSpectrumCsv, its header checked.
@@ -162,7 +228,8 @@ std::vector<std::string> canonicalLines(const std::string& path) {
 TEST(Spectrum, CsvAppendsAndCanonicalises) {
   const std::string path = (std::filesystem::temp_directory_path() / "aliaslab_spectrum_test.csv").string();
   std::filesystem::remove(path);
-  SpectrumAccumulator acc(Image(16, 16));
+  const Image zero(16, 16);
+  SpectrumAccumulator acc(RefEstimate{&zero}, {});
   acc.add(whiteNoise(16, 16, 1));
   acc.add(whiteNoise(16, 16, 2));
   const SpectrumMetrics m = acc.result();

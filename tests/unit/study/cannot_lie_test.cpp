@@ -47,6 +47,7 @@ const fs::path& sweepDir() {
     c.radii = {0.5, 2.0};
     c.seeds = kSeeds;
     c.refSpp = 64;
+    c.targets = {"area"};
     c.maxSize = kMaxSize;
     c.out = (d / "out").string();
     c.cache = (d / "cache").string();
