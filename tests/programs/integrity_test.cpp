@@ -50,7 +50,7 @@ aliaslab::testing::ProcessResult sweep(const fs::path& dir, std::vector<std::str
   std::vector<std::string> argv{kSweep};
   if (tiny)
     for (const char* a : {"--samplers", "random", "--spp", "4", "--filters", "box", "--radii", "1", "--ref-spp", "32",
-                          "--size", "8", "8", "--cache", "cache", "--quiet", "--no-images", "--threads", "1"})
+                          "--size", "8", "8", "--cache", "cache", "--quiet", "--no-images", "--threads", "1", "--target", "area"})
       argv.push_back(a);
   argv.insert(argv.end(), extra.begin(), extra.end());
   return runProcess(argv, dir.string(), (dir / "logs").string());

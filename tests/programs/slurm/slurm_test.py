@@ -55,7 +55,7 @@ def expect(cond, msg):
 def study(src, cache):
     return ["--scenes", f"{src}/scenes/fence.txt", "--size", "96", "96", "--samplers", "uniform,jittered,sobol",
             "--spp", "4,16,128", "--filters", "box,tent", "--radii", "1", "--seeds", "4", "--ref-spp", "256",
-            "--threads", "1", "--no-images", "--quiet", "--cache", cache]
+            "--threads", "1", "--no-images", "--quiet", "--cache", cache, "--target", "area"]
 
 
 def csv_differences(a, b):

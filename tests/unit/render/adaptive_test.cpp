@@ -439,6 +439,7 @@ TEST(AdaptiveStudy, SweepRowsCarryTheSamplesSpent) {
   c.radii = {1.0};
   c.reconstruction = {"weighted", "classic", "importance"};
   c.seeds = 2, c.refSpp = 64, c.threads = 2, c.images = true, c.progress = false;
+  c.targets = {"area"};  // one row per configuration
   c.cache = (dir / "cache").string(), c.out = (dir / "study").string();
   const SweepSummary sum = runSweep(c);
   EXPECT_EQ(sum.sampleSetsTraced, 4u);  // 2 samplers x 2 seeds
