@@ -78,3 +78,18 @@ def equal_time(ranked, z=ties.Z):
                 continue
             parts.append(ties.top_group(cand, z).assign(budget_spp=spp, budget_ms=b))
     return pd.concat(parts) if parts else ranked.iloc[0:0]
+
+
+def summary_points(ranked, summary, target, method):
+    """One point per (method, spp) against `target`: the across-scene record (rankings.across_scenes) with
+    `cost` = the mean cost over its scenes, `cost_se` = the se of that mean (NaN when unknown) and `front`
+    (summary_front_mask)."""
+    r = ranked[ranked["target"].astype(str) == target]
+    key = ["spp"] + method
+    agg = r.groupby(key, dropna=False).agg(cost=("cost", "mean"), n=("cost", "size"),
+                                          var=("cost_se", lambda x: float(np.sum(np.asarray(x, float) ** 2))))
+    agg["cost_se"] = np.sqrt(agg["var"]) / agg["n"]
+    pts = summary[summary["target"].astype(str) == target].merge(agg.reset_index()[key + ["cost", "cost_se"]],
+                                                                 on=key, how="left")
+    pts["front"] = summary_front_mask(pts) if len(pts) else []
+    return pts
