@@ -96,8 +96,13 @@ class AcrossScenes(unittest.TestCase):
 
     def test_counts_and_medians_are_over_the_true_number_of_scenes(self):
         ranked = rankings.cells(self.study())
-        self.assertNotIn("grid", set(ranked["sampler"]))  # deterministic: shown, not ranked
+        grid = ranked[ranked["sampler"] == "grid"]  # deterministic: kept with its ratio, never in a top group
+        self.assertEqual(len(grid), 10)
+        self.assertFalse(grid["top"].any())
+        self.assertTrue((grid["ratio"] == 0.5).all())
+        self.assertTrue(ranked[ranked["sampler"] == "good"]["best"].all())
         table = rankings.across_scenes(ranked).set_index("sampler")
+        self.assertEqual(table.loc["grid", "in_top"], 0)
         self.assertEqual(table.loc["good", "in_top"], 10)
         self.assertEqual(table.loc["close", "in_top"], 9)  # 0.01 apart with se 0.014: tied; 0.5 apart: not
         self.assertEqual(table.loc["bad", "scenes"], 10)  # flagged in 2 scenes, still counted
@@ -105,6 +110,8 @@ class AcrossScenes(unittest.TestCase):
         self.assertAlmostEqual(table.loc["close", "median_ratio"], 1.01)
         answer = rankings.answer(rankings.across_scenes(ranked), 10)[("box:0.5", 16)]
         self.assertEqual(list(answer["sampler"]), ["good", "close"])
+        eq = fronts.equal_time(ranked)
+        self.assertNotIn("grid", set(eq["sampler"]))
 
     def test_the_bootstrap_is_seeded_and_brackets_the_median(self):
         v = np.array([1.0, 1.1, 1.3, 1.05, 2.0, 1.2, 1.01, 1.4])
@@ -122,6 +129,12 @@ class Fronts(unittest.TestCase):
                      row("c", 2.0, 0.1, cost=5.0, cost_se=0.5),    # a is significantly slower than c
                      row("d", 1.1, 0.1, cost=12.0, cost_se=0.5))   # tied with a in error: stays
         self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, True])
+
+    def test_an_undetermined_row_is_not_a_front_point_a_nearly_exact_one_is(self):
+        rows = frame(row("a", 1.0, 0.1, cost=10.0), row("huge", 500.0, 400.0, cost=9.0, flagged=1),
+                     row("exact", 0.001, 0.001, cost=12.0, flagged=1), row("slow", 0.5, 0.1, cost=20.0))
+        # "huge" is the fastest, yet undetermined: off the front; "exact" is below every upper bound: on it
+        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, False])
 
     def test_without_spreads_it_is_the_usual_pareto_front(self):
         rows = frame(row("a", 1.0, 0.0, cost=10.0), row("b", 2.0, 0.0, cost=10.5), row("c", 2.0, 0.0, cost=5.0))

@@ -1,13 +1,16 @@
-"""speed_accuracy_<scene>: error against the target vs time per image, log-log, with the numbered Pareto
-front (colour = sampler, marker = filter, pre-filtered rows ringed, flagged rows hollow and off the front);
-writes pareto.csv, the front of every scene."""
+"""speed_accuracy_<scene>: error against the target vs time per image (cost: cpu_ms, else wall time), log-log,
+with the numbered front with ties (stats/fronts.front_mask: a point leaves it only when another is
+significantly better and not significantly slower); colour = sampler, marker = filter, pre-filtered rows
+ringed, flagged rows hollow and kept (on the front when nothing beats them), the fixed grid (deterministic,
+not ranked) as crosses; writes pareto.csv, the front of every scene."""
 import os
 
 import numpy as np
 import pandas as pd
 
-from .. import figures, fits
+from .. import figures
 from ..figures import plt
+from ..stats import fronts as tie_fronts
 from .axes import (ERROR_LABEL, MARKERS, METHOD, clip_outliers, empty_panel, has_target, method_label,
                    number_points, plain_log_x, usable, yerr_log)
 
@@ -23,7 +26,7 @@ def speed_accuracy(df, out_dir):
     fronts = []
     for scene, all_rows in df.groupby("scene", sort=True):
         sd = usable(all_rows)
-        sd = sd[np.isfinite(sd["time_ms"]) & (sd["time_ms"] > 0)].reset_index(drop=True)
+        sd = sd[np.isfinite(sd["cost"]) & (sd["cost"] > 0)].reset_index(drop=True)
         left_out = len(all_rows) - len(sd)
         fig, ax = plt.subplots(figsize=(11, 6.5))
         title = f"Error against the target vs time: {scene}"
@@ -36,38 +39,45 @@ def speed_accuracy(df, out_dir):
             continue
         err = yerr_log(sd["error"], sd["error_se"])
         if err is not None:
-            ax.errorbar(sd["time_ms"], sd["error"], yerr=err, fmt="none", ecolor="#bbb", lw=0.7, zorder=1)
-        for (sampler, filt, hollow, pre), g in sd.groupby(["sampler", "filter_name", "flagged", "prefilter"]):
-            ax.scatter(g["time_ms"], g["error"], marker=markers[filt], s=60 if pre != "none" else 36,
+            ax.errorbar(sd["cost"], sd["error"], yerr=err, fmt="none", ecolor="#bbb", lw=0.7, zorder=1)
+        det = sd["deterministic"].to_numpy(dtype=bool)
+        for (sampler, filt, hollow, pre), g in sd[~det].groupby(["sampler", "filter_name", "flagged", "prefilter"]):
+            ax.scatter(g["cost"], g["error"], marker=markers[filt], s=60 if pre != "none" else 36,
                        facecolors="none" if hollow == 1 else colours[sampler],
                        edgecolors="black" if pre != "none" else colours[sampler],
                        linewidths=1.6 if pre != "none" else 1.0, alpha=0.85, zorder=2)
-        ok = sd[sd["flagged"] == 0].reset_index(drop=True)
+        if det.any():
+            g = sd[det]
+            ax.scatter(g["cost"], g["error"], marker="x", s=30, color=[colours[x] for x in g["sampler"]], zorder=2)
+        ok = sd[~det].reset_index(drop=True)
         lines = []
         if len(ok):
-            front = ok.iloc[fits.pareto_front(ok["time_ms"], ok["error"])]
-            ax.plot(front["time_ms"], front["error"], "k--", lw=1, zorder=3)
+            front = ok[tie_fronts.front_mask(ok)].sort_values(["cost", "error"])
+            ax.plot(front["cost"], front["error"], "k--", lw=1, zorder=3)
             for k, (_, r) in enumerate(front.iterrows(), 1):
                 lines.append(f"{k}. {method_label(r, show_recon)}, {int(r['spp'])} spp: "
-                             f"{r['error']:.2e}, {r['time_ms']:.3g} ms")
+                             f"{r['error']:.2e}, {r['cost']:.3g} ms" + (" (flagged)" if r["flagged"] == 1 else ""))
             fronts.append(front.assign(scene=scene))
         ax.set_xscale("log")
         ax.set_yscale("log")
         plain_log_x(ax)
         ymin = float(sd["error"].min())
         ax.set_ylim(bottom=ymin / 1.6)
-        clipped = clip_outliers(ax, sd["time_ms"], sd["error"])
+        clipped = clip_outliers(ax, sd["cost"], sd["error"])
         if len(ok):
-            number_points(ax, list(front["time_ms"]), list(front["error"]))
+            number_points(ax, list(front["cost"]), list(front["error"]))
         if clipped:
             ax.set_title(title + ("\n" if "\n" not in title else "; ") + clipped, fontsize=10)
-        ax.set_xlabel("time per image (ms) = trace + reconstruction")
+        ax.set_xlabel("thread CPU time per image (ms, cpu_ms)" if "cpu_ms" in df.columns else
+                      "time per image (ms) = trace + reconstruction (wall)")
         ax.set_ylabel(ERROR_LABEL[has_target(df)])
         ax.grid(True, which="major", alpha=0.3)
         handles = [plt.Line2D([], [], ls="", marker="o", color=colours[s], label=s) for s in samplers]
         handles += [plt.Line2D([], [], ls="", marker=markers[f], color="grey", label=f) for f in filters]
-        handles += [plt.Line2D([], [], ls="--", color="k", label="Pareto front (numbered)"),
-                    plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (reference)")]
+        handles += [plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"),
+                    plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (kept)")]
+        if det.any():
+            handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="fixed grid (deterministic)"))
         if prefiltered:
             handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.6,
                                       label="pre-filtered"))
@@ -78,10 +88,10 @@ def speed_accuracy(df, out_dir):
         ax.add_artist(leg)
         if lines:
             shown = lines[:25] + ([f"... {len(lines) - 25} more in pareto.csv"] if len(lines) > 25 else [])
-            ax.text(1.01, 0.0, "Pareto front (fastest for its error):\n" + "\n".join(shown),
+            ax.text(1.01, 0.0, "Front with ties:\n" + "\n".join(shown),
                     transform=ax.transAxes, fontsize=7, va="bottom", ha="left", family="monospace")
         figures.save_figure(fig, out_dir, f"speed_accuracy_{figures.slug(scene)}")
-    cols = ["scene"] + METHOD + ["spp", "time_ms", "error", "error_se"]
+    cols = ["scene"] + METHOD + ["spp", "time_ms", "cost", "cost_se", "error", "error_se", "flagged"]
     table = pd.concat(fronts)[cols] if fronts else pd.DataFrame(columns=cols)
     table.to_csv(os.path.join(out_dir, "pareto.csv"), index=False)
     return table

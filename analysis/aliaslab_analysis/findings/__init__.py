@@ -20,9 +20,9 @@ from . import answer, grid, study, terms, time
 from .study import Finding, Study
 
 
-def compute(df, notes):
-    """Every finding of the study, in the order the page shows them."""
-    s = Study(df, notes)
+def compute(df, notes, s=None):
+    """Every finding of the study, in the order the page shows them (s: a Study of df, made when None)."""
+    s = s or Study(df, notes)
     out = [study.describe(s)]
     out += answer.findings(s)
     out += time.findings(s)

@@ -7,7 +7,10 @@ Cost. `cost` = cpu_ms (thread CPU time of the configuration's own work, mean ove
 Front (front_mask). A row is on the front unless another row is significantly better in error and not
 significantly slower:  e_i - e_j > Z se(e_i - e_j)  (ties.diff_se_matrix: paired within a sample set)
 and  c_j - c_i <= Z sqrt(cse_i^2 + cse_j^2)  (an unknown cse counts as 0). With no spread at all this is
-the usual Pareto front; spreads only keep more points on it (a point is dropped only on evidence).
+the usual Pareto front; spreads only keep more points on it (a point is dropped only on evidence). A row
+whose error is not told from zero (ties.measured false) is on it only when its upper bound (e + Z se) is
+below every measured row's, as in the top groups: a huge error with a huger spread is undetermined, not a
+front point, while a nearly exact row stays.
 
 Equal time (equal_time). For a budget B (per spp level: the median cost of the scene's rows at that spp),
 the candidates are the rows not significantly dearer than B (c - B <= Z cse) at any spp, and their top
@@ -17,6 +20,10 @@ import numpy as np
 import pandas as pd
 
 from . import ties
+
+
+def rankings_deterministic(rows):
+    return rows["deterministic"].to_numpy(dtype=bool) if "deterministic" in rows.columns else np.zeros(len(rows), bool)
 
 
 def _spread(x):
@@ -33,14 +40,18 @@ def front_mask(rows, z=ties.Z):
     se = np.where(np.isfinite(se), se, 0.0)
     better = (err[:, None] - err[None, :]) > z * se                      # [i, j]: j significantly better than i
     not_slower = (cost[None, :] - cost[:, None]) <= z * np.sqrt(cse[:, None] ** 2 + cse[None, :] ** 2)
-    dominated = (better & not_slower).any(axis=1)
+    own = rows["error_se"].to_numpy(dtype=float)
+    meas = ties.measured(err, own, z)
+    upper = err + z * np.where(np.isfinite(own), own, 0.0)
+    bound = ~meas[:, None] & meas[None, :] & (upper[None, :] < upper[:, None])
+    dominated = (better & not_slower).any(axis=1) | bound.any(axis=1)
     return np.isfinite(err) & np.isfinite(cost) & ~dominated
 
 
 def fronts(ranked, z=ties.Z):
     """The front rows of every (target, scene), sorted by cost, with `front_rank` 1, 2, ..."""
     parts = []
-    for _, g in ranked.groupby(["target", "scene"], sort=True):
+    for _, g in ranked[~rankings_deterministic(ranked)].groupby(["target", "scene"], sort=True):
         f = g[front_mask(g, z)].sort_values(["cost", "error"])
         parts.append(f.assign(front_rank=np.arange(1, len(f) + 1)))
     return pd.concat(parts) if parts else ranked.iloc[0:0].assign(front_rank=0)
@@ -57,6 +68,8 @@ def summary_front_mask(points, z=ties.Z):
     better = hi[None, :] < lo[:, None]
     not_slower = (cost[None, :] - cost[:, None]) <= z * np.sqrt(cse[:, None] ** 2 + cse[None, :] ** 2)
     ok = np.isfinite(points["median_ratio"].to_numpy(dtype=float)) & np.isfinite(cost)
+    if "deterministic" in points.columns:
+        ok &= ~points["deterministic"].to_numpy(dtype=bool)
     return ok & ~(better & not_slower & ok[None, :]).any(axis=1)
 
 
@@ -70,7 +83,7 @@ def equal_time(ranked, z=ties.Z):
     """Per (target, scene, budget spp level): the candidates within the budget with the columns of
     ties.top_group; `budget_spp` and `budget_ms` name the budget."""
     parts = []
-    for (target, scene), g in ranked.groupby(["target", "scene"], sort=True):
+    for (target, scene), g in ranked[~rankings_deterministic(ranked)].groupby(["target", "scene"], sort=True):
         cse = _spread(g["cost_se"])
         for spp, b in budgets(g).items():
             cand = g[(g["cost"].to_numpy(dtype=float) - b) <= z * cse]

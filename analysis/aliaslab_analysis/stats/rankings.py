@@ -3,7 +3,8 @@ scenes.
 
 cells(df) applies ties.top_group to every cell of the rows that can be ranked: a finite error and not
 deterministic (the fixed grid has no standard error: its error is one alignment's luck; the shifted grid
-`uniform-shifted` ranks in its place). Flagged rows (error not told from zero given the references' and
+`uniform-shifted` ranks in its place). Deterministic rows come back too, with their ratio, never in a top
+group (`top` False), so that charts can show them as such. Flagged rows (error not told from zero given the references' and
 the seeds' error) stay in: they are among the most accurate, and dropping them would bias every count.
 Each row's `ratio` = error / the cell's reference error, the lowest error of a measured, unflagged row
 (ties.py: error told from zero; a smaller error is too uncertain to divide by); NaN when the cell has none.
@@ -32,17 +33,28 @@ def rankable(df):
     return df[np.isfinite(err) & ~det]
 
 
+def deterministic(df):
+    return df["deterministic"].to_numpy(dtype=bool) if "deterministic" in df.columns else np.zeros(len(df), bool)
+
+
 def cells(df, z=ties.Z):
-    """Every rankable row with the columns of ties.top_group and `ratio` (module doc)."""
+    """Every row with a finite error, with the columns of ties.top_group and `ratio` (module doc)."""
     ok = rankable(df)
+    fixed = df[np.isfinite(df["error"].to_numpy(dtype=float)) & deterministic(df)]
+    fixed_cells = dict(iter(fixed.groupby(CELL, sort=True))) if len(fixed) else {}
     parts = []
-    for _, cell in ok.groupby(CELL, sort=True):
+    for key, cell in ok.groupby(CELL, sort=True):
         g = ties.top_group(cell, z)
         err = g["error"].to_numpy(dtype=float)
         ref = err[(g["flagged"].to_numpy() == 0) & g["measured"].to_numpy() & (err > 0)]
         base = ref.min() if len(ref) else np.nan
         g["ratio"] = err / base
         parts.append(g)
+        if key in fixed_cells:
+            f = fixed_cells[key]
+            parts.append(f.assign(best=False, gap=f["error"] - err[g["best"].to_numpy()][0], gap_se=np.nan,
+                                  gap_z=np.nan, paired=False, top=False, undetermined=False, measured=True,
+                                  ratio=f["error"] / base))
     if not parts:
         return ok.assign(best=False, gap=np.nan, gap_se=np.nan, gap_z=np.nan, paired=False, top=False,
                          measured=False, undetermined=False, ratio=np.nan)
@@ -57,9 +69,10 @@ def across_scenes(ranked, seed=bootstrap.SEED, n_boot=bootstrap.N_BOOT):
         fin = np.isfinite(r)
         lo, hi = bootstrap.interval(r[fin], seed, n_boot)
         out.append(dict(zip(["target", "spp"] + METHOD, key), scenes=int(fin.sum()), in_top=int(g["top"].sum()),
+                        deterministic=bool(deterministic(g).any()),
                         flagged=int((g["flagged"] == 1).sum()), undetermined=int(g["undetermined"].sum()),
                         median_ratio=float(np.median(r[fin])) if fin.any() else np.nan, ci_low=lo, ci_high=hi))
-    cols = ["target", "spp"] + METHOD + ["scenes", "in_top", "flagged", "undetermined", "median_ratio", "ci_low",
+    cols = ["target", "spp"] + METHOD + ["deterministic", "scenes", "in_top", "flagged", "undetermined", "median_ratio", "ci_low",
                                          "ci_high"]
     table = pd.DataFrame(out, columns=cols)
     return table.sort_values(["target", "spp", "in_top", "median_ratio"], ascending=[True, True, False, True],
@@ -69,7 +82,7 @@ def across_scenes(ranked, seed=bootstrap.SEED, n_boot=bootstrap.N_BOOT):
 def answer(summary, scenes_in_study):
     """Per (target, spp): the methods of the answer (module doc), as a dict {(target, spp): DataFrame}."""
     out = {}
-    for (target, spp), g in summary.groupby(["target", "spp"], sort=True):
+    for (target, spp), g in summary[~summary["deterministic"].astype(bool)].groupby(["target", "spp"], sort=True):
         need = (scenes_in_study + 1) // 2
         pick = g[g["in_top"] >= need]
         if pick.empty:
