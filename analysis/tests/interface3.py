@@ -36,6 +36,8 @@ def seed_values(rng, mean, se, k, shared):
 def convert(src, dst, seed=29):
     df = pd.read_csv(src, keep_default_na=False, na_values=["nan", "-nan"])
     rng = np.random.default_rng(seed)
+    if "prefilter" not in df.columns:
+        df["prefilter"] = "none"
     shifted = df[df["sampler"] == "uniform"].copy()
     shifted["sampler"] = "uniform-shifted"
     shifted["noise"] = shifted["mse"] * 0.4

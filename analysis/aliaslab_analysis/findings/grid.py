@@ -15,7 +15,7 @@ def grid(s):
         return None
     samplers = ", ".join(f"`{x}`" for x in sorted(det["sampler"].unique()))
     text = (f"The fixed grid ({samplers}) gives the same image for every seed: its error is shown as "
-            "*deterministic* (no standard error), one alignment of the grid with the scene, lucky or not; it is "
+            "`deterministic` (no standard error), one alignment of the grid with the scene, lucky or not; it is "
             "shown on the charts but not ranked. ")
     claims = [dict(kind="deterministic_rows", value=len(det))]
     if (s.df["sampler"] == SHIFTED).any():

@@ -29,7 +29,8 @@ def shares(s):
 
 def own_mse(s):
     top_spp = s.levels[-1]
-    r = s.ranked[(s.ranked["target"].astype(str) == s.primary) & (s.ranked["spp"] == top_spp)]
+    r = s.ranked[(s.ranked["target"].astype(str) == s.primary) & (s.ranked["spp"] == top_spp)
+                 & ~s.ranked["deterministic"].astype(bool)]
     picks = []
     for _, g in r.groupby("scene", sort=True):
         own = g[np.isfinite(g["mse"].to_numpy(dtype=float))]
@@ -66,7 +67,7 @@ def aliasing_zero(s):
 def unrankable(s):
     df = s.df
     flagged = df[df["flagged"] == 1]
-    claims = [dict(kind="flagged", value=len(flagged)), dict(kind="rows", value=len(df))]
+    claims = [dict(kind="flagged_rows", value=len(flagged)), dict(kind="rows", value=len(df))]
     by = flagged.groupby("sampler").size().sort_values(ascending=False, kind="stable")
     for sampler, n in by.items():
         claims.append(dict(kind="flagged_sampler", sampler=sampler, value=int(n)))

@@ -8,6 +8,7 @@ from .study import Finding, fmt, method_key, method_name
 
 def front_finding(s):
     pts = fronts.summary_points(s.ranked, s.summary, s.primary, rankings.METHOD)
+    pts = pts[~pts["deterministic"].astype(bool)]
     front = pts[pts["front"]].sort_values(["cost", "median_ratio"])
     if front.empty:
         return None
@@ -34,7 +35,8 @@ def equal_time_finding(s):
     parts, claims = [], []
     for spp, g in eq.groupby("budget_spp", sort=True):
         top = g[g["top"]]
-        counts = top.groupby(rankings.METHOD, dropna=False).size().sort_values(ascending=False, kind="stable")
+        counts = top.groupby(rankings.METHOD + ["spp"], dropna=False)["scene"].nunique().sort_values(
+            ascending=False, kind="stable")
         if counts.empty:
             continue
         need = s.majority if counts.iloc[0] >= s.majority else counts.iloc[0]
@@ -42,14 +44,14 @@ def equal_time_finding(s):
         budget = float(np.median(g.drop_duplicates("scene")["budget_ms"]))
         names = []
         for key, n in chosen.items():
-            r = dict(zip(rankings.METHOD, key))
-            names.append(f"**{method_name(r)}** ({int(n)} of {len(s.scenes)})")
-            claims.append(dict(kind="equal_time_in_top", target=s.primary, budget_spp=int(spp), method=tuple(key),
-                               value=int(n)))
+            r = dict(zip(rankings.METHOD, key[:-1]))
+            names.append(f"**{method_name(r)} at {int(key[-1])} spp** ({int(n)} of {len(s.scenes)})")
+            claims.append(dict(kind="equal_time_in_top", target=s.primary, budget_spp=int(spp),
+                               method=tuple(key[:-1]), spp=int(key[-1]), value=int(n)))
         parts.append(f"for the time of a typical {int(spp)}-spp row (median over scenes {fmt(budget)} ms) "
                      + ", ".join(names))
     text = ("At equal time (any spp, rows not significantly dearer than the budget; ties in error as above), "
-            "the methods most often in the top group: " + "; ".join(parts) + ".")
+            "the methods most often in the top group (scenes): " + "; ".join(parts) + ".")
     return Finding("equal_time", "At equal time", text, claims)
 
 

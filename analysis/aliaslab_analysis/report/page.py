@@ -8,6 +8,7 @@ import numpy as np
 
 from .. import charts, errors, figures, spectra, study_csv
 from ..findings import Study
+from ..findings.study import facts as facts_of, is_quick
 from . import studies
 from .elements import figure, write_page
 from .findings import findings, tie_rules
@@ -17,16 +18,15 @@ from .summary_chart import summary_chart
 from .targets_table import targets_section
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-REFERENCE_STUDY = os.path.join(REPO, "results", "study", "study.csv")
 SCIENCE = os.path.join(REPO, "docs", "science.md")
 
 
-def study_label(study, label):
+def study_label(study, label, quick=False):
+    """How the page names its study: --label, else "the quick study PATH" or "the study PATH" (PATH relative
+    to the repository when inside it); whether it is quick is read from its CSV (findings/study.is_quick)."""
     if label:
         return label
-    if os.path.realpath(study) == os.path.realpath(REFERENCE_STUDY):
-        return "the reference study (results/study/study.csv)"
-    return f"the study {shown_path(study)}"
+    return f"{'the quick study' if quick else 'the study'} {shown_path(study)}"
 
 
 def shown_path(path):
@@ -82,7 +82,7 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
         charts.draw_all(primary, charts_dir)
     errors.prepare_out(charts_dir, "--charts")
     summary_png, _, _ = summary_chart(s, charts_dir)
-    name = study_label(study, label)
+    name = study_label(study, label, is_quick(facts_of(df)))
     target = ", ".join(study_csv.describe_target(t) for t in s.targets)
     science = html.escape(os.path.relpath(SCIENCE, results).replace(os.sep, "/"))
     scenes = s.scenes
