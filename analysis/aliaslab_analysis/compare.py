@@ -92,7 +92,7 @@ def unique_rows(df, path):
 def label(row):
     return (f"{row['scene']} {int(row['width'])}x{int(row['height'])} {row['sampler']} spp={int(row['spp'])} "
             f"{row['filter']} r={row['radius']:g}{(' ' + row['filter_params']) if row['filter_params'] else ''} "
-            f"{row['reconstruction']}")
+            f"{row['reconstruction']}" + (f" target={row['target']}" if "target" in row and str(row["target"]) else ""))
 
 
 def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, independent_pixels=False):

@@ -168,12 +168,36 @@ def front(rows, target):
 
 
 def front_uncached(rows, target):
+    """Points not beaten: a point j not significantly slower, with a lower median (the 10 lowest tested),
+    whose paired bootstrap over scenes of the median of log(ratio_i / ratio_j) has its 2.5 % quantile > 0."""
     pts = points(rows, target)
+    scenes = sorted(set(r["scene"] for r in rows if r["target"] == target and math.isfinite(r["err"])))
+    logs = {}
+    for (scene, spp), cell in cells(rows, target).items():
+        base = [r["err"] for r in cell if r["flagged"] == 0 and measured(r) and r["err"] > 0]
+        for r in cell:
+            ratio = r["err"] / min(base) if base else math.nan
+            logs.setdefault((spp, r["method"]), {})[scene] = math.log(ratio) if ratio > 0 else math.nan
+    boot = np.random.default_rng(29).integers(0, len(scenes), size=(2000, len(scenes)))
     keys = [k for k, p in pts.items() if math.isfinite(p[0]) and math.isfinite(p[3])]
     on = []
     for i in keys:
         pi = pts[i]
-        beaten = any(pts[j][2] < pi[1] and pts[j][3] - pi[3] <= Z * math.hypot(pi[4], pts[j][4]) for j in keys)
+        cands = sorted((pts[j][0], pts[j][3], n, j) for n, j in enumerate(keys)
+                       if pts[j][0] < pi[0] and pts[j][3] - pi[3] <= Z * math.sqrt(pi[4] ** 2 + pts[j][4] ** 2))
+        beaten = False
+        for _, _, _, j in cands[:10]:
+            d = np.array([logs[i].get(s, math.nan) - logs[j].get(s, math.nan) for s in scenes])
+            meds = []
+            for b in boot:
+                v = d[b]
+                v = v[np.isfinite(v)]
+                meds.append(np.median(v) if len(v) else math.nan)
+            meds = np.array(meds)
+            meds = meds[np.isfinite(meds)]
+            if len(meds) and np.quantile(meds, 0.025) > 0:
+                beaten = True
+                break
         if not beaten:
             on.append(i)
     return on, pts

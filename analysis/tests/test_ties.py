@@ -136,6 +136,18 @@ class Fronts(unittest.TestCase):
         # "huge" is the fastest, yet undetermined: off the front; "exact" is below every upper bound: on it
         self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, False])
 
+    def test_across_scenes_a_point_leaves_only_when_beaten_in_most_scenes_with_confidence(self):
+        rng = np.random.default_rng(3)
+        base = rng.normal(0, 0.5, 10)                      # scene difficulty, shared: pairing removes it
+        logs = np.vstack([base,                            # a: cost 1
+                          base + 0.3,                      # b: cost 2, worse in every scene: beaten by a
+                          base + rng.normal(0.1, 0.5, 10),  # c: cost 0.5, faster: stays
+                          base + np.array([0.02, -0.02, 0.01, -0.01, 0.03, -0.03, 0.0, 0.01, -0.01, 0.005])])
+        # d: cost 2, better than a in 4 scenes and worse in 5 (median +0.0025): tied with a, stays
+        pts = pd.DataFrame(dict(median_ratio=np.exp(np.median(logs - base.min(), axis=1)), cost=[1.0, 2.0, 0.5, 2.0],
+                                cost_se=[0.0] * 4))
+        self.assertEqual(list(fronts.summary_front_mask(pts, logs)), [True, False, True, True])
+
     def test_without_spreads_it_is_the_usual_pareto_front(self):
         rows = frame(row("a", 1.0, 0.0, cost=10.0), row("b", 2.0, 0.0, cost=10.5), row("c", 2.0, 0.0, cost=5.0))
         self.assertEqual(list(fronts.front_mask(rows)), [True, False, True])

@@ -17,9 +17,10 @@ def front_finding(s):
     text = (f"For the time spent ({timing}, mean over scenes), {len(front)} of {len(pts)} (method, spp) points are "
             f"on the front with ties: from **{method_name(first)} at {int(first['spp'])} spp** ({fmt(first['cost'])} ms, "
             f"median {fmt(first['median_ratio'])}x each scene's best) to **{method_name(last)} at {int(last['spp'])} "
-            f"spp** ({fmt(last['cost'])} ms, {fmt(last['median_ratio'])}x). A point leaves the front only when another's "
-            "bootstrap interval of the median ratio lies wholly below its own and the other is not significantly "
-            "slower (within 2 standard errors of the time difference); every method stays on the chart.")
+            f"spp** ({fmt(last['cost'])} ms, {fmt(last['median_ratio'])}x). A point leaves the front only when another, "
+            "not significantly slower (beyond 2 standard errors of the time difference), is significantly better "
+            "across scenes (a paired bootstrap over scenes of the median log ratio between the two excludes 0); "
+            "every method stays on the chart.")
     claims = [dict(kind="front_size", target=s.primary, value=len(front)),
               dict(kind="front_points", target=s.primary, value=len(pts))]
     for r in (first, last):

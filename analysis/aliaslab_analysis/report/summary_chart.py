@@ -13,6 +13,8 @@ from ..figures import plt
 from ..stats import fronts, rankings
 from .findings import method_name
 
+CAP_FACTOR = 4.0
+
 
 def summary_points(s):
     """The chart's points (findings.Study s): stats/fronts.summary_points against the primary target."""
@@ -36,12 +38,21 @@ def summary_chart(s, out_dir):
     sizes = {x: 18 + 60 * i / max(1, len(levels) - 1) for i, x in enumerate(levels)}
     pos = g["median_ratio"] > 0
     floor = float(g.loc[pos, "ci_low"].clip(lower=g.loc[pos, "median_ratio"].min() / 2).min()) / 1.5 if pos.any() else 1e-3
-    g["y"] = np.where(pos, g["median_ratio"], floor)
+    # the y axis ends at CAP_FACTOR x the front's largest median (at least 10x): the question is which methods
+    # are near the best; the points above are drawn at the top edge as grey triangles and counted in the title
+    front_top = float(g.loc[g["front"], "median_ratio"].max()) if g["front"].any() else float(g["median_ratio"].max())
+    cap = max(10.0, CAP_FACTOR * front_top)
+    above = g["median_ratio"] > cap
+    g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
     g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
-    lo = np.clip(g["y"] - g["ci_low"].clip(lower=floor), 0, None)
-    hi = np.clip(g["ci_high"] - g["y"], 0, None)
-    ax.errorbar(g["cost"], g["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#ccc", lw=0.6, zorder=1)
-    for (sampler, hollow, det, pre), h in g.groupby(["sampler", "hollow", "deterministic", "prefilter"]):
+    f = g[g["front"]]
+    lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
+    hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
+    ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#999", lw=0.8, zorder=1)
+    if above.any():
+        ax.scatter(g.loc[above, "cost"], np.full(int(above.sum()), cap * 1.15), marker="^", color="grey", s=22,
+                   zorder=2, clip_on=False)
+    for (sampler, hollow, det, pre), h in g[~above].groupby(["sampler", "hollow", "deterministic", "prefilter"]):
         colour = colours[sampler]
         marker = np.where(h["median_ratio"] > 0, "o", "v")
         for m in set(marker):
@@ -60,11 +71,12 @@ def summary_chart(s, out_dir):
     ax.set_xscale("log")
     ax.set_yscale("log")
     axes.plain_log_x(ax)
-    ax.set_ylim(bottom=floor / 1.3)
-    clipped = axes.clip_outliers(ax, g["cost"], g["y"])
+    ax.set_ylim(bottom=float(g["y"].min()) / 1.3, top=cap * 1.3)
+    clipped = (f"{int(above.sum())} point(s) above {cap:.3g}x (up to {g['median_ratio'].max():.3g}x) drawn as grey "
+               "triangles at the top" if above.any() else "")
     timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
     ax.set_xlabel(f"{timing} per image (ms, mean over scenes)")
-    ax.set_ylabel("error / each scene's best at that spp\n(median over scenes, 95 % bootstrap interval)")
+    ax.set_ylabel("error / each scene's best at that spp\n(median over scenes; front: 95 % bootstrap interval)")
     ax.grid(True, which="both", alpha=0.25)
     handles = [plt.Line2D([], [], ls="", marker="o", color=colours[x], label=x) for x in samplers]
     handles += [plt.Line2D([], [], ls="", marker="o", color="grey", ms=np.sqrt(sizes[x]), label=f"{int(x)} spp")

@@ -12,14 +12,19 @@ whose error is not told from zero (ties.measured false) is on it only when its u
 below every measured row's, as in the top groups: a huge error with a huger spread is undetermined, not a
 front point, while a nearly exact row stays.
 
+Front across scenes (summary_front_mask): the same rule for (method, spp) points summarised over scenes,
+where "significantly better" is a paired bootstrap over scenes of the median log ratio (its doc).
+
 Equal time (equal_time). For a budget B (per spp level: the median cost of the scene's rows at that spp),
 the candidates are the rows not significantly dearer than B (c - B <= Z cse) at any spp, and their top
 group is ties.top_group of the candidates: what one can get for about that time, with ties.
 """
+import warnings
+
 import numpy as np
 import pandas as pd
 
-from . import ties
+from . import bootstrap, ties
 
 
 def rankings_deterministic(rows):
@@ -57,20 +62,43 @@ def fronts(ranked, z=ties.Z):
     return pd.concat(parts) if parts else ranked.iloc[0:0].assign(front_rank=0)
 
 
-def summary_front_mask(points, z=ties.Z):
-    """The front over (method, spp) points across scenes: columns median_ratio, ci_low, ci_high, cost,
-    cost_se. Point i leaves it when another's interval lies wholly below i's (ci_high_j < ci_low_i) and
-    it is not significantly slower."""
-    lo = points["ci_low"].to_numpy(dtype=float)
-    hi = points["ci_high"].to_numpy(dtype=float)
+CANDIDATES = 10  # dominators tested per point (those not significantly slower with the lowest medians)
+
+
+def summary_front_mask(points, logs, z=ties.Z, seed=bootstrap.SEED, n_boot=bootstrap.N_BOOT):
+    """The front over (method, spp) points across scenes. points: columns median_ratio, cost, cost_se
+    (and deterministic); logs: points x scenes, log of each scene's ratio (NaN where absent or <= 0).
+    Point i leaves the front when a point j, not significantly slower (as in front_mask) and with a lower
+    median, is significantly better across scenes: the bootstrap interval (scenes resampled, the same
+    resample for both: paired) of the median over scenes of log(ratio_i / ratio_j) lies wholly above 0.
+    Only the CANDIDATES such j with the lowest medians (then the cheapest) are tested."""
+    med = points["median_ratio"].to_numpy(dtype=float)
     cost = points["cost"].to_numpy(dtype=float)
     cse = _spread(points["cost_se"])
-    better = hi[None, :] < lo[:, None]
-    not_slower = (cost[None, :] - cost[:, None]) <= z * np.sqrt(cse[:, None] ** 2 + cse[None, :] ** 2)
-    ok = np.isfinite(points["median_ratio"].to_numpy(dtype=float)) & np.isfinite(cost)
+    ok = np.isfinite(med) & np.isfinite(cost)
     if "deterministic" in points.columns:
         ok &= ~points["deterministic"].to_numpy(dtype=bool)
-    return ok & ~(better & not_slower & ok[None, :]).any(axis=1)
+    logs = np.asarray(logs, dtype=float)
+    n, scenes = logs.shape if logs.ndim == 2 else (len(points), 0)
+    if scenes == 0:
+        return ok
+    boot = np.random.default_rng(seed).integers(0, scenes, size=(n_boot, scenes))
+    lower = (1 - bootstrap.LEVEL) / 2
+    on = ok.copy()
+    for i in np.nonzero(ok)[0]:
+        slower = (cost - cost[i]) > z * np.sqrt(cse[i] ** 2 + cse ** 2)
+        cand = np.nonzero(ok & ~slower & (med < med[i]))[0]
+        if not len(cand):
+            continue
+        cand = cand[np.lexsort((cost[cand], med[cand]))[:CANDIDATES]]  # lowest median, then cheapest
+        d = logs[i][None, :] - logs[cand]                     # (c, scenes)
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)
+            m = np.nanmedian(d[:, boot], axis=2)              # (c, n_boot)
+            low = np.nanquantile(m, lower, axis=1)
+        if np.any(np.isfinite(low) & (low > 0)):
+            on[i] = False
+    return on
 
 
 def budgets(scene_rows):
@@ -96,7 +124,7 @@ def equal_time(ranked, z=ties.Z):
 def summary_points(ranked, summary, target, method):
     """One point per (method, spp) against `target`: the across-scene record (rankings.across_scenes) with
     `cost` = the mean cost over its scenes, `cost_se` = the se of that mean (NaN when unknown) and `front`
-    (summary_front_mask)."""
+    (summary_front_mask on the per-scene log ratios)."""
     r = ranked[ranked["target"].astype(str) == target]
     key = ["spp"] + method
     agg = r.groupby(key, dropna=False).agg(cost=("cost", "mean"), n=("cost", "size"),
@@ -104,5 +132,13 @@ def summary_points(ranked, summary, target, method):
     agg["cost_se"] = np.sqrt(agg["var"]) / agg["n"]
     pts = summary[summary["target"].astype(str) == target].merge(agg.reset_index()[key + ["cost", "cost_se"]],
                                                                  on=key, how="left")
-    pts["front"] = summary_front_mask(pts) if len(pts) else []
+    if not len(pts):
+        pts["front"] = []
+        return pts
+    with np.errstate(divide="ignore", invalid="ignore"):
+        logr = np.log(np.where(r["ratio"].to_numpy(dtype=float) > 0, r["ratio"].to_numpy(dtype=float), np.nan))
+    wide = r.assign(logr=logr).pivot_table(index=key, columns="scene", values="logr", aggfunc="first",
+                                           dropna=False)
+    logs = wide.reindex(pd.MultiIndex.from_frame(pts[key])).to_numpy(dtype=float)
+    pts["front"] = summary_front_mask(pts, logs)
     return pts
