@@ -188,12 +188,8 @@ def front_uncached(rows, target):
         beaten = False
         for _, _, _, j in cands[:10]:
             d = np.array([logs[i].get(s, math.nan) - logs[j].get(s, math.nan) for s in scenes])
-            meds = []
-            for b in boot:
-                v = d[b]
-                v = v[np.isfinite(v)]
-                meds.append(np.median(v) if len(v) else math.nan)
-            meds = np.array(meds)
+            resampled = np.ma.masked_invalid(d[boot])            # (2000, scenes), NaN masked
+            meds = np.ma.median(resampled, axis=1).filled(np.nan)
             meds = meds[np.isfinite(meds)]
             if len(meds) and np.quantile(meds, 0.025) > 0:
                 beaten = True

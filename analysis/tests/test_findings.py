@@ -22,7 +22,6 @@ def expected(rows, claim):
     k = claim["kind"]
     tgt = claim.get("target", rc.primary(rows))
     prim = [r for r in rows if r["target"] == rc.primary(rows)]
-    levels = sorted(set(r["spp"] for r in rows))
     if k == "n_scenes":
         return len(set(r["scene"] for r in rows))
     if k == "size":

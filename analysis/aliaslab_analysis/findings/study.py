@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import study_rows
 from ..charts import axes
-from ..stats import rankings, ties
+from ..stats import fronts, rankings, ties
 
 TRUSTED_SIZE = 256
 TRUSTED_REF_FACTOR = 64
@@ -48,6 +48,14 @@ class Study:
         self.answer = rankings.answer(self.summary, len(self.scenes))
         self.majority = rankings.majority(len(self.scenes))
         self.z = ties.Z
+        self._points = None
+
+    def points(self):
+        """The (method, spp) points across scenes against the primary target (stats/fronts.summary_points),
+        computed once."""
+        if self._points is None:
+            self._points = fronts.summary_points(self.ranked, self.summary, self.primary, rankings.METHOD)
+        return self._points
 
     def rows(self, target=None):
         """The rows against one target (the primary by default): the target-independent columns once."""

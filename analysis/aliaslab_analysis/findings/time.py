@@ -7,7 +7,7 @@ from .study import Finding, fmt, method_key, method_name
 
 
 def front_finding(s):
-    pts = fronts.summary_points(s.ranked, s.summary, s.primary, rankings.METHOD)
+    pts = s.points()
     pts = pts[~pts["deterministic"].astype(bool)]
     front = pts[pts["front"]].sort_values(["cost", "median_ratio"])
     if front.empty:

@@ -10,7 +10,6 @@ import numpy as np
 from .. import figures
 from ..charts import axes
 from ..figures import plt
-from ..stats import fronts, rankings
 from .findings import method_name
 
 CAP_FACTOR = 4.0
@@ -18,7 +17,7 @@ CAP_FACTOR = 4.0
 
 def summary_points(s):
     """The chart's points (findings.Study s): stats/fronts.summary_points against the primary target."""
-    return fronts.summary_points(s.ranked, s.summary, s.primary, rankings.METHOD)
+    return s.points().copy()
 
 
 def summary_chart(s, out_dir):
