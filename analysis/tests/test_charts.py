@@ -65,6 +65,23 @@ class StudyCharts(unittest.TestCase):
             self.assertEqual(set(zip(mine["cost"], mine["error"].round(12))), expected, scene)
         self.assertIn("flagged", front.columns)
 
+    def test_a_nearly_exact_row_below_zero_is_drawn_and_on_the_front(self):
+        # A corrected error can be negative (the references' variance subtracted): such a row is flagged,
+        # drawn at the bottom edge and, being the most accurate, on the front.
+        def exact(r):
+            if r["scene"] == "a" and r["sampler"] == "jittered" and r["spp"] == 64 and r["filter"] == "box" \
+                    and r["radius"] == 0.5:
+                r.update(mse_target=-1e-7, mse_target_se=1e-7, flagged=1)
+        with tempfile.TemporaryDirectory() as tmp:
+            csv = synthetic.write(os.path.join(tmp, "s.csv"), modify=exact, scenes=["a"])
+            charts_cli.main([csv, "--out", os.path.join(tmp, "c")])
+            self.assertTrue(is_chart(os.path.join(tmp, "c", "speed_accuracy_a.png")))
+            front = pd.read_csv(os.path.join(tmp, "c", "pareto.csv"))
+        row = front[(front["sampler"] == "jittered") & (front["spp"] == 64) & (front["filter_name"] == "box")
+                    & (front["radius"] == 0.5)]
+        self.assertEqual(len(row), 1)
+        self.assertEqual(int(row["flagged"].iloc[0]), 1)
+
     def test_a_flagged_row_keeps_its_place_on_the_charts(self):
         # scene b, random, spp 1 is flagged: it stays in decomposition.csv, and on the summary chart its
         # method's point is drawn (hollow), with the true number of scenes behind its median.

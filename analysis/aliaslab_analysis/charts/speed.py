@@ -25,13 +25,15 @@ def speed_accuracy(df, out_dir):
     prefiltered = (df["prefilter"] != "none").any()
     fronts = []
     for scene, all_rows in df.groupby("scene", sort=True):
-        sd = usable(all_rows)
-        sd = sd[np.isfinite(sd["cost"]) & (sd["cost"] > 0)].reset_index(drop=True)
-        left_out = len(all_rows) - len(sd)
+        timed = all_rows[np.isfinite(all_rows["cost"]) & (all_rows["cost"] > 0)
+                         & np.isfinite(all_rows["error"].to_numpy(dtype=float))].reset_index(drop=True)
+        sd = usable(timed).reset_index(drop=True)
+        low = timed[timed["error"] <= 0]  # corrected errors at or below 0 (nearly exact): drawn at the bottom edge
+        left_out = len(all_rows) - len(timed)
         fig, ax = plt.subplots(figsize=(11, 6.5))
         title = f"Error against the target vs time: {scene}"
         if left_out:
-            title += f"\n({left_out} row(s) with error <= 0 or not finite not drawn)"
+            title += f"\n({left_out} row(s) with a non-finite error or time not drawn)"
         ax.set_title(title, fontsize=10)
         if sd.empty:
             empty_panel(ax, "no row with a finite error > 0 and a time > 0:\nnothing to draw on log axes")
@@ -49,11 +51,15 @@ def speed_accuracy(df, out_dir):
         if det.any():
             g = sd[det]
             ax.scatter(g["cost"], g["error"], marker="x", s=30, color=[colours[x] for x in g["sampler"]], zorder=2)
-        ok = sd[~det].reset_index(drop=True)
+        ok = timed[~timed["deterministic"].to_numpy(dtype=bool)].reset_index(drop=True)
         lines = []
+        bottom = float(sd["error"].min()) / 1.6
+        if len(low):
+            ax.scatter(low["cost"], np.full(len(low), bottom * 1.1), marker="v", s=36, facecolors="none",
+                       edgecolors=[colours[x] for x in low["sampler"]], zorder=2)
         if len(ok):
             front = ok[tie_fronts.front_mask(ok)].sort_values(["cost", "error"])
-            ax.plot(front["cost"], front["error"], "k--", lw=1, zorder=3)
+            ax.plot(front["cost"], np.maximum(front["error"], bottom * 1.1), "k--", lw=1, zorder=3)
             for k, (_, r) in enumerate(front.iterrows(), 1):
                 lines.append(f"{k}. {method_label(r, show_recon)}, {int(r['spp'])} spp: "
                              f"{r['error']:.2e}, {r['cost']:.3g} ms" + (" (flagged)" if r["flagged"] == 1 else ""))
@@ -61,11 +67,10 @@ def speed_accuracy(df, out_dir):
         ax.set_xscale("log")
         ax.set_yscale("log")
         plain_log_x(ax)
-        ymin = float(sd["error"].min())
-        ax.set_ylim(bottom=ymin / 1.6)
+        ax.set_ylim(bottom=bottom)
         clipped = clip_outliers(ax, sd["cost"], sd["error"])
         if len(ok):
-            number_points(ax, list(front["cost"]), list(front["error"]))
+            number_points(ax, list(front["cost"]), list(np.maximum(front["error"], bottom * 1.1)))
         if clipped:
             ax.set_title(title + ("\n" if "\n" not in title else "; ") + clipped, fontsize=10)
         ax.set_xlabel("thread CPU time per image (ms, cpu_ms)" if "cpu_ms" in df.columns else
@@ -78,6 +83,8 @@ def speed_accuracy(df, out_dir):
                     plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (kept)")]
         if det.any():
             handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="fixed grid (deterministic)"))
+        if len(low):
+            handles.append(plt.Line2D([], [], ls="", marker="v", mfc="none", color="grey", label="error <= 0 (at the edge)"))
         if prefiltered:
             handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.6,
                                       label="pre-filtered"))
