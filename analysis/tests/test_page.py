@@ -53,7 +53,7 @@ class Page(unittest.TestCase):
 
     def test_other_studies_are_linked_with_what_they_are(self):
         self.assertIn("<a href='prefilter/index.html'>prefilter</a>", self.page)
-        self.assertRegex(self.page, r"prefilter</a>: 1 scenes at 32 px, 3 samplers, spp 1, 4, 16, 64, 8 seeds, "
+        self.assertRegex(self.page, r"prefilter</a>: 1 scene at 32 px, 3 samplers, spp 1, 4, 16, 64, 8 seeds, "
                                     r"references at 4096 spp, targets box:0.5; pre-filtering")
         self.assertNotIn("charts_only", self.page)
 

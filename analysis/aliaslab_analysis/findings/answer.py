@@ -2,7 +2,7 @@
 scenes (stats/rankings.answer), each with its count of scenes, its median ratio to each scene's best and
 the bootstrap interval of that median; then what holds under every target."""
 from ..stats import bootstrap
-from .study import Finding, fmt, method_key, method_name
+from .study import Finding, fmt, method_key, method_name, plural
 
 SHOWN = 4  # methods named per spp level (the rest counted)
 
@@ -19,7 +19,7 @@ def method_phrase(r, majority_scenes):
         extra.append(f"flagged in {int(r['flagged'])}")
     if r["undetermined"]:
         extra.append(f"undetermined in {int(r['undetermined'])}")
-    return (f"**{method_name(r)}** ({int(r['in_top'])} of {int(r['scenes'])} scenes, median {fmt(r['median_ratio'])}x "
+    return (f"**{method_name(r)}** ({int(r['in_top'])} of {plural(int(r['scenes']), 'scene')}, median {fmt(r['median_ratio'])}x "
             f"[{fmt(lo)}-{fmt(hi)}]" + ("; " + ", ".join(extra) if extra else "") + ")")
 
 

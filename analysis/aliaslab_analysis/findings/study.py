@@ -31,6 +31,10 @@ def method_key(r):
     return tuple(r[c] for c in rankings.METHOD)
 
 
+def plural(n, word):
+    return f"{n} {word}" + ("" if n == 1 else "s")
+
+
 def fmt(v, digits=3):
     return f"{v:.{digits}g}"
 
@@ -85,11 +89,11 @@ def describe(s):
                                                      if f["smallest"] != f["size"] else "")
     ref = ", ".join(map(str, f["ref_spp"]))
     factor = min(f["ref_spp"]) / max(f["spp"])
-    text = (f"This study: {f['scenes']} scenes at {size}; {len(f['samplers'])} samplers, {len(f['filters'])} "
+    text = (f"This study: {plural(f['scenes'], 'scene')} at {size}; {len(f['samplers'])} samplers, {len(f['filters'])} "
             f"filters at radii {', '.join(f'{r:g}' for r in f['radii'])}; spp {', '.join(map(str, f['spp']))}; "
             f"{', '.join(map(str, f['seeds']))} seeds; references at {ref} spp ({factor:g}x the highest spp); "
             f"targets {', '.join('`' + t + '`' for t in f['targets'])} ({f['rows']} rows: {configs} configurations "
-            f"x {len(f['targets'])} target(s)).")
+            f"x {plural(len(f['targets']), 'target')}).")
     if is_quick(f):
         text += (f" **This is a quick study** (below {TRUSTED_SIZE} px or references below {TRUSTED_REF_FACTOR}x "
                  "the highest spp): it checks that the tool runs end to end; its answer is not the one to trust.")

@@ -33,7 +33,8 @@ def summary(csv):
     side = df[["width", "height"]].max(axis=1)
     f = dict(size=int(side.max()), spp=sorted(int(x) for x in df["spp"].unique()),
              ref_spp=sorted(int(x) for x in df["ref_spp"].unique()))
-    text = (f"{df['scene'].nunique()} scenes at {f['size']} px, {df['sampler'].nunique()} samplers, spp "
+    n = df["scene"].nunique()
+    text = (f"{n} scene{'' if n == 1 else 's'} at {f['size']} px, {df['sampler'].nunique()} samplers, spp "
             f"{', '.join(map(str, f['spp']))}, {', '.join(str(int(k)) for k in sorted(df['seeds'].unique()))} seeds, "
             f"references at {', '.join(map(str, f['ref_spp']))} spp, targets {', '.join(targets(df))}")
     if "prefilter" in df.columns and (df["prefilter"].astype(str) != "none").any():

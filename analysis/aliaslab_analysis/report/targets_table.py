@@ -7,7 +7,8 @@ from ..stats import rankings
 
 
 def short(pick):
-    names = [html.escape(method_name(r)) + f" <small>({int(r['in_top'])})</small>" for _, r in pick.head(4).iterrows()]
+    names = [html.escape(method_name(r)) + f" <small>({int(r['in_top'])}/{int(r['scenes'])})</small>"
+             for _, r in pick.head(4).iterrows()]
     return "<br>".join(names) + (f"<br><small>+{len(pick) - 4} more</small>" if len(pick) > 4 else "")
 
 
@@ -30,8 +31,9 @@ def targets_section(s, science):
             "itself aliases (its box response lets frequencies above Nyquist through: replica rings on the zone "
             "plate, moir&eacute; at the Siemens star centre; "
             f"<a href='{science}'>docs/science.md</a>). A Gaussian and a band-limited target weigh blur and "
-            "aliasing differently. The table gives the answer under each target this study carries (methods in "
-            "the top group of at least half of the scenes; in brackets, in how many), and what holds under all.</p>")
+            "aliasing differently. The table gives the answer under each target this study carries: the methods in "
+            "the top group of at least half of the scenes (when none is, those in it most often); in brackets, in "
+            "how many of the scenes where they were measured. The last column: what holds under all.</p>")
     if len(s.targets) < 2:
         text += ("<p class='note'>This study carries one target only: its answer holds for that target. "
                  "Studies run with several targets show each here.</p>")
