@@ -87,6 +87,20 @@ def expected(rows, claim):
         ea, eb = (rc.box_error(rows, rc.primary(rows), x, claim["spp"]) for x in (a, b))
         common = [s for s in ea if s in eb and eb[s] > 0]
         return float(np.median([ea[s] / eb[s] for s in common]))
+    if k in ("prefilter_error", "prefilter_time"):
+        def best(keep):
+            out = {}
+            for r in prim:
+                if keep(r) and math.isfinite(r["err"]) and (r["scene"] not in out or r["err"] < out[r["scene"]]["err"]):
+                    out[r["scene"]] = r
+            return out
+        low = min(r["spp"] for r in prim)
+        pre = best(lambda r: r["prefilter"] != "none" and r["spp"] == low)
+        plain = best(lambda r: r["prefilter"] == "none" and r["spp"] == claim["spp"])
+        col = "err" if k == "prefilter_error" else "time"
+        for r in list(pre.values()) + list(plain.values()):
+            r["time"] = r["trace_ms"] + r["reconstruct_ms"]
+        return float(np.median([pre[x][col] / plain[x][col] for x in pre if x in plain]))
     return None
 
 
@@ -134,6 +148,11 @@ class Recomputed(unittest.TestCase):
         text = " ".join(f.text for f in found)
         self.assertIn("uniform-shifted", text)
         self.assertIn("deterministic", text)
+
+    def test_a_prefiltered_study(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            found = self.check(synthetic.write(os.path.join(tmp, "p.csv"), prefilter=True))
+        self.assertIn("prefilter", [f.key for f in found])
 
     @unittest.skipUnless(os.path.isfile(COMMITTED), "no committed quick study")
     def test_the_committed_quick_study_as_written_today(self):

@@ -14,9 +14,10 @@ over csv rows, no pandas groupby) and compare.
   terms.py    where the error comes from, what an own-mse ranking would pick, aliasing within error,
               flagged and undetermined rows
   grid.py     the fixed and the shifted grid; samplers against random
+  prefilter.py  pre-filtering against plain sampling (studies with pre-filtered rows)
   render.py   the findings as HTML paragraphs or a Markdown section
 """
-from . import answer, grid, study, terms, time
+from . import answer, grid, prefilter, study, terms, time
 from .study import Finding, Study
 
 
@@ -28,6 +29,7 @@ def compute(df, notes, s=None):
     out += time.findings(s)
     out += terms.findings(s)
     out += grid.findings(s)
+    out += prefilter.findings(s)
     return [f for f in out if f is not None]
 
 

@@ -1,10 +1,5 @@
 """The page's findings: the generated findings (the findings package: every number from the CSV, each
-recomputed by the tests) as HTML paragraphs, plus the pre-filtering comparison when the study has it, and
-the page's statement of the tie rules."""
-import html
-
-import numpy as np
-
+recomputed by the tests) as HTML paragraphs, and the page's statement of the tie rules."""
 from .. import findings as generated
 from ..findings import render
 from ..findings.study import method_name  # noqa: F401  (the name the report's modules use)
@@ -28,36 +23,4 @@ def tie_rules():
 
 def findings(df, notes, target=None, study=None):
     """The answer in HTML paragraphs (target: unused, kept for older callers; study: a findings.Study)."""
-    found = generated.compute(df, notes, study)
-    out = render.html_paragraphs(found)
-    if (df["prefilter"] != "none").any():
-        out.append(prefilter_finding(df))
-    return out
-
-
-def prefilter_finding(df):
-    """Pre-filtered at the lowest spp against plain sampling at each spp (medians over scenes of per-scene
-    ratios, the primary target's rows, each side's lowest error per scene)."""
-    from ..study_rows import targets
-    ok = df[(df["target"].astype(str) == targets(df)[0]) & np.isfinite(df["error"].to_numpy(dtype=float))]
-    low = ok["spp"].min()
-    pre = ok[(ok["prefilter"] != "none") & (ok["spp"] == low)]
-    if pre.empty:
-        return "<p>No pre-filtered row with a finite error at the lowest spp.</p>"
-    pre_best = pre.loc[pre.groupby("scene")["error"].idxmin()].set_index("scene")
-    parts = []
-    for spp in sorted(ok["spp"].unique()):
-        plain = ok[(ok["prefilter"] == "none") & (ok["spp"] == spp)]
-        if plain.empty:
-            continue
-        pb = plain.loc[plain.groupby("scene")["error"].idxmin()].set_index("scene")
-        common = pre_best.index.intersection(pb.index)
-        if not len(common):
-            continue
-        er = np.median(pre_best.loc[common, "error"] / pb.loc[common, "error"])
-        tr = np.median(pre_best.loc[common, "time_ms"] / pb.loc[common, "time_ms"])
-        parts.append(f"plain {int(spp)} spp: error x{er:.2f}, time x{tr:.2f}")
-    return (f"<p>Pre-filtered at {int(low)} spp (best pre-filtered method per scene) against the best plain "
-            f"sampling: " + html.escape("; ".join(parts)) + " (medians over scenes of per-scene ratios; below 1 = "
-            "the pre-filtered image is better or faster). The error-vs-time chart of each scene rings "
-            "pre-filtered rows in black.</p>")
+    return render.html_paragraphs(generated.compute(df, notes, study))
