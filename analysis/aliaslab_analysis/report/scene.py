@@ -70,7 +70,7 @@ def scene_table(sd, ranked=None):
             for c, _ in extra:
                 v = f"{r[c]:.3g}"
                 se = r.get(c + "_se", np.nan)
-                if c == "lowfreq_error" and np.isfinite(se):
+                if c == "lowfreq_error" and np.isfinite(se) and not bool(r.get("deterministic", False)):
                     v += f" &plusmn; {se:.1g}"
                 cells.append(v)
             cells.append(f"{r['cost']:.3g}" + (f" &plusmn; {r['cost_se']:.1g}" if np.isfinite(r["cost_se"]) else ""))
