@@ -11,6 +11,9 @@ Layout, a concept a module:
   fits.py            the log-log slope fit and the Pareto front
   figures.py         matplotlib (Agg), series colours, file-name-safe names, saving PNG + SVG
   charts/            the study's charts, one module per chart family (the `charts` command)
+  study_rows.py      the columns of issue 29 load_study adds (deterministic, cost, per-seed values), the targets
+  stats/             tie groups (paired within a sample set), rankings across scenes, fronts with ties
+  findings/          the findings generated from a study: numbers (claims) and text, for the page and README
   report/            the HTML report: findings, scene sections, page assembly, Markdown (`report`)
   spectra.py         the error spectra beside a study CSV, read and drawn (for the report)
   compare.py         two study CSVs compared (`compare`; exit 1 on an accuracy regression)

@@ -92,12 +92,12 @@ def unique_rows(df, path):
 def label(row):
     return (f"{row['scene']} {int(row['width'])}x{int(row['height'])} {row['sampler']} spp={int(row['spp'])} "
             f"{row['filter']} r={row['radius']:g}{(' ' + row['filter_params']) if row['filter_params'] else ''} "
-            f"{row['reconstruction']}")
+            f"{row['reconstruction']}" + (f" target={row['target']}" if "target" in row and str(row["target"]) else ""))
 
 
 def compare(before, after, z=3.0, time_ratio=2.0, min_ms=1.0, rel_tol=1e-6, independent_pixels=False):
     """Returns (metric changes, time changes, only-before keys, only-after keys) as DataFrames/lists."""
-    key = study_csv.CONFIG_KEY + (["prefilter"] if "prefilter" in before and "prefilter" in after else [])
+    key = study_csv.CONFIG_KEY + [c for c in ("prefilter", "target") if c in before and c in after]
     m = before.merge(after, on=key, how="outer", suffixes=("_b", "_a"), indicator=True)
     only_b = m[m["_merge"] == "left_only"]
     only_a = m[m["_merge"] == "right_only"]

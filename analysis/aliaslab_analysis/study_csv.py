@@ -10,6 +10,7 @@ import os
 import numpy as np
 import pandas as pd
 
+from . import study_rows
 from .errors import InputError
 
 # The sweep CSV's columns, in order (lib/study/csv.h).
@@ -24,10 +25,15 @@ CONFIG_KEY = ["scene", "width", "height", "sampler", "spp", "filter", "radius", 
               "reconstruction"]
 # Columns added later (coord/COLUMNS.md); any may be absent from an older CSV.
 # Text columns; `prefilter` is part of the configuration key when present.
-OPTIONAL_TEXT = ["target", "prefilter"]
+OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds"]
 OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
-                    "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp"]
-TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter"}
+                    "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
+                    # issue 29 (Interface 3): one row per (configuration, target)
+                    "target_ref_error", "blur_se", "deterministic", "blurred_mse_own", "lowfreq_error_own",
+                    "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se"]
+TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter",
+                "mse_target_seeds"}
+
 
 
 def read_study_csv(path):
@@ -59,10 +65,10 @@ def read_study_csv(path):
 
 
 def config_key(df):
-    """The columns that identify one configuration in df: CONFIG_KEY, plus `prefilter` when present
-    (under either spelling of the filter column)."""
+    """The columns that identify one row in df: CONFIG_KEY, plus `prefilter` and `target` when present
+    (under either spelling of the filter column; a study with several targets has a row per target)."""
     key = [("filter_name" if c == "filter" and "filter" not in df.columns else c) for c in CONFIG_KEY]
-    return key + (["prefilter"] if "prefilter" in df.columns else [])
+    return key + [c for c in ("prefilter", "target") if c in df.columns]
 
 
 def check_unique(df, path):
@@ -105,7 +111,9 @@ def load_study(path):
       - `blur_cross` = blur + cross when both are present, else mse_area - mse
         (older CSVs: blur and the cross term together, not separable);
       - `aliasing_zero` = True where aliasing is within two standard errors of
-        0 (needs aliasing_se; False when unknown).
+        0 (needs aliasing_se; False when unknown);
+      - the columns of issue 29 (study_rows.add_columns): `deterministic`, `cost`,
+        `cost_se` and `seed_values`, with their fallbacks for older CSVs.
     `notes` lists, in words, each fallback taken, for the report and charts to show.
     """
     df = read_study_csv(path)
@@ -140,6 +148,7 @@ def load_study(path):
     if bad.any():
         notes.append(f"{int(bad.sum())} row(s) have a non-finite error (NaN or Inf): they are left out of "
                      "rankings and charts.")
+    study_rows.add_columns(df, notes)
     return df, notes
 
 

@@ -3,18 +3,22 @@
 Usage: /usr/bin/python3 -m analysis charts study.csv --out DIR [--filter NAME]
 
 Every ranking and every "error" axis is the error against the study's common
-target (column mse_target; for CSVs of older sweeps without it, mse_area, the
+target (column mse_target; a CSV with several targets is drawn for one, the
+caller's choice: the report passes the primary target's rows; for CSVs of older sweeps without it, mse_area, the
 error against the pixel-area reference, and the charts say so). A filter's own
 mse is not used for ranking: it ignores blur, so the widest filter would win.
 
 Writes into DIR, each as .png and .svg:
-  speed_accuracy_<scene>  error against the target vs time per image, log-log;
-                          colour = sampler, marker = filter, pre-filtered rows
-                          (when the CSV has a prefilter column) ringed in black;
-                          flagged rows hollow and off the Pareto front; the
-                          front numbered, its methods listed beside the chart;
+  speed_accuracy_<scene>  error against the target vs time per image (cpu_ms,
+                          else wall time), log-log; colour = sampler, marker =
+                          filter, pre-filtered rows (when the CSV has a
+                          prefilter column) ringed in black; flagged rows
+                          hollow and kept; the fixed grid (deterministic) as
+                          crosses; the front with ties (stats/fronts.py)
+                          numbered, its methods listed beside the chart;
                           error bars +-2 standard errors (mse_target_se)
-  decomposition_<scene>   per spp level: the error of the best methods split
+  decomposition_<scene>   per spp level: the error of the best methods (flagged
+                          ones kept and marked) split
                           into noise, aliasing and blur as stacked bars, the
                           cross term as its own (signed) bar, the total with
                           +-2 se; negative terms drawn left of 0

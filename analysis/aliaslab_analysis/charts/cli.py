@@ -2,7 +2,7 @@
 import argparse
 import sys
 
-from .. import errors, study_csv
+from .. import errors, study_csv, study_rows
 from . import draw_all
 
 
@@ -22,6 +22,11 @@ def main(argv=None, prog=None):
         errors.fail(f"--filter: no rows with filter '{args.filter}'")
     for n in notes:
         print(f"note: {n}", file=sys.stderr)
+    shown = study_rows.targets(df)
+    if len(shown) > 1:
+        print(f"note: {len(shown)} targets in the CSV; the charts are drawn against the primary one, {shown[0]} "
+              "(the report shows the answer under each)", file=sys.stderr)
+        df = df[df["target"].astype(str) == shown[0]]
     draw_all(df, args.out, args.filter)
     print(f"charts written to {args.out}")
     return 0

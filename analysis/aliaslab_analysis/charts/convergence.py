@@ -37,6 +37,11 @@ def convergence(df, out_dir, filter_name):
                 se = pos[se_col] if se_col in pos.columns else pd.Series(np.nan, index=pos.index)
                 ax.errorbar(pos["spp"], pos[metric], yerr=yerr_log(pos[metric], se), marker=MARKERS[i % len(MARKERS)],
                             color=figures.colour(i), label=label, capsize=2, ms=5, lw=1.2)
+                fl = pos[pos["flagged"] == 1]
+                if metric == "error" and len(fl):  # flagged rows stay, drawn hollow
+                    ax.scatter(fl["spp"], fl[metric], s=40, marker=MARKERS[i % len(MARKERS)], facecolors="white",
+                               edgecolors=figures.colour(i), zorder=3)
+                    title = name + "\n(hollow: flagged, kept)"
             if metric == "aliasing" and "aliasing_se" in fd.columns:
                 zero = fd[fd["aliasing_zero"].astype(bool)]
                 if len(zero):

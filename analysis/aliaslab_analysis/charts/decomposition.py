@@ -20,9 +20,9 @@ def components(df):
 
 
 def chosen_methods(sd):
-    """The methods a decomposition panel shows: the BEST_SHOWN lowest errors (unflagged, finite), plus
-    the lowest own mse if that is another method (the one an own-mse ranking would pick)."""
-    ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
+    """The methods a decomposition panel shows: the BEST_SHOWN lowest errors (finite; flagged rows kept and
+    marked), plus the lowest own mse if that is another method (the one an own-mse ranking would pick)."""
+    ok = sd[np.isfinite(sd["error"].to_numpy(dtype=float))]
     best = ok.nsmallest(BEST_SHOWN, "error").assign(_top=True)
     own = ok[np.isfinite(ok["mse"].to_numpy(dtype=float))]
     if len(own):
@@ -49,7 +49,7 @@ def decomposition(df, out_dir):
             pick = chosen_methods(sd[sd["spp"] == spp])
             ax.set_title(f"{int(spp)} spp", fontsize=10)
             if pick.empty:
-                empty_panel(ax, "no unflagged row with a finite error")
+                empty_panel(ax, "no row with a finite error")
                 continue
             pick = pick.iloc[::-1]  # best at the top
             y = np.arange(len(pick))
@@ -73,6 +73,10 @@ def decomposition(df, out_dir):
             ranked = pick["_top"].to_numpy(dtype=bool)
             for (i, r), top in zip(pick.iterrows(), ranked):
                 text = method_label(r, show_recon)
+                if r["flagged"] == 1:
+                    text += " (flagged)"
+                if bool(r.get("deterministic", False)):
+                    text += " (deterministic)"
                 if bool(r["aliasing_zero"]):
                     text += " *"
                     any_zero = True

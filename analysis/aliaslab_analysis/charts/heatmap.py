@@ -33,6 +33,8 @@ def heatmaps(df, out_dir):
             table = cell.pivot_table(index="row", columns="radius", values="error", aggfunc="first",
                                      dropna=False).reindex(index=rows_, columns=radii)
             data = table.to_numpy(dtype=float)
+            flags = cell.pivot_table(index="row", columns="radius", values="flagged", aggfunc="max",
+                                     dropna=False).reindex(index=rows_, columns=radii).to_numpy(dtype=float)
             with np.errstate(divide="ignore", invalid="ignore"):
                 logd = np.where(np.isfinite(data) & (data > 0), np.log10(np.where(data > 0, data, 1)), np.nan)
             im = ax.imshow(logd, cmap="viridis", vmin=vmin, vmax=vmax, aspect="auto")
@@ -45,10 +47,13 @@ def heatmaps(df, out_dir):
                 text = f"{v:.1e}".replace("e-0", "e-") if np.isfinite(v) else ("n/a" if np.isnan(v) else str(v))
                 if np.isfinite(v) and v <= 0:
                     text = f"{v:.0e}"
+                if flags[i, j] == 1:
+                    text += "*"
                 shade = logd[i, j]
                 dark = np.isfinite(shade) and (shade - vmin) / (vmax - vmin) > 0.6
                 ax.text(j, i, text, ha="center", va="center", fontsize=5.5, color="black" if dark else "white")
         fig.colorbar(im, ax=axes, label=("log10 " + ERROR_LABEL[has_target(df)]).replace(" (", "\n("),
                      shrink=min(1.0, 0.9 if len(levels) > 1 else 1.0))
-        fig.suptitle(f"Error over filter x radius: {scene} (grey/blank: no value or <= 0)", fontsize=10)
+        fig.suptitle(f"Error over filter x radius: {scene} (grey/blank: no value or <= 0; * flagged, kept)",
+                     fontsize=10)
         figures.save_figure(fig, out_dir, f"heatmap_{figures.slug(scene)}")

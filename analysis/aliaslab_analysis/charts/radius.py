@@ -33,6 +33,9 @@ def radius_tradeoff(df, out_dir):
                 c = spp_colours[spp]
                 ax.errorbar(g["radius"], g["error"], yerr=yerr_log(g["error"], g["error_se"]), color=c,
                             marker="o", ms=4, lw=1.2, capsize=2, label=f"error, {int(spp)} spp")
+                fl = g[g["flagged"] == 1]
+                if len(fl):  # flagged rows stay, drawn hollow
+                    ax.scatter(fl["radius"], fl["error"], s=30, facecolors="white", edgecolors=c, zorder=3)
                 n = usable(g, "noise")
                 ax.plot(n["radius"], n["noise"], color=c, ls="--", lw=0.9)
             b = usable(fd.drop_duplicates("radius").sort_values("radius"), blur_col)
@@ -51,7 +54,8 @@ def radius_tradeoff(df, out_dir):
             row[0].set_ylabel(ERROR_LABEL[has_target(df)].replace(" (", "\n("), fontsize=8)
         handles = [plt.Line2D([], [], color=spp_colours[s], marker="o", label=f"error, {int(s)} spp")
                    for s in levels]
-        handles += [plt.Line2D([], [], color="grey", ls="--", label="noise (same colour: spp)"),
+        handles += [plt.Line2D([], [], ls="", marker="o", mfc="white", mec="grey", label="flagged (kept, hollow)"),
+                plt.Line2D([], [], color="grey", ls="--", label="noise (same colour: spp)"),
                     plt.Line2D([], [], color="black", ls=":", marker="x",
                                label="blur" if blur_col == "blur" else "blur + cross (mse_area - mse)")]
         fig.legend(handles=handles, loc="center left", bbox_to_anchor=(1.0, 0.5), fontsize=8, frameon=False)

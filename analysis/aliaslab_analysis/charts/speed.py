@@ -1,13 +1,16 @@
-"""speed_accuracy_<scene>: error against the target vs time per image, log-log, with the numbered Pareto
-front (colour = sampler, marker = filter, pre-filtered rows ringed, flagged rows hollow and off the front);
-writes pareto.csv, the front of every scene."""
+"""speed_accuracy_<scene>: error against the target vs time per image (cost: cpu_ms, else wall time), log-log,
+with the numbered front with ties (stats/fronts.front_mask: a point leaves it only when another is
+significantly better and not significantly slower); colour = sampler, marker = filter, pre-filtered rows
+ringed, flagged rows hollow and kept (on the front when nothing beats them), the fixed grid (deterministic,
+not ranked) as crosses; writes pareto.csv, the front of every scene."""
 import os
 
 import numpy as np
 import pandas as pd
 
-from .. import figures, fits
+from .. import figures
 from ..figures import plt
+from ..stats import fronts as tie_fronts
 from .axes import (ERROR_LABEL, MARKERS, METHOD, clip_outliers, empty_panel, has_target, method_label,
                    number_points, plain_log_x, usable, yerr_log)
 
@@ -22,13 +25,15 @@ def speed_accuracy(df, out_dir):
     prefiltered = (df["prefilter"] != "none").any()
     fronts = []
     for scene, all_rows in df.groupby("scene", sort=True):
-        sd = usable(all_rows)
-        sd = sd[np.isfinite(sd["time_ms"]) & (sd["time_ms"] > 0)].reset_index(drop=True)
-        left_out = len(all_rows) - len(sd)
+        timed = all_rows[np.isfinite(all_rows["cost"]) & (all_rows["cost"] > 0)
+                         & np.isfinite(all_rows["error"].to_numpy(dtype=float))].reset_index(drop=True)
+        sd = usable(timed).reset_index(drop=True)
+        low = timed[timed["error"] <= 0]  # corrected errors at or below 0 (nearly exact): drawn at the bottom edge
+        left_out = len(all_rows) - len(timed)
         fig, ax = plt.subplots(figsize=(11, 6.5))
         title = f"Error against the target vs time: {scene}"
         if left_out:
-            title += f"\n({left_out} row(s) with error <= 0 or not finite not drawn)"
+            title += f"\n({left_out} row(s) with a non-finite error or time not drawn)"
         ax.set_title(title, fontsize=10)
         if sd.empty:
             empty_panel(ax, "no row with a finite error > 0 and a time > 0:\nnothing to draw on log axes")
@@ -36,38 +41,50 @@ def speed_accuracy(df, out_dir):
             continue
         err = yerr_log(sd["error"], sd["error_se"])
         if err is not None:
-            ax.errorbar(sd["time_ms"], sd["error"], yerr=err, fmt="none", ecolor="#bbb", lw=0.7, zorder=1)
-        for (sampler, filt, hollow, pre), g in sd.groupby(["sampler", "filter_name", "flagged", "prefilter"]):
-            ax.scatter(g["time_ms"], g["error"], marker=markers[filt], s=60 if pre != "none" else 36,
+            ax.errorbar(sd["cost"], sd["error"], yerr=err, fmt="none", ecolor="#bbb", lw=0.7, zorder=1)
+        det = sd["deterministic"].to_numpy(dtype=bool)
+        for (sampler, filt, hollow, pre), g in sd[~det].groupby(["sampler", "filter_name", "flagged", "prefilter"]):
+            ax.scatter(g["cost"], g["error"], marker=markers[filt], s=60 if pre != "none" else 36,
                        facecolors="none" if hollow == 1 else colours[sampler],
                        edgecolors="black" if pre != "none" else colours[sampler],
                        linewidths=1.6 if pre != "none" else 1.0, alpha=0.85, zorder=2)
-        ok = sd[sd["flagged"] == 0].reset_index(drop=True)
+        if det.any():
+            g = sd[det]
+            ax.scatter(g["cost"], g["error"], marker="x", s=30, color=[colours[x] for x in g["sampler"]], zorder=2)
+        ok = timed[~timed["deterministic"].to_numpy(dtype=bool)].reset_index(drop=True)
         lines = []
+        bottom = float(sd["error"].min()) / 1.6
+        if len(low):
+            ax.scatter(low["cost"], np.full(len(low), bottom * 1.1), marker="v", s=36, facecolors="none",
+                       edgecolors=[colours[x] for x in low["sampler"]], zorder=2)
         if len(ok):
-            front = ok.iloc[fits.pareto_front(ok["time_ms"], ok["error"])]
-            ax.plot(front["time_ms"], front["error"], "k--", lw=1, zorder=3)
+            front = ok[tie_fronts.front_mask(ok)].sort_values(["cost", "error"])
+            ax.plot(front["cost"], np.maximum(front["error"], bottom * 1.1), "k--", lw=1, zorder=3)
             for k, (_, r) in enumerate(front.iterrows(), 1):
                 lines.append(f"{k}. {method_label(r, show_recon)}, {int(r['spp'])} spp: "
-                             f"{r['error']:.2e}, {r['time_ms']:.3g} ms")
+                             f"{r['error']:.2e}, {r['cost']:.3g} ms" + (" (flagged)" if r["flagged"] == 1 else ""))
             fronts.append(front.assign(scene=scene))
         ax.set_xscale("log")
         ax.set_yscale("log")
         plain_log_x(ax)
-        ymin = float(sd["error"].min())
-        ax.set_ylim(bottom=ymin / 1.6)
-        clipped = clip_outliers(ax, sd["time_ms"], sd["error"])
+        ax.set_ylim(bottom=bottom)
+        clipped = clip_outliers(ax, sd["cost"], sd["error"])
         if len(ok):
-            number_points(ax, list(front["time_ms"]), list(front["error"]))
+            number_points(ax, list(front["cost"]), list(np.maximum(front["error"], bottom * 1.1)))
         if clipped:
             ax.set_title(title + ("\n" if "\n" not in title else "; ") + clipped, fontsize=10)
-        ax.set_xlabel("time per image (ms) = trace + reconstruction")
+        ax.set_xlabel("thread CPU time per image (ms, cpu_ms)" if "cpu_ms" in df.columns else
+                      "time per image (ms) = trace + reconstruction (wall)")
         ax.set_ylabel(ERROR_LABEL[has_target(df)])
         ax.grid(True, which="major", alpha=0.3)
         handles = [plt.Line2D([], [], ls="", marker="o", color=colours[s], label=s) for s in samplers]
         handles += [plt.Line2D([], [], ls="", marker=markers[f], color="grey", label=f) for f in filters]
-        handles += [plt.Line2D([], [], ls="--", color="k", label="Pareto front (numbered)"),
-                    plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (reference)")]
+        handles += [plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"),
+                    plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (kept)")]
+        if det.any():
+            handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="fixed grid (deterministic)"))
+        if len(low):
+            handles.append(plt.Line2D([], [], ls="", marker="v", mfc="none", color="grey", label="error <= 0 (at the edge)"))
         if prefiltered:
             handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.6,
                                       label="pre-filtered"))
@@ -78,10 +95,10 @@ def speed_accuracy(df, out_dir):
         ax.add_artist(leg)
         if lines:
             shown = lines[:25] + ([f"... {len(lines) - 25} more in pareto.csv"] if len(lines) > 25 else [])
-            ax.text(1.01, 0.0, "Pareto front (fastest for its error):\n" + "\n".join(shown),
+            ax.text(1.01, 0.0, "Front with ties:\n" + "\n".join(shown),
                     transform=ax.transAxes, fontsize=7, va="bottom", ha="left", family="monospace")
         figures.save_figure(fig, out_dir, f"speed_accuracy_{figures.slug(scene)}")
-    cols = ["scene"] + METHOD + ["spp", "time_ms", "error", "error_se"]
+    cols = ["scene"] + METHOD + ["spp", "time_ms", "cost", "cost_se", "error", "error_se", "flagged"]
     table = pd.concat(fronts)[cols] if fronts else pd.DataFrame(columns=cols)
     table.to_csv(os.path.join(out_dir, "pareto.csv"), index=False)
     return table

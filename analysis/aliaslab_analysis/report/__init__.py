@@ -4,6 +4,7 @@ Usage:
   /usr/bin/python3 -m analysis report RESULTS_DIR [--study CSV] [--charts DIR] [--images DIR]
                                        [--label TEXT] [--link] [--reuse-charts]
   /usr/bin/python3 -m analysis report RESULTS_DIR --tables [--study CSV]
+  /usr/bin/python3 -m analysis report RESULTS_DIR --findings-md [--study CSV]
 
 Writes RESULTS_DIR/index.html, and RESULTS_DIR/engineering.html when
 RESULTS_DIR holds benchmark or fuzzing records (*_speed.md, fuzzing.md).
@@ -13,10 +14,17 @@ Only the one study CSV is read: shard CSVs lying beside it are ignored, and a
 CSV that repeats a configuration is refused (exit 2).
 
 The page, in order:
-  1. the question and this study's answer, computed from the CSV (lowest
-     error against the common target per spp level, the error-vs-time front,
-     what an own-mse ranking would have picked, where the error comes from),
-     with one chart: error relative to each scene's best against time;
+  0. what study it shows (size, spp, seeds, references, targets; "a quick
+     study" when below 256 px or references below 64x its highest spp) and
+     links to the other studies in RESULTS_DIR (each folder with an
+     index.html and a study CSV; report/studies.py);
+  1. the question and this study's answer, generated from the CSV by the
+     findings package (the top groups per spp under each target, what holds
+     under all targets, the front with ties, equal time, where the error
+     comes from, the grid, flagged rows; every number recomputed by the
+     tests), the tie rules (stats/), the answer per target as a table, and
+     one chart: the median error relative to each scene's best against time,
+     every method kept (flagged hollow, the fixed grid as crosses);
   2. per scene: the decomposition (stacked bars), the radius trade-off, the
      convergence with spp, the error-vs-time chart, the heatmap, the contact
      sheet and the images of the best and the worst method;
@@ -27,15 +35,20 @@ The page, in order:
 The charts are (re)drawn from the study into --charts first (the charts
 package), unless --reuse-charts. The page is self-contained (images
 embedded as data URIs) unless --link, which refers to the files by relative
-path. It names the study it reports: "the reference study" only for the
-repository's results/study/study.csv, otherwise the CSV's path (or --label).
+path. It names the study it reports: "the quick study PATH" when the CSV is
+below 256 px or its references below 64x its highest spp, else "the study
+PATH" (or --label).
 Definitions: docs/science.md, linked from the page.
 
 --tables prints Markdown for results/README.md instead (the Pareto front of
-every scene by the error against the target, and the stability counts).
+every scene by the error against the target, and the stability counts);
+--findings-md prints the generated findings as README.md's findings section.
+With several targets in the CSV, the charts and scene sections show the
+primary target (box:0.5 when present, else the CSV's first).
 
-Modules: findings.py (the numbers and sentences computed from the CSV), summary_chart.py (the findings'
-chart), scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
+Modules: findings.py (the generated findings as HTML, the tie rules in words), targets_table.py (the
+answer under each target), studies.py (the other studies linked), summary_chart.py (the findings' chart),
+scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
 markdown.py (the records' Markdown), tables.py (--tables), cli.py (the command).
 """
 

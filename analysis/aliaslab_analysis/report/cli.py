@@ -4,7 +4,7 @@ import os
 import sys
 
 from .. import errors
-from .page import build_report
+from .page import build_report, shown_path
 from .tables import tables
 
 
@@ -15,6 +15,15 @@ def default_study(results):
     return None
 
 
+def findings_markdown(study):
+    """The findings section of results/README.md, generated from the study CSV."""
+    from .. import findings, study_csv
+    from ..findings import render
+    df, notes = study_csv.load_study(study)
+    text = render.markdown_section(findings.compute(df, notes), shown_path(study))
+    return text + ("\n" + " ".join(f"_{n}_" for n in notes) if notes else "")
+
+
 def main(argv=None, prog=None):
     ap = argparse.ArgumentParser(prog=prog, description="The HTML report of an aliaslab study (findings first); "
                                  "definitions in docs/science.md")
@@ -22,12 +31,14 @@ def main(argv=None, prog=None):
     ap.add_argument("--study", help="study CSV (default RESULTS/study/study.csv, else RESULTS/study.csv)")
     ap.add_argument("--charts", help="folder of the charts, drawn there from the study (default RESULTS/charts)")
     ap.add_argument("--images", help="folder of the sweep's images (default: the study CSV's folder/images)")
-    ap.add_argument("--label", help="how the page names the study (default: the reference study for "
-                    "results/study/study.csv, else the CSV's path)")
+    ap.add_argument("--label", help="how the page names the study (default: 'the quick study PATH' or "
+                    "'the study PATH', read from the CSV)")
     ap.add_argument("--link", action="store_true", help="refer to images by relative path instead of embedding")
     ap.add_argument("--embed", action="store_true", help="embed images (the default; kept for old scripts)")
     ap.add_argument("--reuse-charts", action="store_true", help="do not redraw the charts already in --charts")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
+    ap.add_argument("--findings-md", action="store_true",
+                    help="print the generated findings as Markdown (results/README.md's findings section)")
     args = ap.parse_args(argv)
     if not os.path.isdir(args.results):
         errors.fail(f"{args.results}: not a folder")
@@ -37,6 +48,11 @@ def main(argv=None, prog=None):
     if args.study is not None and not os.path.isfile(args.study):
         errors.fail(f"--study: {args.study}: no such file")
     try:
+        if args.findings_md:
+            if study is None:
+                errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
+            print(findings_markdown(study))
+            return 0
         if args.tables:
             if study is None:
                 print(f"note: no study CSV in {args.results}: only the convergence table", file=sys.stderr)

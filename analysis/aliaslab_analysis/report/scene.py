@@ -25,19 +25,43 @@ def method_image(images, scene, r):
     return None
 
 
-def scene_table(sd):
-    """HTML table of the scene's three lowest errors at each spp level, with their terms."""
+TABLE_TOP = 5  # rows of the top group listed per spp level (the rest counted)
+
+
+def error_cell(r):
+    if bool(r.get("deterministic", False)):
+        return f"{r['error']:.3g} (deterministic)"
+    se = r["error_se"]
+    return f"{r['error']:.3g}" + (f" &plusmn; {se:.1g}" if np.isfinite(se) else "")
+
+
+def standing(r):
+    if bool(r.get("deterministic", False)):
+        return "fixed grid: not ranked"
+    if r["best"]:
+        return "best"
+    mark = "paired" if r["paired"] else "independent"
+    z = f"z = {r['gap_z']:.2g}" if np.isfinite(r["gap_z"]) else "se unknown"
+    return ("tied" if r["top"] else "undetermined" if r["undetermined"] else "worse") + f" ({z}, {mark})"
+
+
+def scene_table(sd, ranked=None):
+    """HTML table of the scene's top group at each spp level (stats/ties.py), with their terms; the fixed
+    grid's best row beside it, marked deterministic; flagged rows marked."""
+    from ..stats import rankings
+    ranked = rankings.cells(sd) if ranked is None else ranked
     terms = components(sd)
     extra = [(c, l) for c, l in (("blurred_mse", "blurred mse"), ("flip", "FLIP"),
                                  ("lowfreq_error", "low-frequency share &plusmn; se"),
                                  ("mean_spp", "mean spp spent")) if c in sd.columns]
-    ok = sd[(sd["flagged"] == 0) & np.isfinite(sd["error"].to_numpy(dtype=float))]
     rows = []
-    for spp, g in ok.groupby("spp", sort=True):
-        for _, r in g.nsmallest(3, "error").iterrows():
-            se = r["error_se"]
-            err = f"{r['error']:.3g}" + (f" &plusmn; {se:.1g}" if np.isfinite(se) else "")
-            cells = [html.escape(method_name(r)), str(int(spp)), err]
+    for spp, g in ranked.groupby("spp", sort=True):
+        top = g[g["top"]].sort_values("error")
+        det = g[g["deterministic"].astype(bool)] if "deterministic" in g.columns else g.iloc[0:0]
+        shown = [r for _, r in top.head(TABLE_TOP).iterrows()] + [r for _, r in det.nsmallest(1, "error").iterrows()]
+        for r in shown:
+            name = html.escape(method_name(r)) + (" <i>(flagged)</i>" if r["flagged"] == 1 else "")
+            cells = [name, str(int(spp)), error_cell(r), standing(r)]
             for c, _ in terms:
                 v = f"{r[c]:.2g}"
                 if c == "aliasing" and r["aliasing_zero"]:
@@ -46,14 +70,18 @@ def scene_table(sd):
             for c, _ in extra:
                 v = f"{r[c]:.3g}"
                 se = r.get(c + "_se", np.nan)
-                if c == "lowfreq_error" and np.isfinite(se):
+                if c == "lowfreq_error" and np.isfinite(se) and not bool(r.get("deterministic", False)):
                     v += f" &plusmn; {se:.1g}"
                 cells.append(v)
-            cells.append(f"{r['time_ms']:.3g}")
+            cells.append(f"{r['cost']:.3g}" + (f" &plusmn; {r['cost_se']:.1g}" if np.isfinite(r["cost_se"]) else ""))
             rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
-    head = (["method", "spp", "error &plusmn; se"] + [html.escape(l) for _, l in terms]
+        if len(top) > TABLE_TOP:
+            rows.append(f"<tr><td colspan='4'>and {len(top) - TABLE_TOP} more tied at {int(spp)} spp</td></tr>")
+    head = (["method", "spp", "error &plusmn; se", "against the best"] + [html.escape(l) for _, l in terms]
             + [l for _, l in extra] + ["time (ms)"])
-    return ("<table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(rows) + "</table>")
+    return ("<p>The top group at each spp level (not significantly worse than the best; the fixed grid, "
+            "deterministic, beside it):</p><table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>"
+            + "".join(rows) + "</table>")
 
 
 def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
@@ -97,7 +125,8 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
             if not len(r):
                 continue
             r = r.iloc[0]
-            vals = [f"mse {r['mse']:.3g}" + (f" &plusmn; {r['mse_se']:.1g}" if "mse_se" in r and
+            vals = [f"mse {r['mse']:.3g}" + (" (deterministic)" if bool(r.get("deterministic", False)) else
+                                             f" &plusmn; {r['mse_se']:.1g}" if "mse_se" in r and
                                              np.isfinite(r["mse_se"]) else "")]
             if has_blur:
                 vals.append(f"blurred mse {r['blurred_mse']:.3g}")
@@ -128,17 +157,18 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     return "\n".join(p for p in parts if p)
 
 
-def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None):
+def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None):
     s = figures.slug(scene)
-    parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd)]
+    parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd, ranked)]
     chart = lambda kind, caption: figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed)
     parts.append(chart("decomposition", "Where the error comes from: noise, aliasing and blur stacked, the cross "
                        "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors."))
     parts.append(chart("radius", "The radius trade-off per filter: a wider filter lowers noise (dashed) and "
                        "adds blur (dotted)."))
     parts.append(chart("convergence", "Convergence with spp (slopes only over at least three spp levels)."))
-    parts.append(chart("speed_accuracy", "Error against the target vs time per image; the Pareto front is "
-                       "numbered and listed."))
+    parts.append(chart("speed_accuracy", "Error against the target vs time per image; the front with ties "
+                       "(a point leaves it only when another is significantly better and not significantly "
+                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic)."))
     heat = chart("heatmap", "Error over filter x radius, one row per spp level.")
     if heat:
         parts.append(f"<details><summary>Error over filter x radius (heatmap)</summary>{heat}</details>")

@@ -1,62 +1,103 @@
-"""The one chart of the findings: every method at every spp level, its error relative to each scene's
-best (geometric mean over scenes) against its time, the Pareto front numbered and listed below."""
+"""The one chart of the findings: every method at every spp level against the primary target, its median
+(over scenes) error relative to each scene's best with the bootstrap interval, against its time; the front
+with ties (stats/fronts.summary_front_mask) numbered and listed below. No method is dropped: a method
+flagged or undetermined in some scene is drawn hollow, the fixed grid (deterministic, not ranked) as a cross;
+a median at or below 0 is drawn at the bottom edge as a down triangle."""
 import os
 
 import numpy as np
 
-from .. import figures, fits
+from .. import figures
 from ..charts import axes
 from ..figures import plt
-from .findings import method_name, summary_table
+from .findings import method_name
+
+CAP_FACTOR = 4.0
 
 
-def summary_chart(df, out_dir):
-    """The one chart of the findings: error relative to each scene's best against time per image."""
-    g = summary_table(df)
+def summary_points(s):
+    """The chart's points (findings.Study s): stats/fronts.summary_points against the primary target."""
+    return s.points().copy()
+
+
+def summary_chart(s, out_dir):
+    """Draws summary_error_time; returns (png path, the front's lines, the points drawn)."""
+    g = summary_points(s)
     fig, ax = plt.subplots(figsize=(10, 5.6))
     name = "summary_error_time"
+    g = g[np.isfinite(g["median_ratio"].to_numpy(dtype=float)) & np.isfinite(g["cost"].to_numpy(dtype=float))
+          & (g["cost"] > 0)].copy()
     if g.empty:
-        axes.empty_panel(ax, "no method has a finite error in every scene")
+        axes.empty_panel(ax, "no method has a finite error ratio and time")
         figures.save_figure(fig, out_dir, name)
-        return os.path.join(out_dir, name + ".png"), []
+        return os.path.join(out_dir, name + ".png"), [], g
     levels = sorted(g["spp"].unique())
     samplers = sorted(g["sampler"].unique())
-    colours = {s: figures.colour(i) for i, s in enumerate(samplers)}
-    sizes = {s: 18 + 60 * i / max(1, len(levels) - 1) for i, s in enumerate(levels)}
-    for (sampler, pre), h in g.groupby(["sampler", "prefilter"]):
-        ax.scatter(h["time_ms"], h["ratio"], s=h["spp"].map(sizes), color=colours[sampler], alpha=0.75,
-                   edgecolors="black" if pre != "none" else "none", linewidths=1.5)
-    front = g.iloc[fits.pareto_front(g["time_ms"], g["ratio"])]
-    ax.plot(front["time_ms"], front["ratio"], "k--", lw=1)
-    lines = []
-    for k, (_, r) in enumerate(front.iterrows(), 1):
-        lines.append(f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['ratio']:.3g}, {r['time_ms']:.3g} ms")
+    colours = {x: figures.colour(i) for i, x in enumerate(samplers)}
+    sizes = {x: 18 + 60 * i / max(1, len(levels) - 1) for i, x in enumerate(levels)}
+    pos = g["median_ratio"] > 0
+    floor = float(g.loc[pos, "ci_low"].clip(lower=g.loc[pos, "median_ratio"].min() / 2).min()) / 1.5 if pos.any() else 1e-3
+    # the y axis ends at CAP_FACTOR x the front's largest median (at least 10x): the question is which methods
+    # are near the best; the points above are drawn at the top edge as grey triangles and counted in the title
+    front_top = float(g.loc[g["front"], "median_ratio"].max()) if g["front"].any() else float(g["median_ratio"].max())
+    cap = max(10.0, CAP_FACTOR * front_top)
+    above = g["median_ratio"] > cap
+    g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
+    g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
+    f = g[g["front"]]
+    lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
+    hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
+    ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#999", lw=0.8, zorder=1)
+    if above.any():
+        ax.scatter(g.loc[above, "cost"], np.full(int(above.sum()), cap * 1.15), marker="^", color="grey", s=22,
+                   zorder=2, clip_on=False)
+    for (sampler, hollow, det, pre), h in g[~above].groupby(["sampler", "hollow", "deterministic", "prefilter"]):
+        colour = colours[sampler]
+        marker = np.where(h["median_ratio"] > 0, "o", "v")
+        for m in set(marker):
+            k = h[marker == m]
+            if det:
+                ax.scatter(k["cost"], k["y"], s=k["spp"].map(sizes), marker="x", color=colour, linewidths=1.2,
+                           alpha=0.8, zorder=2)
+                continue
+            ax.scatter(k["cost"], k["y"], s=k["spp"].map(sizes), marker=m, facecolors="none" if hollow else colour,
+                       edgecolors="black" if pre != "none" else colour,
+                       linewidths=1.5 if pre != "none" or hollow else 0.8, alpha=0.8, zorder=2)
+    front = g[g["front"]].sort_values(["cost", "median_ratio"])
+    ax.plot(front["cost"], front["y"], "k--", lw=1)
+    lines = [f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['median_ratio']:.3g} "
+             f"[{r['ci_low']:.3g}-{r['ci_high']:.3g}], {r['cost']:.3g} ms" for k, (_, r) in enumerate(front.iterrows(), 1)]
     ax.set_xscale("log")
     ax.set_yscale("log")
     axes.plain_log_x(ax)
-    ax.set_ylim(bottom=float(g["ratio"].min()) / 1.5)
-    clipped = axes.clip_outliers(ax, g["time_ms"], g["ratio"])
-    ax.set_xlabel("time per image (ms, mean over scenes)")
-    ax.set_ylabel("error / the scene's lowest error at any spp\n(geometric mean over scenes; 1 = best)")
+    ax.set_ylim(bottom=float(g["y"].min()) / 1.3, top=cap * 1.3)
+    clipped = (f"{int(above.sum())} point(s) above {cap:.3g}x (up to {g['median_ratio'].max():.3g}x) drawn as grey "
+               "triangles at the top" if above.any() else "")
+    timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
+    ax.set_xlabel(f"{timing} per image (ms, mean over scenes)")
+    ax.set_ylabel("error / each scene's best at that spp\n(median over scenes; front: 95 % bootstrap interval)")
     ax.grid(True, which="both", alpha=0.25)
-    handles = [plt.Line2D([], [], ls="", marker="o", color=colours[s], label=s) for s in samplers]
-    handles += [plt.Line2D([], [], ls="", marker="o", color="grey", ms=np.sqrt(sizes[s]), label=f"{int(s)} spp")
-                for s in levels]
-    handles.append(plt.Line2D([], [], ls="--", color="k", label="Pareto front (numbered)"))
+    handles = [plt.Line2D([], [], ls="", marker="o", color=colours[x], label=x) for x in samplers]
+    handles += [plt.Line2D([], [], ls="", marker="o", color="grey", ms=np.sqrt(sizes[x]), label=f"{int(x)} spp")
+                for x in levels]
+    handles.append(plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"))
+    handles.append(plt.Line2D([], [], ls="", marker="o", mfc="none", mec="grey", label="hollow: flagged or\n"
+                              "undetermined in >= 1 scene\n(kept, counted as is)"))
+    if g["deterministic"].any():
+        handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="deterministic (fixed grid,\nnot ranked)"))
+    if (g["median_ratio"] <= 0).any():
+        handles.append(plt.Line2D([], [], ls="", marker="v", color="grey", label="median <= 0 (drawn at the edge)"))
     if (g["prefilter"] != "none").any():
         handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.5, label="pre-filtered"))
     leg = ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
                     title="colour: sampler, size: spp", title_fontsize=7)
     leg.set_in_layout(True)
-    # the numbered front below the plot, in columns of at most 8 lines (beside the legend it collided with
-    # it once there were a dozen samplers)
     shown = lines[:24] + ([f"... {len(lines) - 24} more"] if len(lines) > 24 else [])
-    per_col = 8
-    for c in range(0, len(shown), per_col):
-        ax.text(0.55 * (c // per_col), -0.17, ("Pareto front:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per_col]),
+    for c in range(0, len(shown), 8):
+        ax.text(0.6 * (c // 8), -0.17, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + 8]),
                 transform=ax.transAxes, fontsize=7, va="top", family="monospace")
-    ax.set_title("Error against the target vs time, every method at every spp level, all scenes"
-                 + (f"\n{clipped}" if clipped else ""), fontsize=10)
-    axes.number_points(ax, list(front["time_ms"]), list(front["ratio"]))
+    ax.set_title(f"Error against `{s.primary}` vs time: every method at every spp level, all "
+                 f"{len(s.scenes)} scenes" + (f"\n{clipped}" if clipped else ""), fontsize=10)
+    axes.number_points(ax, list(front["cost"]), list(front["y"]))
     figures.save_figure(fig, out_dir, name)
-    return os.path.join(out_dir, name + ".png"), lines
+    return os.path.join(out_dir, name + ".png"), lines, g

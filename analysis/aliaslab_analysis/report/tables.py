@@ -1,11 +1,12 @@
-"""--tables: Markdown for results/README.md (the Pareto front of every scene by the error against the
-target, the stability counts and the convergence verdicts)."""
+"""--tables: Markdown for results/README.md (the front with ties of every scene by the error against the
+primary target (stats/fronts.py), the stability counts and the convergence verdicts)."""
 import os
 
 import numpy as np
 import pandas as pd
 
-from .. import fits, study_csv
+from .. import study_csv, study_rows
+from ..stats import fronts
 from .markdown import markdown
 
 
@@ -14,12 +15,15 @@ def tables(results, study):
     if study:
         df, notes = study_csv.load_study(study)
         out += [f"_{n}_\n" for n in notes]
+        primary = study_rows.targets(df)[0]
+        df = df[df["target"].astype(str) == primary]
         for scene, sd in df.groupby("scene", sort=True):
-            ok = sd[(sd["flagged"] == 0) & (sd["error"] > 0) & np.isfinite(sd["error"])].reset_index(drop=True)
-            front = ok.iloc[fits.pareto_front(ok["time_ms"], ok["error"])]
-            out.append(f"### Pareto front (error against the target): {scene}\n")
-            out.append(markdown(front[["sampler", "spp", "filter_name", "radius", "reconstruction", "time_ms",
-                                       "error"]].rename(columns={"filter_name": "filter"})))
+            ok = sd[np.isfinite(sd["error"]) & ~sd["deterministic"].astype(bool)].reset_index(drop=True)
+            front = ok[fronts.front_mask(ok)].sort_values(["cost", "error"])
+            out.append(f"### Front with ties (error against `{primary}`): {scene}\n")
+            out.append(markdown(front[["sampler", "spp", "filter_name", "radius", "reconstruction", "cost",
+                                       "error", "error_se", "flagged"]].rename(columns={"filter_name": "filter",
+                                                                                        "cost": "time_ms"})))
             out.append("")
         cols = ["undefined_pixels", "negative_pixels", "nan_pixels", "flagged"]
         bad = df.groupby(["filter_name", "radius", "reconstruction"])[cols].sum().reset_index()

@@ -1,0 +1,36 @@
+"""The findings of a study, generated from its CSV (issue 29 item 7): structured numbers and the text that
+states them, for the report's page and for results/README.md's findings section.
+
+compute(df, notes) -> [Finding]. A Finding has a `key`, a `title`, a `text` (Markdown-light: **bold** and
+`code`, turned into HTML by the page) and `claims`: every number the text states, each a dict with a
+`kind`, the parameters that say what it is (target, spp, method, scene, ...) and its `value`. The tests
+(analysis/tests/test_findings.py) recompute every claim from the CSV by a separate code path (plain loops
+over csv rows, no pandas groupby) and compare.
+
+  study.py    Study: the loaded rows and what every finding shares (targets, top groups, across-scene
+              records), and the finding that says what study this is
+  answer.py   the answer under each target (top groups per spp) and what holds under all targets
+  time.py     the front with ties across scenes, and the top groups at equal time
+  terms.py    where the error comes from, what an own-mse ranking would pick, aliasing within error,
+              flagged and undetermined rows
+  grid.py     the fixed and the shifted grid; samplers against random
+  prefilter.py  pre-filtering against plain sampling (studies with pre-filtered rows)
+  render.py   the findings as HTML paragraphs or a Markdown section
+"""
+from . import answer, grid, prefilter, study, terms, time
+from .study import Finding, Study
+
+
+def compute(df, notes, s=None):
+    """Every finding of the study, in the order the page shows them (s: a Study of df, made when None)."""
+    s = s or Study(df, notes)
+    out = [study.describe(s)]
+    out += answer.findings(s)
+    out += time.findings(s)
+    out += terms.findings(s)
+    out += grid.findings(s)
+    out += prefilter.findings(s)
+    return [f for f in out if f is not None]
+
+
+__all__ = ["compute", "Finding", "Study"]

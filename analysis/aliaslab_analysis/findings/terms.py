@@ -1,0 +1,85 @@
+"""Where the error comes from, what an own-mse ranking would pick, aliasing within error, and the rows that
+cannot be ranked (flagged, undetermined): all against the primary target, counts over its rows (the
+target-independent columns repeat once per target)."""
+import numpy as np
+
+from ..charts.decomposition import components
+from .study import Finding, fmt, method_name
+
+WORDS = {"noise": "noise", "aliasing": "aliasing", "blur": "blur", "cross": "the cross term",
+         "blur_cross": "blur with the cross term"}
+
+
+def shares(s):
+    top_spp = s.levels[-1]
+    r = s.ranked[(s.ranked["target"].astype(str) == s.primary) & (s.ranked["spp"] == top_spp) & s.ranked["best"]]
+    if r.empty:
+        return None
+    terms = [c for c, _ in components(s.df)]
+    claims, parts = [], []
+    for c in terms:
+        with np.errstate(divide="ignore", invalid="ignore"):
+            v = float(np.nanmedian(r[c].to_numpy(dtype=float) / r["error"].to_numpy(dtype=float)))
+        claims.append(dict(kind="share", target=s.primary, spp=top_spp, term=c, value=v))
+        parts.append(f"{WORDS[c]} {100 * v:.0f} %")
+    text = (f"Where the error of each scene's best method at {top_spp} spp comes from (median share over "
+            f"{len(r)} scenes): " + ", ".join(parts) + ".")
+    return Finding("shares", "Where the error comes from", text, claims)
+
+
+def own_mse(s):
+    top_spp = s.levels[-1]
+    r = s.ranked[(s.ranked["target"].astype(str) == s.primary) & (s.ranked["spp"] == top_spp)
+                 & ~s.ranked["deterministic"].astype(bool)]
+    picks = []
+    for _, g in r.groupby("scene", sort=True):
+        own = g[np.isfinite(g["mse"].to_numpy(dtype=float))]
+        if len(own):
+            picks.append(own.loc[own["mse"].idxmin()])
+    if not picks:
+        return None
+    names = [method_name(p) for p in picks]
+    name = max(sorted(set(names)), key=names.count)
+    ratio = float(np.nanmedian([p["ratio"] for p in picks]))
+    claims = [dict(kind="own_mse_ratio", target=s.primary, spp=top_spp, value=ratio),
+              dict(kind="own_mse_scenes", target=s.primary, spp=top_spp, value=len(picks))]
+    if ratio > 1 + 1e-12:
+        text = (f"Ranked by each filter's own mse (against its own reference, blind to blur), {name} would win "
+                f"most scenes at {top_spp} spp; against the target the own-mse pick's error is {fmt(ratio)}x each "
+                f"scene's best (median over {len(picks)} scenes). Every ranking here uses the error against the target.")
+    else:
+        text = f"Here the own-mse ranking agrees with the error against the target at {top_spp} spp ({name})."
+    return Finding("own_mse", "Own mse against the target", text, claims)
+
+
+def aliasing_zero(s):
+    if "aliasing_se" not in s.df.columns:
+        return None
+    rows = s.rows()
+    zero, neg = int(rows["aliasing_zero"].sum()), int((rows["aliasing"] < 0).sum())
+    text = (f"Aliasing is zero within error (|aliasing| <= 2 standard errors) in {zero} of {len(rows)} "
+            f"configurations; {neg} have a negative aliasing estimate.")
+    claims = [dict(kind="aliasing_zero", value=zero), dict(kind="configurations", value=len(rows)),
+              dict(kind="aliasing_negative", value=neg)]
+    return Finding("aliasing", "Aliasing within error", text, claims)
+
+
+def unrankable(s):
+    df = s.df
+    flagged = df[df["flagged"] == 1]
+    claims = [dict(kind="flagged_rows", value=len(flagged)), dict(kind="rows", value=len(df))]
+    by = flagged.groupby("sampler").size().sort_values(ascending=False, kind="stable")
+    for sampler, n in by.items():
+        claims.append(dict(kind="flagged_sampler", sampler=sampler, value=int(n)))
+    und = s.ranked[s.ranked["undetermined"]]
+    claims.append(dict(kind="undetermined", value=len(und)))
+    text = (f"{len(flagged)} of {len(df)} rows are flagged by the sweep (docs/science.md states the rule)"
+            + (": " + ", ".join(f"{k} {int(v)}" for k, v in by.items()) if len(by) else "")
+            + ". Flagged rows are drawn hollow on every chart and stay in every ranking and count. "
+            f"{len(und)} row(s) are undetermined (error not told from zero and too uncertain to be a tie for the "
+            "top): shown, not ranked.")
+    return Finding("flagged", "Flagged and undetermined rows", text, claims)
+
+
+def findings(s):
+    return [shares(s), own_mse(s), aliasing_zero(s), unrankable(s)]

@@ -1,0 +1,56 @@
+"""The columns of issue 29 that load_study adds to a study's rows, with the fallbacks for older CSVs, and
+the study's targets in their order.
+
+  deterministic  the CSV's column (1: every seed gave the same image, the fixed grid), else inferred:
+                 noise 0 and a standard error of at most 1e-12 of the error (older CSVs wrote ~1e-19)
+  cost, cost_se  cpu_ms, cpu_ms_se (thread CPU time and its spread over seeds), else the wall time
+                 time_ms with an unknown spread (NaN): time differences are then compared as exact numbers
+  seed_values    mse_target_seeds as float arrays (None where absent): paired comparisons within a sample
+                 set (stats/ties.py); without them those comparisons are unpaired (conservative)
+targets(df) lists the targets, the primary first: box:0.5 (the pixel area) when present, else the CSV's
+first.
+"""
+import numpy as np
+
+from .stats.ties import parse_seeds
+
+PRIMARY_TARGET = "box:0.5"
+
+
+def add_columns(df, notes):
+    """Adds deterministic, cost, cost_se and seed_values to df (in place); appends the fallbacks to notes."""
+    if "deterministic" in df.columns:
+        df["deterministic"] = df["deterministic"].fillna(0).astype(float) != 0
+    else:
+        se = df["error_se"].to_numpy(dtype=float)
+        err = np.abs(df["error"].to_numpy(dtype=float))
+        with np.errstate(invalid="ignore"):
+            det = (df["noise"].to_numpy(dtype=float) == 0) & np.isfinite(se) & (se <= 1e-12 * np.maximum(err, 1e-300))
+        df["deterministic"] = det
+        if det.any():
+            names = ", ".join(sorted(df.loc[det, "sampler"].unique()))
+            notes.append(f"No deterministic column: {int(det.sum())} row(s) with noise 0 and a standard error of "
+                         f"about 0 ({names}) are taken as deterministic (the same image for every seed).")
+    if "cpu_ms" in df.columns:
+        df["cost"] = df["cpu_ms"]
+        df["cost_se"] = df["cpu_ms_se"] if "cpu_ms_se" in df.columns else np.nan
+    else:
+        df["cost"] = df["time_ms"]
+        df["cost_se"] = np.nan
+        notes.append("No cpu_ms column: time is the wall time (trace_ms + reconstruct_ms) without a measured "
+                     "spread, so time differences are compared as exact numbers and can reorder with the load.")
+    if "mse_target_seeds" in df.columns:
+        df["seed_values"] = [parse_seeds(t) for t in df["mse_target_seeds"]]
+    else:
+        df["seed_values"] = None
+        notes.append("No mse_target_seeds column: rows of one sampler (which share their samples) are compared "
+                     "as if independent, a conservative test that finds more ties.")
+
+
+def targets(df):
+    """The study's targets, the primary first (module doc)."""
+    seen = [str(t) for t in dict.fromkeys(df["target"].astype(str))]
+    if PRIMARY_TARGET in seen:
+        seen.remove(PRIMARY_TARGET)
+        seen.insert(0, PRIMARY_TARGET)
+    return seen

@@ -1,0 +1,182 @@
+"""Every number the findings state is recomputed from the CSV by a separate code path (recompute.py: the
+csv module and plain loops, none of the analysis package) and compared (issue 29 item 7); the numbers
+appear in the text as stated. Run on a small Interface-3 CSV (synthetic rows converted by interface3.py:
+three targets, per-seed values, the shifted grid, cpu_ms) and on the committed quick study as written
+today (the fallbacks)."""
+import math
+import os
+import tempfile
+import unittest
+
+import numpy as np
+
+from . import interface3, recompute as rc, synthetic
+from ..aliaslab_analysis import findings, study_csv
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+COMMITTED = os.path.join(REPO, "results", "study", "study.csv")
+
+
+def expected(rows, claim):
+    """The claim's value recomputed (None when the kind is not known here: the test then fails)."""
+    k = claim["kind"]
+    first = rc.primary(rows)
+    tgt = claim.get("target", first)
+    prim = [r for r in rows if r["target"] == first]
+    if k == "n_scenes":
+        return len(set(r["scene"] for r in rows))
+    if k == "size":
+        return int(max(max(r["width"], r["height"]) for r in rows))
+    if k == "rows":
+        return len(rows)
+    if k == "ref_spp_min":
+        return int(min(r["ref_spp"] for r in rows))
+    if k in ("in_top", "scenes", "median_ratio", "ci_low", "ci_high", "flagged", "undetermined"):
+        return rc.records(rows, tgt)[(claim["spp"], claim["method"])][k]
+    if k == "answer_size":
+        return len(rc.answer(rows, tgt, claim["spp"]))
+    if k in ("common_methods", "common_samplers"):
+        targets = sorted(set(r["target"] for r in rows))
+        sets = [set(rc.answer(rows, t, claim["spp"])) for t in targets]
+        if k == "common_methods":
+            return sorted(set.intersection(*sets))
+        return sorted(set.intersection(*[set(m[0] for m in s) for s in sets]))
+    if k in ("front_size", "front_points"):
+        on, pts = rc.front(rows, tgt)
+        return len(on) if k == "front_size" else len(pts)
+    if k == "point_cost":
+        return rc.points(rows, tgt)[(claim["spp"], claim["method"])][3]
+    if k == "equal_time_in_top":
+        return rc.equal_time_counts(rows, tgt, claim["budget_spp"]).get((claim["method"], claim["spp"]), 0)
+    if k == "share":
+        vals = []
+        for (scene, spp), cell in rc.cells(rows, tgt).items():
+            if spp == claim["spp"]:
+                _, b = rc.top_group(cell)
+                vals.append(b[claim["term"]] / b["err"] if claim["term"] != "blur_cross"
+                            else (b["mse_area"] - b["mse"]) / b["err"])
+        return float(np.nanmedian(vals))
+    if k in ("own_mse_ratio", "own_mse_scenes"):
+        rec_base = {}
+        vals = []
+        for (scene, spp), cell in sorted(rc.cells(rows, tgt).items()):
+            if spp != claim["spp"]:
+                continue
+            base = min(r["err"] for r in cell if r["flagged"] == 0 and rc.measured(r) and r["err"] > 0)
+            pick = min((r for r in cell if math.isfinite(r["mse"])), key=lambda r: r["mse"])
+            vals.append(pick["err"] / base)
+            rec_base[scene] = base
+        return float(np.nanmedian(vals)) if k == "own_mse_ratio" else len(vals)
+    if k == "aliasing_zero":
+        return sum(1 for r in prim if r["aliasing"] == 0 or (math.isfinite(r["aliasing_se"])
+                                                             and abs(r["aliasing"]) <= 2 * r["aliasing_se"]))
+    if k == "configurations":
+        return len(prim)
+    if k == "aliasing_negative":
+        return sum(1 for r in prim if r["aliasing"] < 0)
+    if k == "flagged_rows":
+        return sum(1 for r in rows if r["flagged"] == 1)
+    if k == "flagged_sampler":
+        return sum(1 for r in rows if r["flagged"] == 1 and r["sampler"] == claim["sampler"])
+    if k == "undetermined" and "spp" not in claim:
+        return None
+    if k == "deterministic_rows":
+        return sum(1 for r in prim if r["det"])
+    if k in ("fixed_over_shifted", "against_random"):
+        a, b = ("uniform", "uniform-shifted") if k == "fixed_over_shifted" else (claim["sampler"], "random")
+        ea, eb = (rc.box_error(rows, rc.primary(rows), x, claim["spp"]) for x in (a, b))
+        common = [s for s in ea if s in eb and eb[s] > 0]
+        return float(np.median([ea[s] / eb[s] for s in common]))
+    if k in ("prefilter_error", "prefilter_time"):
+        def best(keep):
+            out = {}
+            for r in prim:
+                if keep(r) and math.isfinite(r["err"]) and (r["scene"] not in out or r["err"] < out[r["scene"]]["err"]):
+                    out[r["scene"]] = r
+            return out
+        low = min(r["spp"] for r in prim)
+        pre = best(lambda r: r["prefilter"] != "none" and r["spp"] == low)
+        plain = best(lambda r: r["prefilter"] == "none" and r["spp"] == claim["spp"])
+        col = "err" if k == "prefilter_error" else "time"
+        for r in list(pre.values()) + list(plain.values()):
+            r["time"] = r["trace_ms"] + r["reconstruct_ms"]
+        return float(np.median([pre[x][col] / plain[x][col] for x in pre if x in plain]))
+    return None
+
+
+def undetermined_total(rows):
+    n = 0
+    for t in set(r["target"] for r in rows):
+        for cell in rc.cells(rows, t).values():
+            groups, _ = rc.top_group(cell)
+            n += sum(1 for v in groups.values() if v[1])
+    return n
+
+
+class Recomputed(unittest.TestCase):
+    def check(self, path):
+        df, notes = study_csv.load_study(path)
+        found = findings.compute(df, notes)
+        rows = rc.read(path)
+        checked = 0
+        for f in found:
+            for claim in f.claims:
+                got = claim["value"]
+                if claim["kind"] == "undetermined" and "spp" not in claim:
+                    want = undetermined_total(rows)
+                else:
+                    want = expected(rows, claim)
+                self.assertIsNotNone(want, f"no recomputation for {claim}")
+                if isinstance(want, list):
+                    self.assertEqual(sorted(got), want, claim)
+                else:
+                    self.assertTrue(math.isclose(float(got), float(want), rel_tol=1e-9, abs_tol=1e-12),
+                                    f"{claim}: recomputed {want}")
+                checked += 1
+        self.assertGreater(checked, 20)
+        return found
+
+    def test_an_interface3_study(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            src = synthetic.write(os.path.join(tmp, "old.csv"))
+            path = interface3.convert(src, os.path.join(tmp, "new.csv"))
+            found = self.check(path)
+        keys = [f.key for f in found]
+        for key in ("study", "answer:box:0.5", "answer:gaussian:1.5", "answer:lanczos:3", "targets", "front",
+                    "equal_time", "grid"):
+            self.assertIn(key, keys)
+        text = " ".join(f.text for f in found)
+        self.assertIn("uniform-shifted", text)
+        self.assertIn("deterministic", text)
+
+    def test_a_prefiltered_study(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            found = self.check(synthetic.write(os.path.join(tmp, "p.csv"), prefilter=True))
+        self.assertIn("prefilter", [f.key for f in found])
+
+    @unittest.skipUnless(os.path.isfile(COMMITTED), "no committed quick study")
+    def test_the_committed_quick_study_as_written_today(self):
+        found = self.check(COMMITTED)
+        study = next(f for f in found if f.key == "study")
+        self.assertIn("quick study", study.text)
+
+    def test_the_numbers_appear_in_the_text_as_stated(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            path = interface3.convert(synthetic.write(os.path.join(tmp, "o.csv")), os.path.join(tmp, "n.csv"))
+            df, notes = study_csv.load_study(path)
+            found = findings.compute(df, notes)
+        shown = {"in_top": lambda v: f"{int(v)} of", "median_ratio": lambda v: f"median {v:.3g}x",
+                 "ci_low": lambda v: f"[{v:.3g}-", "ci_high": lambda v: f"-{v:.3g}]",
+                 "flagged_rows": lambda v: f"{int(v)} of", "rows": lambda v: f"{int(v)}",
+                 "share": lambda v: f"{100 * v:.0f} %", "front_size": lambda v: f"{int(v)} of"}
+        n = 0
+        for f in found:
+            for c in f.claims:
+                if c["kind"] in shown:
+                    self.assertIn(shown[c["kind"]](c["value"]), f.text, (f.key, c))
+                    n += 1
+        self.assertGreater(n, 10)
+
+
+if __name__ == "__main__":
+    unittest.main()

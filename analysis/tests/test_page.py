@@ -1,0 +1,67 @@
+"""The page of an Interface-3 study (issue 29 items 3, 5, 9): the answer under each target and what holds
+under all, the fixed grid shown as deterministic and the shifted grid explained, the study described from
+its CSV, the other studies in the results folder linked, and the tie rules stated."""
+import os
+import re
+import tempfile
+import unittest
+
+from . import interface3, synthetic
+from ..aliaslab_analysis.report import page as report_page
+
+
+class Page(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.results = os.path.join(cls.tmp.name, "results")
+        csv = synthetic.make_results(cls.results, shards=False, engineering=False)
+        interface3.convert(csv, csv)  # three targets, per-seed values, the shifted grid, cpu_ms
+        other = os.path.join(cls.results, "prefilter")  # another committed study beside it, with its page
+        os.makedirs(os.path.join(other, "study"))
+        synthetic.write(os.path.join(other, "study", "study.csv"), prefilter=True, scenes=["a"])
+        with open(os.path.join(other, "index.html"), "w") as f:
+            f.write("<html></html>")
+        os.makedirs(os.path.join(cls.results, "charts_only"))  # a folder without a page: not linked
+        with open(report_page.build_report(cls.results, csv, draw=False, embed=False), encoding="utf-8") as f:
+            cls.page = f.read()
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.tmp.cleanup()
+
+    def test_the_answer_under_each_target_and_what_holds_under_all(self):
+        section = self.page[self.page.index("id='targets'"):self.page.index("id='scenes'")]
+        for target in ("box:0.5", "gaussian:1.5", "lanczos:3"):
+            self.assertIn(f"<th><code>{target}</code></th>", section)
+            self.assertIn(f"Against <code>{target}</code>", self.page)
+        self.assertIn("<th>under every target</th>", section)
+        self.assertIn("What holds under every target", self.page.replace("what holds", "What holds"))
+
+    def test_the_fixed_grid_is_deterministic_and_the_shifted_grid_explained(self):
+        scenes = self.page[self.page.index("id='scenes'"):self.page.index("id='stability'")]
+        fixed = re.findall(r"<tr><td>uniform [^<]*</td><td>\d+</td><td>([^<]*)</td>", scenes)
+        self.assertTrue(fixed)
+        self.assertTrue(all(cell.endswith("(deterministic)") for cell in fixed), fixed)
+        self.assertIn("uniform-shifted", scenes)
+        self.assertIn("counts it as noise", self.page)
+
+    def test_the_study_is_described_from_its_csv(self):
+        self.assertIn("2 scenes at 32 px on the larger side", self.page)
+        self.assertIn("8 seeds; references at 4096 spp (64x the highest spp)", self.page)
+        self.assertIn("This is a quick study", self.page)
+
+    def test_other_studies_are_linked_with_what_they_are(self):
+        self.assertIn("<a href='prefilter/index.html'>prefilter</a>", self.page)
+        self.assertRegex(self.page, r"prefilter</a>: 1 scene at 32 px, 3 samplers, spp 1, 4, 16, 64, 8 seeds, "
+                                    r"references at 4096 spp, targets box:0.5; pre-filtering")
+        self.assertNotIn("charts_only", self.page)
+
+    def test_the_tie_rules_are_stated(self):
+        self.assertIn("How ties are decided", self.page)
+        self.assertIn("compared paired", self.page)
+        self.assertIn("seed 29", self.page)
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,165 @@
+"""Tie groups (issue 29 item 2) on constructed rows with known means and standard errors: what is tied,
+what is not, paired against unpaired comparisons, undetermined rows, the across-scene record with its
+seeded bootstrap, and the fronts with ties."""
+import unittest
+
+import numpy as np
+import pandas as pd
+
+from ..aliaslab_analysis.stats import bootstrap, fronts, rankings, ties
+
+
+def row(sampler, error, se, filt="box", radius=0.5, seeds=None, scene="s", spp=16, flagged=0, cost=10.0,
+        cost_se=0.0, deterministic=False):
+    return dict(scene=scene, sampler=sampler, spp=spp, prefilter="none", target="box:0.5", filter_name=filt,
+                radius=radius, filter_params="", reconstruction="weighted", error=error, error_se=se,
+                flagged=flagged, seed_values=None if seeds is None else np.asarray(seeds, dtype=float),
+                cost=cost, cost_se=cost_se, deterministic=deterministic)
+
+
+def frame(*rows):
+    return pd.DataFrame(list(rows))
+
+
+def correlated_seeds(mean, shared, own, scale):
+    """Per-seed values: mean + scale (shared + own), recentred to the exact mean."""
+    v = scale * (np.asarray(shared) + np.asarray(own))
+    return mean + v - v.mean()
+
+
+class TieGroups(unittest.TestCase):
+    def test_one_standard_error_apart_is_a_tie_five_is_not(self):
+        # independent samplers, se 0.1 each: the difference's se is 0.1 sqrt(2) = 0.141
+        g = ties.top_group(frame(row("a", 1.0, 0.1), row("b", 1.141, 0.1), row("c", 1.707, 0.1)))
+        self.assertEqual(list(g["top"]), [True, True, False])
+        self.assertAlmostEqual(g["gap_z"].iloc[1], 1.0, places=2)
+        self.assertAlmostEqual(g["gap_z"].iloc[2], 5.0, places=2)
+        self.assertFalse(g["paired"].any())
+
+    def test_the_rule_is_two_standard_errors_of_the_difference(self):
+        se = 0.1 * np.sqrt(2)
+        g = ties.top_group(frame(row("a", 1.0, 0.1), row("b", 1.0 + 1.99 * se, 0.1), row("c", 1.0 + 2.01 * se, 0.1)))
+        self.assertEqual(list(g["top"]), [True, True, False])
+
+    def test_paired_and_unpaired_give_different_answers_when_seeds_are_correlated(self):
+        rng = np.random.default_rng(1)
+        shared, k = rng.standard_normal(8), 8
+        a = correlated_seeds(1.0, shared, 0.05 * rng.standard_normal(k), 0.5)
+        b = correlated_seeds(1.2, shared, 0.05 * rng.standard_normal(k), 0.5)
+        se_a, se_b = a.std(ddof=1) / np.sqrt(k), b.std(ddof=1) / np.sqrt(k)
+        self.assertGreater(se_a, 0.1)  # each alone is uncertain: 0.2 apart is within 2 se unpaired
+        # same sampler (one sample set), two filters: paired, the shared part cancels: not tied
+        same = ties.top_group(frame(row("x", 1.0, se_a, "box", seeds=a), row("x", 1.2, se_b, "tent", seeds=b)))
+        self.assertTrue(same["paired"].all())
+        self.assertEqual(list(same["top"]), [True, False])
+        self.assertAlmostEqual(same["gap_se"].iloc[1], (b - a).std(ddof=1) / np.sqrt(k))
+        # the same numbers from two samplers (independent sample sets): unpaired, tied
+        other = ties.top_group(frame(row("x", 1.0, se_a, seeds=a), row("y", 1.2, se_b, seeds=b)))
+        self.assertFalse(other["paired"].any())
+        self.assertEqual(list(other["top"]), [True, True])
+        self.assertAlmostEqual(other["gap_se"].iloc[1], np.hypot(se_a, se_b))
+
+    def test_without_seed_values_a_sample_set_is_compared_unpaired(self):
+        se, paired = ties.diff_se_matrix(frame(row("x", 1.0, 0.3), row("x", 1.2, 0.4, "tent")))
+        self.assertFalse(paired.any())
+        self.assertAlmostEqual(se[0, 1], 0.5)
+
+    def test_a_huge_error_with_a_huger_spread_is_undetermined_not_tied(self):
+        g = ties.top_group(frame(row("a", 1.0, 0.05), row("b", 2000.0, 1500.0, "mitchell")))
+        self.assertEqual(list(g["top"]), [True, False])
+        self.assertEqual(list(g["undetermined"]), [False, True])
+
+    def test_an_error_too_small_to_tell_from_zero_is_in_the_top_group(self):
+        # flagged (error < 2 se) because it is nearly exact: its upper bound is below the best measured one
+        g = ties.top_group(frame(row("a", 1.0, 0.05), row("b", 0.01, 0.01, flagged=1), row("c", 3.0, 0.05)))
+        self.assertTrue(g["best"].iloc[0])  # the best is the lowest *measured* error
+        self.assertEqual(list(g["top"]), [True, True, False])
+
+    def test_unknown_standard_error_ties_only_equal_errors(self):
+        self.assertEqual(list(ties.tied([0.0, 0.1], [np.nan, np.nan])), [True, False])
+
+    def test_parse_seeds(self):
+        self.assertEqual(list(ties.parse_seeds("1;2.5;3")), [1.0, 2.5, 3.0])
+        for bad in ("", None, float("nan"), "1", "a;b"):
+            self.assertIsNone(ties.parse_seeds(bad))
+
+
+class AcrossScenes(unittest.TestCase):
+    def study(self):
+        rows = []
+        for k, scene in enumerate("abcdefghij"):
+            rows.append(row("good", 1.0, 0.01, scene=scene))
+            rows.append(row("close", 1.01 if k < 9 else 1.5, 0.01, scene=scene))
+            rows.append(row("bad", 2.0, 0.01, scene=scene, flagged=int(k < 2)))
+            rows.append(row("grid", 0.5, 0.0, scene=scene, deterministic=True))
+        return frame(*rows)
+
+    def test_counts_and_medians_are_over_the_true_number_of_scenes(self):
+        ranked = rankings.cells(self.study())
+        grid = ranked[ranked["sampler"] == "grid"]  # deterministic: kept with its ratio, never in a top group
+        self.assertEqual(len(grid), 10)
+        self.assertFalse(grid["top"].any())
+        self.assertTrue((grid["ratio"] == 0.5).all())
+        self.assertTrue(ranked[ranked["sampler"] == "good"]["best"].all())
+        table = rankings.across_scenes(ranked).set_index("sampler")
+        self.assertEqual(table.loc["grid", "in_top"], 0)
+        self.assertEqual(table.loc["good", "in_top"], 10)
+        self.assertEqual(table.loc["close", "in_top"], 9)  # 0.01 apart with se 0.014: tied; 0.5 apart: not
+        self.assertEqual(table.loc["bad", "scenes"], 10)  # flagged in 2 scenes, still counted
+        self.assertEqual(table.loc["bad", "flagged"], 2)
+        self.assertAlmostEqual(table.loc["close", "median_ratio"], 1.01)
+        answer = rankings.answer(rankings.across_scenes(ranked), 10)[("box:0.5", 16)]
+        self.assertEqual(list(answer["sampler"]), ["good", "close"])
+        eq = fronts.equal_time(ranked)
+        self.assertNotIn("grid", set(eq["sampler"]))
+
+    def test_the_bootstrap_is_seeded_and_brackets_the_median(self):
+        v = np.array([1.0, 1.1, 1.3, 1.05, 2.0, 1.2, 1.01, 1.4])
+        lo, hi = bootstrap.interval(v)
+        self.assertEqual((lo, hi), bootstrap.interval(v))
+        self.assertLessEqual(lo, np.median(v))
+        self.assertGreaterEqual(hi, np.median(v))
+        self.assertEqual(bootstrap.interval([3.0]), (3.0, 3.0))
+
+
+class Fronts(unittest.TestCase):
+    def test_a_point_leaves_the_front_only_when_another_is_significantly_better_and_not_slower(self):
+        rows = frame(row("a", 1.0, 0.1, cost=10.0, cost_se=0.5),
+                     row("b", 2.0, 0.1, cost=10.5, cost_se=0.5),   # a is better and not significantly slower
+                     row("c", 2.0, 0.1, cost=5.0, cost_se=0.5),    # a is significantly slower than c
+                     row("d", 1.1, 0.1, cost=12.0, cost_se=0.5))   # tied with a in error: stays
+        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, True])
+
+    def test_an_undetermined_row_is_not_a_front_point_a_nearly_exact_one_is(self):
+        rows = frame(row("a", 1.0, 0.1, cost=10.0), row("huge", 500.0, 400.0, cost=9.0, flagged=1),
+                     row("exact", 0.001, 0.001, cost=12.0, flagged=1), row("slow", 0.5, 0.1, cost=20.0))
+        # "huge" is the fastest, yet undetermined: off the front; "exact" is below every upper bound: on it
+        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, False])
+
+    def test_across_scenes_a_point_leaves_only_when_beaten_in_most_scenes_with_confidence(self):
+        rng = np.random.default_rng(3)
+        base = rng.normal(0, 0.5, 10)                      # scene difficulty, shared: pairing removes it
+        logs = np.vstack([base,                            # a: cost 1
+                          base + 0.3,                      # b: cost 2, worse in every scene: beaten by a
+                          base + rng.normal(0.1, 0.5, 10),  # c: cost 0.5, faster: stays
+                          base + np.array([0.02, -0.02, 0.01, -0.01, 0.03, -0.03, 0.0, 0.01, -0.01, 0.005])])
+        # d: cost 2, better than a in 4 scenes and worse in 5 (median +0.0025): tied with a, stays
+        pts = pd.DataFrame(dict(median_ratio=np.exp(np.median(logs - base.min(), axis=1)), cost=[1.0, 2.0, 0.5, 2.0],
+                                cost_se=[0.0] * 4))
+        self.assertEqual(list(fronts.summary_front_mask(pts, logs)), [True, False, True, True])
+
+    def test_without_spreads_it_is_the_usual_pareto_front(self):
+        rows = frame(row("a", 1.0, 0.0, cost=10.0), row("b", 2.0, 0.0, cost=10.5), row("c", 2.0, 0.0, cost=5.0))
+        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True])
+
+    def test_equal_time_candidates_stay_within_the_budget(self):
+        rows = frame(row("a", 1.0, 0.01, cost=100.0, spp=64), row("b", 2.0, 0.01, cost=10.0, spp=16),
+                     row("c", 2.01, 0.01, cost=11.0, spp=16, cost_se=1.0), row("d", 3.0, 0.01, cost=9.0, spp=16))
+        eq = fronts.equal_time(rows)
+        at16 = eq[eq["budget_spp"] == 16]
+        self.assertEqual(set(at16["sampler"]), {"b", "c", "d"})  # a costs 100 ms: beyond the 10-ms budget
+        self.assertEqual(set(at16[at16["top"]]["sampler"]), {"b", "c"})
+
+
+if __name__ == "__main__":
+    unittest.main()
