@@ -233,7 +233,7 @@ TEST(SweepReferenceError, AliasingAgreesBetween256And4096SppReferencesWhileTheUn
 // The bundled studies: references at least 64 x the highest spp, the three targets; the presented study at 256 px
 // with every sampler and filter and no per-configuration images.
 TEST(SweepPresets, ConvergedReferencesAndThreeTargets) {
-  for (const std::string name : {"default", "full"}) {
+  for (const std::string name : {"default", "presented", "full"}) {
     StudyConfig c;
     ASSERT_TRUE(applyStudyPreset(name, c)) << name;
     EXPECT_GE(c.refSpp, 64 * *std::max_element(c.spp.begin(), c.spp.end())) << name;
