@@ -5,9 +5,9 @@
 //            spp 4, 16, 64, 8 seeds, references at 4096 spp (64 x the highest
 //            spp), images on; results/study (under 15 minutes on 2 cores,
 //            results/study_speed.md).
-//   presented: the study results/index.html presents: `full` on 8 of the 10
-//            scenes (not gem, reflective_refractive: the costliest to trace);
-//            results/presented; about an hour on 2 cores.
+//   presented: the study results/index.html presents: `full` on 5 scenes
+//            (zoneplate, siemens, checker_horizon, fence, sinc) at radii 0.5,
+//            1, 2; results/presented; about 45 minutes on 2 cores.
 //   full:    every scene at 256 px on the larger side, every sampler and
 //            filter (uniform-shifted among them), radii 0.5, 1, 1.5, 2, spp 4,
 //            16, 64, 8 seeds, references at 4096 spp, no per-configuration
