@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# The full reference study, the one the page presents (docs/science.md, "The
-# full study"): every bundled scene at 256 px on the larger side, every sampler
-# and filter, radii 0.5, 1, 1.5, 2, spp 4, 16, 64, 8 seeds, references at
-# 4096 spp (64 x the highest spp), three targets (area, gaussian:1.5,
-# lanczos:3: one CSV row per configuration and target), no per-configuration
-# images: `sweep --preset full`, sharded. Hours of work (results/study_speed.md,
-# "The full study").
+# The full study (docs/science.md, "The bundled studies"): every bundled scene
+# at 256 px on the larger side, every sampler and filter, radii 0.5, 1, 1.5, 2,
+# spp 4, 16, 64, 8 seeds, references at 4096 spp (64 x the highest spp), three
+# targets (area, gaussian:1.5, lanczos:3: one CSV row per configuration and
+# target), no per-configuration images: `sweep --preset full`, sharded. Hours
+# of work (results/study_speed.md); not committed. The study results/index.html
+# presents is the smaller `sweep --preset presented` (5 scenes, radii 0.5, 1,
+# 2; results/presented), sharded the same way with
+#   experiments/sweep/parallel_sweep.sh N --preset presented --out results/presented --threads 1
 #
 #   bash experiments/run_full_study.sh [N] [extra sweep options...]
 #       GNU parallel on this machine: N shards (default: the number of cores),
@@ -19,7 +21,7 @@
 # it), reference manifests in results/study_full/references, the reference
 # cache in results/cache/refs. Rerunning the same command resumes every shard
 # where it stopped; nothing finished is lost. Then, e.g.:
-#   /usr/bin/python3 -m analysis report results --study results/study_full/study.csv
+#   /usr/bin/python3 -m analysis report results/study_full --study results/study_full/study.csv --link
 # Environment: SWEEP (sweep binary, default build/bin/sweep), JOBS (parallel
 # jobs at once, default N).
 set -euo pipefail
