@@ -112,7 +112,7 @@ TEST(Integrity, ShardsAndASharedCacheWorkSideBySide) {
   std::vector<std::string> a{kSweep}, b{kSweep}, c{kSweep};
   auto tinyArgs = [](std::vector<std::string>& v, const std::vector<std::string>& extra) {
     for (const char* x : {"--spp", "4", "--filters", "box", "--radii", "1", "--ref-spp", "32", "--size", "8", "8",
-                          "--cache", "cache", "--quiet", "--no-images", "--threads", "1"})
+                          "--cache", "cache", "--quiet", "--no-images", "--threads", "1", "--target", "area"})
       v.push_back(x);
     v.insert(v.end(), extra.begin(), extra.end());
   };
