@@ -148,6 +148,38 @@ TEST(SweepTargets, TheTermsOfEachTargetAndItsOwnColumns) {
   }
 }
 
+// The shifted grid: one offset of the whole image's grid per seed, so its error (structured for each seed) varies
+// from seed to seed: not deterministic, a positive noise and standard error, per-seed values that differ. The fixed
+// grid beside it stays deterministic.
+TEST(SweepTargets, TheShiftedGridHasASpreadTheFixedGridHasNot) {
+  const fs::path out = workDir() / "grids";
+  std::string output;
+  ASSERT_EQ(run("--scenes " + kScene + " --size 16 16 --samplers uniform,uniform-shifted --spp 4 --filters box "
+                "--radii 0.5 --seeds 4 --ref-spp 256 --threads 2 --quiet --no-images --target area --cache " +
+                    (workDir() / "cache").string() + " --out " + out.string(),
+                &output),
+            0)
+      << output;
+  const auto all = rows((out / "study.csv").string());
+  ASSERT_EQ(all.size(), 2u);
+  for (const auto& f : all) {
+    std::set<std::string> perSeed;
+    std::stringstream ss(f[col("mse_target_seeds")]);
+    for (std::string x; std::getline(ss, x, ';');) perSeed.insert(x);
+    if (f[col("sampler")] == "uniform-shifted") {
+      EXPECT_EQ(f[col("deterministic")], "0");
+      EXPECT_GT(num(f, "noise"), 0.0);
+      EXPECT_GT(num(f, "mse_se"), 0.0);
+      EXPECT_GT(num(f, "noise_se"), 0.0);
+      EXPECT_EQ(perSeed.size(), 4u) << f[col("mse_target_seeds")];
+    } else {
+      EXPECT_EQ(f[col("deterministic")], "1");
+      EXPECT_EQ(num(f, "noise"), 0.0);
+      EXPECT_EQ(perSeed.size(), 1u) << f[col("mse_target_seeds")];
+    }
+  }
+}
+
 TEST(SweepTargets, AConfigurationIsDoneOnlyWhenAllItsTargetRowsArePresent) {
   const auto expected = rows(targetCsv());
   // Drop one target row of one configuration and every row of another: both are measured again, the
