@@ -119,15 +119,24 @@ TEST_P(EachProgram, HelpFollowsTheGrammar) {
           << p << " " << n << " takes a space-separated list: " << o.text;
       // one name per concept: singular names one value, plural names a comma list
       for (const char* one : {"--sampler", "--filter", "--scene"}) {
-        if (n == one) EXPECT_FALSE(list) << p << " " << n << " (singular) takes a list: " << o.text;
-        if (n == std::string(one) + "s") EXPECT_TRUE(list) << p << " " << n << " (plural) takes one value: " << o.text;
+        if (n == one) {
+          EXPECT_FALSE(list) << p << " " << n << " (singular) takes a list: " << o.text;
+        }
+        if (n == std::string(one) + "s") {
+          EXPECT_TRUE(list) << p << " " << n << " (plural) takes one value: " << o.text;
+        }
       }
-      if (n == "--out") EXPECT_NE(o.text.find("folder"), std::string::npos) << p << ": --out names a folder: " << o.text;
-      if (n == "--output") EXPECT_NE(o.text.find("file"), std::string::npos) << p << ": --output names a file: " << o.text;
+      if (n == "--out") {
+        EXPECT_NE(o.text.find("folder"), std::string::npos) << p << ": --out names a folder: " << o.text;
+      }
+      if (n == "--output") {
+        EXPECT_NE(o.text.find("file"), std::string::npos) << p << ": --output names a file: " << o.text;
+      }
       // numeric options show their default or range (the raytracer states its own in words)
       const bool numeric = o.opts.find("INT") != std::string::npos || o.opts.find("FLOAT") != std::string::npos;
-      if (numeric && p != "raytracer" && o.text.find("REQUIRED") == std::string::npos)
+      if (numeric && p != "raytracer" && o.text.find("REQUIRED") == std::string::npos) {
         EXPECT_NE(o.text.find("default"), std::string::npos) << p << " " << n << " shows no default: " << o.text;
+      }
     }
   }
   EXPECT_TRUE(version) << p << " has no --version:\n" << h;
