@@ -15,6 +15,16 @@ from ..aliaslab_analysis import findings, study_csv
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 COMMITTED = os.path.join(REPO, "results", "study", "study.csv")
+PRESENTED = os.path.join(REPO, "results", "presented", "study.csv")
+RESULTS_README = os.path.join(REPO, "results", "README.md")
+
+
+def findings_section(markdown):
+    """The '## Findings' section of a Markdown text, without its 'Generated from' line (which names the path)."""
+    start = markdown.index("## Findings")
+    end = markdown.find("\n## ", start + 1)
+    lines = markdown[start:end if end >= 0 else len(markdown)].strip().splitlines()
+    return "\n".join(l for l in lines if not l.startswith("_Generated from"))
 
 
 def expected(rows, claim):
@@ -159,6 +169,20 @@ class Recomputed(unittest.TestCase):
         found = self.check(COMMITTED)
         study = next(f for f in found if f.key == "study")
         self.assertIn("quick study", study.text)
+
+    @unittest.skipUnless(os.path.isfile(PRESENTED), "no committed presented study")
+    def test_the_committed_presented_study(self):
+        found = self.check(PRESENTED)
+        self.assertIn("answer:box:0.5", [f.key for f in found])
+
+    @unittest.skipUnless(os.path.isfile(PRESENTED), "no committed presented study")
+    def test_results_readme_states_the_findings_the_code_computes(self):
+        """results/README.md's findings section is the generator's output on the committed CSV, word for word: a
+        number edited by hand, or a CSV changed without regenerating the section, fails here."""
+        from ..aliaslab_analysis.report.cli import findings_markdown
+        with open(RESULTS_README, encoding="utf-8") as f:
+            stated = findings_section(f.read())
+        self.assertEqual(stated, findings_section(findings_markdown(PRESENTED)))
 
     def test_the_numbers_appear_in_the_text_as_stated(self):
         with tempfile.TemporaryDirectory() as tmp:
