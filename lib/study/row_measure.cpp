@@ -32,24 +32,7 @@ void RowMeasure::add(const Image& image) {
   s_->spectrum.add(image);
 }
 
-RowResult RowMeasure::result() const {
-  const Metrics m = s_->metrics.result();
-  RowResult r;
-  r.mse = m.mse, r.mseSe = m.mseSe, r.aliasing = m.aliasing, r.aliasingSe = m.aliasingSe;
-  r.noise = m.noise, r.noiseSe = m.noiseSe, r.psnr = m.psnr, r.refVar = m.refVar;
-  r.deterministic = m.deterministic;
-  r.spectrum = s_->spectrum.result();
-  for (size_t j = 0; j < m.targets.size(); ++j) {
-    const TargetMetrics& t = m.targets[j];
-    const SpectrumTargetMetrics& st = r.spectrum.targets[j];
-    RowTargetResult x;
-    x.mseTarget = t.mseTarget, x.mseTargetSe = t.mseTargetSe, x.blur = t.blur, x.blurSe = t.blurSe;
-    x.cross = t.cross, x.refVar = t.refVar, x.perSeed = t.perSeed;
-    x.blurredMse = st.blurredMse, x.lowfreqError = st.lowfreqError, x.lowfreqErrorSe = st.lowfreqErrorSe;
-    r.targets.push_back(std::move(x));
-  }
-  return r;
-}
+RowResult RowMeasure::result() const { return {s_->metrics.result(), s_->spectrum.result()}; }
 
 Image RowMeasure::noiseMap() const { return s_->metrics.noiseMap(); }
 

@@ -17,22 +17,11 @@
 
 namespace aliaslab {
 
-/// The terms against one target T.
-struct RowTargetResult {
-  double mseTarget = 0, mseTargetSe = 0;  ///< corrected: mean_k mean (I_k - T)^2 - mean Var T
-  double blur = 0, blurSe = 0;            ///< mean (G - T)^2 - mean Var(G - T)
-  double cross = 0;                       ///< mse_target - noise - aliasing - blur
-  double refVar = 0;                      ///< mean Var T (target_ref_error)
-  std::vector<double> perSeed;            ///< per seed: corrected mse_target of image k (mean = mseTarget)
-  double blurredMse = 0, lowfreqError = 0, lowfreqErrorSe = 0;  ///< spectrum measures of I_k - T
-};
-
+/// A configuration's measures: against G and every target (metrics.targets[j], spectrum.targets[j] in the order
+/// given to the constructor).
 struct RowResult {
-  double mse = 0, mseSe = 0, aliasing = 0, aliasingSe = 0, noise = 0, noiseSe = 0, psnr = 0;  ///< against G
-  double refVar = 0;          ///< mean Var G (ref_error)
-  bool deterministic = false;  ///< the K images identical bit for bit
-  std::vector<RowTargetResult> targets;  ///< in the order given to the constructor
-  SpectrumMetrics spectrum;   ///< against G (the spectrum files; lowfreq/blurred _own)
+  Metrics metrics;
+  SpectrumMetrics spectrum;
 };
 
 class RowMeasure {

@@ -74,7 +74,8 @@ std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const s
 
 void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaIndex, const fs::path& imageDir,
                bool images, const GroupSpent& spent, int seeds, SpectrumMetrics& sm) {
-  const RowResult m = p.measure->result();
+  const RowResult result = p.measure->result();
+  const Metrics& m = result.metrics;
   CsvRow base = p.row;
   base.mse = m.mse, base.aliasing = m.aliasing, base.noise = m.noise, base.psnr = m.psnr;
   base.mseArea = m.targets[areaIndex].mseTarget;
@@ -87,19 +88,20 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
   base.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
   base.traceMs = p.traceMs, base.reconstructMs = p.reconMs;
   cpuMeanAndSe(p.cpuMs, base.cpuMs, base.cpuMsSe);
-  sm = m.spectrum;
+  sm = result.spectrum;
   base.lowfreqErrorOwn = sm.lowfreqError, base.lowfreqErrorOwnSe = sm.lowfreqErrorSe;
   base.blurredMseOwn = sm.blurredMse;
   p.rows.clear();
   for (size_t j = 0; j < targets.size(); ++j) {
     if (!p.missing[j]) continue;
-    const RowTargetResult& t = m.targets[j];
+    const TargetMetrics& t = m.targets[j];
+    const SpectrumTargetMetrics& st = sm.targets[j];
     CsvRow r = base;
     r.target = targets[j].label;
     r.mseTarget = t.mseTarget, r.mseTargetSe = t.mseTargetSe, r.blur = t.blur, r.blurSe = t.blurSe, r.cross = t.cross;
     r.targetRefError = t.refVar;
     r.mseTargetSeeds = t.perSeed;
-    r.lowfreqError = t.lowfreqError, r.lowfreqErrorSe = t.lowfreqErrorSe, r.blurredMse = t.blurredMse;
+    r.lowfreqError = st.lowfreqError, r.lowfreqErrorSe = st.lowfreqErrorSe, r.blurredMse = st.blurredMse;
     r.flip = p.flipSums[j] / seeds;
     r.flagged = r.mseTarget < 2.0 * r.mseTargetSe ? 1 : 0;
     p.rows.push_back(std::move(r));
