@@ -3,8 +3,11 @@ the study's targets in their order.
 
   deterministic  the CSV's column (1: every seed gave the same image, the fixed grid), else inferred:
                  noise 0 and a standard error of at most 1e-12 of the error (older CSVs wrote ~1e-19)
-  cost, cost_se  cpu_ms, cpu_ms_se (thread CPU time and its spread over seeds), else the wall time
-                 time_ms with an unknown spread (NaN): time differences are then compared as exact numbers
+  cost, cost_se  cpu_ms and sqrt(cpu_ms_se^2 + (COST_FLOOR cpu_ms)^2): the thread CPU time, its spread
+                 over seeds and a floor for what the seeds do not see, the spread between runs of the same
+                 configuration (COST_FLOOR = 0.15 of cpu_ms, measured: results/study_speed.md "Thread CPU
+                 time per configuration"); else the wall time time_ms with an unknown spread (NaN): time
+                 differences are then compared as exact numbers
   seed_values    mse_target_seeds as float arrays (None where absent): paired comparisons within a sample
                  set (stats/ties.py); without them those comparisons are unpaired (conservative)
 targets(df) lists the targets, the primary first: box:0.5 (the pixel area) when present, else the CSV's
@@ -15,6 +18,8 @@ import numpy as np
 from .stats.ties import parse_seeds
 
 PRIMARY_TARGET = "box:0.5"
+# The run-to-run spread of cpu_ms per configuration, relative (module doc).
+COST_FLOOR = 0.15
 
 
 def add_columns(df, notes):
@@ -33,7 +38,8 @@ def add_columns(df, notes):
                          f"about 0 ({names}) are taken as deterministic (the same image for every seed).")
     if "cpu_ms" in df.columns:
         df["cost"] = df["cpu_ms"]
-        df["cost_se"] = df["cpu_ms_se"] if "cpu_ms_se" in df.columns else np.nan
+        seed_se = df["cpu_ms_se"].to_numpy(dtype=float) if "cpu_ms_se" in df.columns else np.zeros(len(df))
+        df["cost_se"] = np.hypot(np.nan_to_num(seed_se), COST_FLOOR * df["cpu_ms"].to_numpy(dtype=float))
     else:
         df["cost"] = df["time_ms"]
         df["cost_se"] = np.nan

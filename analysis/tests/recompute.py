@@ -33,12 +33,16 @@ def read(path):
         d["spp"] = int(d["spp"])
         d["err"] = num(r["mse_target"]) if "mse_target" in r else d["mse_area"]
         d["se"] = num(r.get("mse_target_se"))
+        d["tre"] = num(r.get("target_ref_error", r.get("ref_error")))
         if "deterministic" in r:
             d["det"] = num(r["deterministic"]) != 0
         else:
             d["det"] = d["noise"] == 0 and math.isfinite(d["se"]) and d["se"] <= 1e-12 * max(abs(d["err"]), 1e-300)
         if "cpu_ms" in r:
-            d["cost"], d["cost_se"] = num(r["cpu_ms"]), num(r.get("cpu_ms_se"))
+            seed_se = num(r.get("cpu_ms_se"))
+            d["cost"] = num(r["cpu_ms"])
+            # the seeds' se and the 15 % run-to-run floor (study_rows.COST_FLOOR), added in quadrature
+            d["cost_se"] = math.sqrt((seed_se if math.isfinite(seed_se) else 0.0) ** 2 + (0.15 * d["cost"]) ** 2)
         else:
             d["cost"], d["cost_se"] = d["trace_ms"] + d["reconstruct_ms"], math.nan
         seeds = [p for p in (r.get("mse_target_seeds") or "").split(";") if p.strip()]

@@ -86,8 +86,14 @@ def expected(rows, claim):
         return sum(1 for r in prim if r["aliasing"] < 0)
     if k == "flagged_rows":
         return sum(1 for r in rows if r["flagged"] == 1)
-    if k == "flagged_sampler":
-        return sum(1 for r in rows if r["flagged"] == 1 and r["sampler"] == claim["sampler"])
+    if k in ("unstable_rows", "reference_limited_rows", "unstable_filter"):
+        def limited(r):  # raw error (before the reference variance is subtracted) within 10x that variance
+            ref = r["tre"] if math.isfinite(r["tre"]) else 0.0
+            return r["err"] + ref <= 10.0 * ref
+        pick = [r for r in rows if r["flagged"] == 1 and limited(r) == (k == "reference_limited_rows")]
+        if k == "unstable_filter":
+            pick = [r for r in pick if r["filter"] == claim["filter"] and r["radius"] == claim["radius"]]
+        return len(pick)
     if k == "undetermined" and "spp" not in claim:
         return None
     if k == "deterministic_rows":

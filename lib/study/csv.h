@@ -17,7 +17,8 @@
 // by ';', their mean is mse_target). Every mean square that holds a reference estimate has that reference's
 // variance subtracted (measure/metrics.h), so an unbiased configuration has aliasing 0 within its *_se.
 // flagged: 1 when mse_target < 2 mse_target_se (the error cannot be told from zero given the seeds' and the
-// references' error). deterministic: 1 when the K images were identical (the fixed grid: no standard error).
+// references' error; the analysis tells the two reasons apart, reference-limited or unstable: docs/science.md
+// "Flagged rows"). deterministic: 1 when the K images were identical (the fixed grid: no standard error).
 // (mean_spp, max_spp: samples per pixel actually spent, the mean over pixels
 // and seeds and the largest in any pixel of any seed; both equal spp for a
 // fixed sampler and differ for adaptive ones, render/adaptive.h.

@@ -1,9 +1,10 @@
 """Where the error comes from, what an own-mse ranking would pick, aliasing within error, and the rows that
-cannot be ranked (flagged, undetermined): all against the primary target, counts over its rows (the
+cannot be ranked (flagged: unstable or reference-limited, stats/flags.py; undetermined): all against the primary target, counts over its rows (the
 target-independent columns repeat once per target)."""
 import numpy as np
 
 from ..charts.decomposition import components
+from ..stats import flags
 from .study import Finding, fmt, method_name
 
 WORDS = {"noise": "noise", "aliasing": "aliasing", "blur": "blur", "cross": "the cross term",
@@ -66,19 +67,27 @@ def aliasing_zero(s):
 
 def unrankable(s):
     df = s.df
-    flagged = df[df["flagged"] == 1]
-    claims = [dict(kind="flagged_rows", value=len(flagged)), dict(kind="rows", value=len(df))]
-    by = flagged.groupby("sampler").size().sort_values(ascending=False, kind="stable")
-    for sampler, n in by.items():
-        claims.append(dict(kind="flagged_sampler", sampler=sampler, value=int(n)))
+    kind = flags.kinds(df)
+    n_flag = int((kind != "").sum())
+    unstable = df[kind == flags.UNSTABLE]
+    n_ref = int((kind == flags.REFERENCE_LIMITED).sum())
+    claims = [dict(kind="flagged_rows", value=n_flag), dict(kind="rows", value=len(df)),
+              dict(kind="unstable_rows", value=len(unstable)), dict(kind="reference_limited_rows", value=n_ref)]
+    by = unstable.groupby(["filter_name", "radius"]).size().sort_values(ascending=False, kind="stable")
+    for (name, radius), n in by.items():
+        claims.append(dict(kind="unstable_filter", filter=name, radius=float(radius), value=int(n)))
     und = s.ranked[s.ranked["undetermined"]]
     claims.append(dict(kind="undetermined", value=len(und)))
-    text = (f"{len(flagged)} of {len(df)} rows are flagged by the sweep (docs/science.md states the rule)"
-            + (": " + ", ".join(f"{k} {int(v)}" for k, v in by.items()) if len(by) else "")
-            + ". Flagged rows are drawn hollow on every chart and stay in every ranking and count. "
+    text = (f"{n_flag} of {len(df)} rows are flagged by the sweep: their error against the target is within two "
+            f"standard errors of zero (docs/science.md). {len(unstable)} of them are unstable: their error is more "
+            f"than {flags.REF_LIMIT:g}x what the target reference's own error explains, so certainly not small, "
+            "but its spread over the seeds is as large as its mean (a few seeds carry most of it)"
+            + (": " + ", ".join(f"{name} r={radius:g} {int(n)}" for (name, radius), n in by.items()) if len(by) else "")
+            + f". {n_ref} are reference-limited (error within {flags.REF_LIMIT:g}x the reference's own). "
+            "Flagged rows are drawn hollow on every chart. "
             f"{len(und)} row(s) are undetermined (error not told from zero and too uncertain to be a tie for the "
             "top): shown, not ranked.")
-    return Finding("flagged", "Flagged and undetermined rows", text, claims)
+    return Finding("flagged", "Flagged rows: unstable or reference-limited", text, claims)
 
 
 def findings(s):

@@ -9,6 +9,7 @@ errors; none picks a winner by the point estimate alone.
   fronts.py     the error-vs-time front with ties (a point leaves it only when another is significantly
                 better and not significantly slower) and the top groups at equal time
   bootstrap.py  the seeded bootstrap of a median over scenes
+  flags.py      why a flagged row is flagged: unstable (heavy-tailed) or reference-limited
 The rules and their constants (Z, the bootstrap's seed and size) are stated in each module's doc and on
 the page.
 """
