@@ -400,7 +400,8 @@ TEST(SweepTarget, DefaultTargetIsThePixelAreaWrittenBox05EqualToMseAreaWithStand
 }
 
 TEST(SweepBadInput, AnUnusableTargetIsRefusedNamingTheOption) {
-  for (const std::string target : {"nosuch:1", "gaussian", "box:-1", "box:x", ":1"}) {
+  for (const std::string target : {"nosuch:1", "gaussian", "box:-1", "box:x", ":1", "area,area", "area,nosuch:1",
+                                   "area,box:0.5"}) {
     const fs::path out = workDir() / "badtarget";
     std::string output;
     EXPECT_EQ(run("--scenes " + kScene + " --size 8 8 --seeds 2 --ref-spp 32 --quiet --out " + out.string() +
