@@ -6,6 +6,7 @@
 #include <cmath>
 
 namespace aliaslab::flipcolour {
+namespace {  // one copy per translation unit (flip_fastmath.h says why)
 
 using V3 = std::array<double, 3>;
 
@@ -45,4 +46,5 @@ inline std::array<T, 3> huntFromF(const T& fx, const T& fy, const T& fz) {
   return {L, 0.01 * L * a, 0.01 * L * b};
 }
 
+}  // namespace
 }  // namespace aliaslab::flipcolour

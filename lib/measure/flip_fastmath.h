@@ -12,7 +12,10 @@
 #include <cstdint>
 #include <cstring>
 
+// (An unnamed namespace: each translation unit has its own copy, so the one built for AVX2 never lends its
+// code to the others.)
 namespace aliaslab::flipmath {
+namespace {
 
 // (GCC ignores vector_size on an alias template whose size depends on its parameter: one struct per width.)
 template <int L> struct Lanes;
@@ -86,4 +89,5 @@ template <int L>
   return p * scale;
 }
 
+}  // namespace
 }  // namespace aliaslab::flipmath

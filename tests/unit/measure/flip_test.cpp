@@ -78,6 +78,18 @@ TEST(Flip, FastMeanIsWithinTheToleranceOfTheDefinitionOnRenders) {
   }
 }
 
+TEST(Flip, SseAndAvxPathsGiveTheSameBits) {
+  // convolutionLanes() = 2 keeps every FLIP stage on SSE2 (on a CPU without AVX2 both runs take that path)
+  const Image ref = render("vase.txt", 16, 7), test = render("vase.txt", 4, 8);
+  const std::vector<float> wide = FlipReference(ref).map(test);
+  const int before = convolutionLanes();
+  convolutionLanes() = 2;
+  const std::vector<float> narrow = FlipReference(ref).map(test);
+  convolutionLanes() = before;
+  ASSERT_EQ(wide.size(), narrow.size());
+  for (size_t i = 0; i < wide.size(); ++i) ASSERT_EQ(wide[i], narrow[i]) << "pixel " << i;
+}
+
 TEST(Flip, OneImageAgainstManyTargetsGivesEachTargetsNumber) {
   const Image a = render("siemens.txt", 4, 3), b = render("siemens.txt", 64, 4), c = render("siemens.txt", 16, 5);
   const FlipReference tb(b), tc(c), ta(a);
