@@ -10,12 +10,18 @@
 // in pixels per degree of visual angle (default: 67, a 0.7 m wide 4K screen
 // seen from 0.7 m, the paper's default). The map is symmetric in its two
 // arguments and a pure function of them.
+//
+// Precision: the cube roots, hypotenuses and powers per pixel are computed by range reduction and series, two
+// pixels per instruction (flip_fastmath.h); the map is within about 1e-12 per pixel, and the mean within the
+// documented tolerance of 1e-6, of the scalar definition with libm (flip_definition.h, the reference
+// implementation the tests compare against). The convolutions are exact sums, the same bits on every path.
 #pragma once
 #include <array>
 #include <atomic>
 #include <vector>
 
 #include "core/image.h"
+#include "measure/flip_planes.h"
 
 namespace aliaslab {
 
@@ -35,6 +41,8 @@ double meanFlip(const Image& test, const Image& reference, double pixelsPerDegre
 /// is done once per scene instead. map()/mean() give exactly the numbers of
 /// flipMap()/meanFlip() with this reference (same arithmetic, same order).
 /// Read-only after construction, so one object may serve many threads.
+/// meanFlips compares one image with several such targets, preparing the
+/// image's side once (the sweep's row against its three targets).
 class FlipReference {
  public:
   explicit FlipReference(const Image& reference, double pixelsPerDegree = kFlipDefaultPixelsPerDegree);
@@ -42,11 +50,15 @@ class FlipReference {
   double mean(const Image& test) const;
 
  private:
-  int width_, height_;
+  friend std::vector<double> meanFlips(const Image&, const std::vector<const FlipReference*>&);
+  FlipPlanes prepare(const Image& test) const;  ///< the test image's planes (checks its size)
   double ppd_;
-  std::vector<std::array<double, 3>> lab_;
-  std::vector<double> edge_, point_;
+  FlipPlanes planes_;
 };
+
+/// mean(test) against each target, in order: the same numbers as targets[j]->mean(test), the image's stages 1
+/// and 2 done once. Targets must share size and viewing condition (std::invalid_argument otherwise).
+std::vector<double> meanFlips(const Image& test, const std::vector<const FlipReference*>& targets);
 
 /// The separable convolution behind both pipelines, exposed for tests: convolveY(convolveX(in, kx), ky) of a
 /// w x h row-major plane, kernels of odd length centred on the pixel, indices clamped at the edges; every

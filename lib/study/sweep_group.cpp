@@ -102,7 +102,7 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
     }
   }
   const Stopwatch flip;
-  for (const FlipReference* t : p.flipTargets) out.flip.push_back(t->mean(out.r.image));
+  out.flip = meanFlips(out.r.image, p.flipTargets);  // the image's side of FLIP once for every target
   out.flipS = flip.seconds();
   g.inFlight.add(imageBytes(g.scene.width, g.scene.height));
   return out;
