@@ -18,27 +18,41 @@ Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height
 }
 
 void Work::trace(const std::vector<std::vector<Request>>& requests) {
-  std::map<int, std::unique_ptr<Sampler>> samplers;  // by count, built before the parallel part
+  // samplers by (count, index of the part among equal counts), built before the parallel part; the part index
+  // goes into the seed, so two parts of one count in one cell are independent
+  std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
+  std::map<int, std::vector<int>> parts;
   long long total = 0;
   for (const auto& list : requests)
-    for (const Request& r : list)
-      if (r.n > 0 && !samplers.count(r.n)) samplers[r.n] = a_.baseSampler(r.n, round_);
-  for (const auto& list : requests)
-    for (const Request& r : list) total += r.n;
+    for (const Request& r : list) {
+      if (r.n <= 0) continue;
+      total += r.n;
+      if (!parts.count(r.n)) parts[r.n] = this->parts(r.n);
+      std::map<int, int> seen;
+      for (int part : parts.at(r.n)) {
+        const std::pair<int, int> key{part, seen[part]++};
+        if (!samplers.count(key))
+          samplers[key] = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
+      }
+    }
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;
       for (const Request& r : requests[p]) {
         if (r.n <= 0) continue;
-        u.resize(r.n);
-        samplers.at(r.n)->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
         const double side = std::ldexp(1.0, -r.level);
-        for (const Vec2& q : u) {
-          FilmSample s;
-          s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
-          s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-          px_[p].push_back(s);
+        std::map<int, int> seen;
+        for (int part : parts.at(r.n)) {
+          u.resize(part);
+          samplers.at({part, seen[part]++})->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
+          for (const Vec2& q : u) {
+            FilmSample s;
+            s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
+            s.weight = r.weight;
+            s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
+            px_[p].push_back(s);
+          }
         }
       }
     }
@@ -50,11 +64,27 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
   }
 }
 
-void Work::tracePixels(const std::vector<int>& add) {
+void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share) {
   std::vector<std::vector<Request>> requests(N_);
   for (long long p = 0; p < N_; ++p)
-    if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p]});
+    if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p], static_cast<float>(share[p] / add[p])});
   trace(requests);
+}
+
+bool Work::fullQuality(int n) const {
+  auto it = quality_.find(n);
+  if (it == quality_.end()) it = quality_.emplace(n, a_.baseSampler(n, 0)->warning().empty()).first;
+  return it->second;
+}
+
+std::vector<int> Work::parts(int n) const {
+  std::vector<int> out;
+  while (n > 0) {
+    int c = n;
+    while (c > 1 && !fullQuality(c)) --c;
+    out.push_back(c), n -= c;
+  }
+  return out;
 }
 
 std::vector<long long> Work::rank(const std::vector<double>& priority) const {
@@ -68,13 +98,14 @@ std::vector<long long> Work::rank(const std::vector<double>& priority) const {
   return order;
 }
 
-void Work::spendEvenly(const std::vector<double>& priority) {
-  if (left() <= 0) return;
-  const long long q = left() / N_, extra = left() % N_;
+std::vector<int> Work::evenly(long long amount, const std::vector<double>& priority) const {
+  const long long q = std::max(0LL, amount) / N_, extra = std::max(0LL, amount) % N_;
   std::vector<int> add(N_, static_cast<int>(q));
-  const auto order = rank(priority);
-  for (long long k = 0; k < extra; ++k) ++add[order[k]];
-  tracePixels(add);
+  if (extra > 0) {
+    const auto order = rank(priority);
+    for (long long k = 0; k < extra; ++k) ++add[order[k]];
+  }
+  return add;
 }
 
 void Work::pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const {
