@@ -77,9 +77,9 @@ void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
   std::vector<int> fresh(w.pixels(), 1);
   long long left = w.left() - w.pixels();
   const int cap = freshCap(a, n0);
-  const std::vector<long long> order = w.rank(ratio);
   long long marked = 0;
-  while (marked < w.pixels() && ratio[order[marked]] > 1.0) ++marked;
+  for (double r : ratio) marked += r > 1.0;
+  const std::vector<long long> order = w.rank(ratio, marked);
   if (marked > 0) {
     const long long each = std::min<long long>(cap - 1, left / marked);
     const long long extra = each < cap - 1 ? left - each * marked : 0;

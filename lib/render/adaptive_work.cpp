@@ -15,43 +15,50 @@ Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height
     : tracer_(tracer), a_(a), W_(width), H_(height), threads_(threads), progress_(progress),
       N_(static_cast<long long>(width) * height), B_(N_ * a.spp()), px_(N_), hash_(N_) {
   for (long long p = 0; p < N_; ++p) hash_[p] = hashWords(a.seed(), 0x72616e6bULL, static_cast<uint64_t>(p));
+  for (auto& v : px_) v.reserve(a.spp());  // one allocation per pixel for the flat share
 }
 
 void Work::trace(const std::vector<std::vector<Request>>& requests) {
-  // samplers by (count, index of the part among equal counts), built before the parallel part; the part index
-  // goes into the seed, so two parts of one count in one cell are independent
+  // Before the parallel part: for every count n requested, the samplers of its parts (by part count and the
+  // index of the part among equal counts, which goes into the seed so two parts of one count in a cell are
+  // independent), as a plan indexed by n that the workers only read.
   std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
-  std::map<int, std::vector<int>> parts;
+  std::vector<std::vector<const Sampler*>> plan;
   long long total = 0;
   for (const auto& list : requests)
     for (const Request& r : list) {
       if (r.n <= 0) continue;
       total += r.n;
-      if (!parts.count(r.n)) parts[r.n] = this->parts(r.n);
+      if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
+      if (!plan[r.n].empty()) continue;
       std::map<int, int> seen;
-      for (int part : parts.at(r.n)) {
+      for (int part : parts(r.n)) {
         const std::pair<int, int> key{part, seen[part]++};
-        if (!samplers.count(key))
-          samplers[key] = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
+        auto& s = samplers[key];
+        if (!s) s = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
+        plan[r.n].push_back(s.get());
       }
     }
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;
+      std::vector<FilmSample>& out = px_[p];
+      size_t adding = 0;
+      for (const Request& r : requests[p]) adding += static_cast<size_t>(std::max(0, r.n));
+      if (out.size() + adding > out.capacity()) out.reserve(out.size() + adding);  // once per pixel and round
       for (const Request& r : requests[p]) {
         if (r.n <= 0) continue;
         const double side = std::ldexp(1.0, -r.level);
-        std::map<int, int> seen;
-        for (int part : parts.at(r.n)) {
-          u.resize(part);
-          samplers.at({part, seen[part]++})->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
+        for (const Sampler* sampler : plan[r.n]) {
+          u.resize(sampler->spp());
+          sampler->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
           for (const Vec2& q : u) {
             FilmSample s;
             s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
             s.weight = r.weight;
             s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-            px_[p].push_back(s);
+            out.push_back(s);
           }
         }
       }
@@ -87,14 +94,18 @@ std::vector<int> Work::parts(int n) const {
   return out;
 }
 
-std::vector<long long> Work::rank(const std::vector<double>& priority) const {
+std::vector<long long> Work::rank(const std::vector<double>& priority, long long first) const {
   std::vector<long long> order(N_);
   for (long long p = 0; p < N_; ++p) order[p] = p;
-  std::sort(order.begin(), order.end(), [&](long long a, long long b) {
+  const auto before = [&](long long a, long long b) {
     if (priority[a] != priority[b]) return priority[a] > priority[b];
     if (count(a) != count(b)) return count(a) < count(b);
     return hash_[a] != hash_[b] ? hash_[a] < hash_[b] : a < b;
-  });
+  };
+  const long long k = std::clamp(first, 0LL, N_);
+  if (k < N_) std::nth_element(order.begin(), order.begin() + k, order.end(), before);  // the first k, unsorted
+  std::sort(order.begin(), order.begin() + k, before);
+  order.resize(k);
   return order;
 }
 
@@ -102,7 +113,7 @@ std::vector<int> Work::evenly(long long amount, const std::vector<double>& prior
   const long long q = std::max(0LL, amount) / N_, extra = std::max(0LL, amount) % N_;
   std::vector<int> add(N_, static_cast<int>(q));
   if (extra > 0) {
-    const auto order = rank(priority);
+    const auto order = rank(priority, extra);
     for (long long k = 0; k < extra; ++k) ++add[order[k]];
   }
   return add;

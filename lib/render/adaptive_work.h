@@ -37,8 +37,9 @@ class Work {
   /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p].
   void tracePixels(const std::vector<int>& add, const std::vector<double>& share);
 
-  /// Pixels by priority descending, then count ascending, then a hash of (seed, pixel): a strict order.
-  std::vector<long long> rank(const std::vector<double>& priority) const;
+  /// The first `first` pixels (all by default) by priority descending, then count ascending, then a hash of
+  /// (seed, pixel): a strict order.
+  std::vector<long long> rank(const std::vector<double>& priority, long long first = 1LL << 62) const;
 
   /// `amount` samples spread evenly: floor(amount/N) everywhere, one more in the first amount mod N pixels of
   /// rank(priority).
