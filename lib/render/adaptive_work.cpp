@@ -41,7 +41,9 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
     }
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
+    const float topY = std::nextafter(static_cast<float>(j + 1), 0.f);
     for (int i = 0; i < W_; ++i) {
+      const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
       const size_t p = static_cast<size_t>(j) * W_ + i;
       std::vector<FilmSample>& out = px_[p];
       size_t adding = 0;
@@ -49,13 +51,13 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
       if (out.size() + adding > out.capacity()) out.reserve(out.size() + adding);  // once per pixel and round
       for (const Request& r : requests[p]) {
         if (r.n <= 0) continue;
-        const double side = std::ldexp(1.0, -r.level);
+        const double side = 1.0 / static_cast<double>(1 << r.level);
         for (const Sampler* sampler : plan[r.n]) {
           u.resize(sampler->spp());
           sampler->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
           for (const Vec2& q : u) {
             FilmSample s;
-            s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
+            s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
             s.weight = r.weight;
             s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
             out.push_back(s);

@@ -56,10 +56,8 @@ class Work {
   void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
 
  private:
-  /// v as a float inside [i, i+1) (rounding of i + u could give i + 1).
-  static float inside(double v, int i) {
-    return std::clamp(static_cast<float>(v), static_cast<float>(i), std::nextafter(static_cast<float>(i + 1), 0.f));
-  }
+  /// v as a float inside [i, top] with top = the float below i + 1 (rounding of i + u could give i + 1).
+  static float inside(double v, int i, float top) { return std::clamp(static_cast<float>(v), static_cast<float>(i), top); }
 
   const Tracer& tracer_;
   const AdaptiveSampler& a_;
