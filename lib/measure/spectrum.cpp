@@ -45,8 +45,12 @@ void dft2(const Image& image, const Image* subtract, int c, std::vector<Complex>
 
 int binOf(double rho) { return std::min(kSpectrumBins - 1, static_cast<int>(rho / kSpectrumBinWidth)); }
 
-double blurGain(double rho) { return std::exp(-4 * kPi * kPi * kBlurSigma * kBlurSigma * rho * rho); }
 }  // namespace
+
+double blurGain(double rho, double sigma) {
+  constexpr double pi = 3.14159265358979323846;
+  return std::exp(-4 * pi * pi * sigma * sigma * rho * rho);
+}
 
 double frequencyRadius(int u, int v, int width, int height) {
   const double fu = (u < (width + 1) / 2 ? u : u - width) / static_cast<double>(width);
@@ -95,7 +99,10 @@ SpectrumAccumulator::SpectrumAccumulator(RefEstimate reference, std::vector<RefE
     for (int u = 0; u < width_; ++u)
       radius_[static_cast<size_t>(v) * width_ + u] = frequencyRadius(u, v, width_, height_);
   gain_.resize(n);
-  for (size_t i = 0; i < n; ++i) gain_[i] = blurGain(radius_[i]);
+  for (size_t i = 0; i < n; ++i) gain_[i] = blurGain(radius_[i], kBlurSigma);
+  curveGain_.resize(n);
+  for (size_t i = 0; i < n; ++i)
+    for (size_t s = 0; s < kBlurCurve.size(); ++s) curveGain_[i][s] = blurGain(radius_[i], kBlurCurve[s]);
   sum_.assign(3 * n, Complex(0, 0));
   sumSquares_.assign(n, 0.0);
   auto sameSize = [&](const Image* im) {
@@ -127,6 +134,7 @@ SpectrumAccumulator::Energies SpectrumAccumulator::energies(const Image& image, 
     out.total += p[i];
     if (radius_[i] < kLowFrequencyCutoff) out.low += p[i];
     out.blurred += p[i] * gain_[i];
+    for (size_t s = 0; s < kBlurCurve.size(); ++s) out.curve[s] += p[i] * curveGain_[i][s];
     if (radial) radial->energy[binOf(radius_[i])] += p[i], ++radial->count[binOf(radius_[i])];
   }
   return out;
@@ -144,6 +152,7 @@ void SpectrumAccumulator::add(const Image& image) {
   const double inv = 1.0 / static_cast<double>(n);
   double low = 0, total = 0, blurred = 0;
   std::vector<double> lowT(targets_.size(), 0.0), totalT(targets_.size(), 0.0), blurredT(targets_.size(), 0.0);
+  std::vector<std::array<double, kBlurCurve.size()>> curveT(targets_.size());
   thread_local std::vector<Complex> e;  // reused image after image
   for (int c = 0; c < 3; ++c) {
     dft2(image, &reference_, c, e);
@@ -159,12 +168,15 @@ void SpectrumAccumulator::add(const Image& image) {
     for (size_t j = 0; j < targets_.size(); ++j) {  // I_k - T = e_k + (G - T)
       const Complex* shift = targets_[j].shift.data() + c * n;
       double l = 0, t = 0, b = 0;
+      std::array<double, kBlurCurve.size()> cb{};
       for (size_t i = 0; i < n; ++i) {
         const double p = std::norm(e[i] * inv + shift[i]) / 3.0;
         t += p, b += p * gain_[i];
+        for (size_t s = 0; s < kBlurCurve.size(); ++s) cb[s] += p * curveGain_[i][s];
         if (radius_[i] < kLowFrequencyCutoff) l += p;
       }
       lowT[j] += l, totalT[j] += t, blurredT[j] += b;
+      for (size_t s = 0; s < kBlurCurve.size(); ++s) curveT[j][s] += cb[s];
     }
   }
   lowFractions_.push_back(share(low, total, own_));
@@ -172,6 +184,11 @@ void SpectrumAccumulator::add(const Image& image) {
   for (size_t j = 0; j < targets_.size(); ++j) {
     targets_[j].lowFractions.push_back(share(lowT[j], totalT[j], targets_[j].halves));
     targets_[j].blurred += blurredT[j];
+    const Energies& ref = targets_[j].halves;
+    const double t = totalT[j] - ref.total;
+    std::array<double, kBlurCurve.size()> r{};
+    for (size_t s = 0; s < kBlurCurve.size(); ++s) r[s] = t > 0 ? (curveT[j][s] - ref.curve[s]) / t : 0.0;
+    targets_[j].ratios.push_back(r);
   }
   ++count_;
 }
@@ -199,6 +216,11 @@ SpectrumMetrics SpectrumAccumulator::result() const {
     SpectrumTargetMetrics tm;
     std::tie(tm.lowfreqError, tm.lowfreqErrorSe) = meanAndSe(t.lowFractions);
     tm.blurredMse = t.blurred / k - t.halves.blurred;
+    for (size_t s = 0; s < kBlurCurve.size(); ++s) {
+      std::vector<double> r;
+      for (const auto& x : t.ratios) r.push_back(x[s]);
+      std::tie(tm.blurRatio[s], tm.blurRatioSe[s]) = meanAndSe(r);
+    }
     m.targets.push_back(tm);
   }
   m.reference = ownRadial_;

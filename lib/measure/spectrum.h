@@ -46,6 +46,14 @@
 //                      image border), minus the same of D_G: blurred_mse =
 //                      mean_k sum P[e_k] g(rho) - sum P[D_G] g(rho), g =
 //                      exp(-4 pi^2 sigma^2 rho^2)
+//   blur curve (against each target T only): for each sigma of kBlurCurve,
+//                      blur_ratio = mean over k of r_k, r_k = (B_k - B_D) /
+//                      (E_k - E_D), B the energy blurred by that sigma (as
+//                      blurred_mse), E the total, of P[I_k - T] and P[D_T]
+//                      (0 when E_k - E_D <= 0), with its standard error over
+//                      the seeds. White noise gives mean over frequencies of
+//                      g(rho) = sum of the squared weights of the blur's
+//                      kernel (docs/science.md, "The blur curve").
 // The same three against each target T, from the error I_k - T: by
 // linearity its DFT is E_k + DFT(G - T), the latter computed once per target
 // (no extra FFT per image), and D_T takes the place of D_G. With no halves
@@ -55,6 +63,7 @@
 //
 // The study writes these spectra to per-scene CSV files: study/spectrum_files.h.
 #pragma once
+#include <array>
 #include <complex>
 #include <vector>
 
@@ -65,6 +74,7 @@ namespace aliaslab {
 
 inline constexpr double kLowFrequencyCutoff = 0.125;  ///< cycles per pixel: a quarter of Nyquist
 inline constexpr double kBlurSigma = 1.0;             ///< pixels: the blurred_mse Gaussian
+inline constexpr std::array<double, 4> kBlurCurve = {0.5, 1.0, 2.0, 4.0};  ///< pixels: the blur curve's sigmas
 inline constexpr double kSpectrumBinWidth = 1.0 / 64;  ///< cycles per pixel per radial bin
 inline constexpr int kSpectrumBins = 46;               ///< bins up to rho = 46/64 > sqrt(2)/2
 
@@ -89,7 +99,11 @@ double frequencyRadius(int u, int v, int width, int height);
 /// The measures against one target T (docs/science.md, "Where the error sits").
 struct SpectrumTargetMetrics {
   double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;
+  std::array<double, kBlurCurve.size()> blurRatio{}, blurRatioSe{};  ///< the blur curve, per sigma of kBlurCurve
 };
+
+/// The energy gain of a Gaussian blur of `sigma` pixels at frequency rho (cycles per pixel): exp(-4 pi^2 s^2 rho^2).
+double blurGain(double rho, double sigma);
 
 struct SpectrumMetrics {
   double lowfreqError = 0, lowfreqErrorSe = 0, blurredMse = 0;  ///< against the own reference G
@@ -112,12 +126,14 @@ class SpectrumAccumulator {
   /// What one error's share and blurred energy need: the energies of a reference's half-difference.
   struct Energies {
     double low = 0, total = 0, blurred = 0;
+    std::array<double, kBlurCurve.size()> curve{};  ///< blurred by each sigma of kBlurCurve
   };
   struct TargetState {
     std::vector<std::complex<double>> shift;  ///< per channel and frequency: DFT(G - T) / (W H)
     Energies halves;                          ///< of P[D_T]
     std::vector<double> lowFractions;         ///< f_k against T
     double blurred = 0;                       ///< sum over k of the blurred energy of I_k - T
+    std::vector<std::array<double, kBlurCurve.size()>> ratios;  ///< r_k per sigma against T
   };
   Energies energies(const Image& image, RadialSpectrum* radial) const;
   double share(double low, double total, const Energies& ref) const;
@@ -126,6 +142,7 @@ class SpectrumAccumulator {
   int width_, height_;
   std::vector<double> radius_;                      ///< rho per frequency
   std::vector<double> gain_;                        ///< blurGain(rho) per frequency (computed once)
+  std::vector<std::array<double, kBlurCurve.size()>> curveGain_;  ///< per frequency, per sigma of kBlurCurve
   std::vector<std::complex<double>> sum_;           ///< per channel and frequency: sum_k E_k / (W H)
   std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
   std::vector<double> lowFractions_;                ///< f_k

@@ -1,5 +1,5 @@
 // Adaptive sampling: the registry of names, describe(), and the counts of a traced set; see adaptive.h.
-// The three methods are in adaptive_trace.cpp, the tracing of their rounds in adaptive_work.cpp.
+// The methods are in adaptive_trace.cpp and adaptive_subdiv.cpp, the tracing of their rounds in adaptive_work.cpp.
 #include "render/adaptive.h"
 
 #include <algorithm>
@@ -22,7 +22,7 @@ const char* const kMethodNames[] = {"contrast", "error", "subdiv"};
 std::vector<std::string> keysOf(AdaptiveMethod m) {
   switch (m) {
     case AdaptiveMethod::Contrast: return {"first", "cap", "threshold", "tr", "tg", "tb"};
-    case AdaptiveMethod::Error: return {"first", "cap", "round"};
+    case AdaptiveMethod::Error: return {"first", "cap", "floor"};
     case AdaptiveMethod::Subdivision: return {"threshold", "depth"};
   }
   return {};
@@ -59,9 +59,9 @@ void setParam(AdaptiveMethod m, AdaptiveParams& p, const std::string& name, cons
   } else if (key == "cap") {
     if (!(v >= 1 && v <= 1024)) bad("in [1, 1024]");
     p.cap = v;
-  } else if (key == "round") {
-    if (!(v > 0 && v <= 1)) bad("in (0, 1]");
-    p.round = v;
+  } else if (key == "floor") {
+    if (!(v >= 0 && v <= 1)) bad("in [0, 1]");
+    p.floor = v;
   } else if (key == "depth") {
     if (!(v >= 0 && v <= 8 && v == std::floor(v))) bad("an integer in [0, 8]");
     p.depth = static_cast<int>(v);
@@ -122,15 +122,15 @@ std::string AdaptiveSampler::describe() const {
   const AdaptiveParams& p = params_;
   switch (method_) {
     case AdaptiveMethod::Contrast:
-      return "adaptive contrast (Mitchell) on " + base_ + ": first pass " + formatNumber(p.first) +
+      return "adaptive contrast (Mitchell) on " + base_ + ": pilot " + formatNumber(p.first) +
              " of spp, contrast thresholds " + formatNumber(p.contrast[0]) + "/" + formatNumber(p.contrast[1]) + "/" +
              formatNumber(p.contrast[2]) + ", cap " + formatNumber(p.cap) + "x spp";
     case AdaptiveMethod::Error:
-      return "adaptive error on " + base_ + ": first pass " + formatNumber(p.first) + " of spp, rounds of " +
-             formatNumber(p.round) + " of the budget to the largest standard errors, cap " + formatNumber(p.cap) +
-             "x spp";
+      return "adaptive error on " + base_ + ": pilot " + formatNumber(p.first) +
+             " of spp, the rest in proportion to the pilot's deviation, floor " + formatNumber(p.floor) +
+             " of the flat share, cap " + formatNumber(p.cap) + "x spp";
     case AdaptiveMethod::Subdivision:
-      return "adaptive subdivision (Whitted) on " + base_ + ": 4 samples per cell, split above " +
+      return "adaptive subdivision (Whitted) on " + base_ + ": 4 decision samples per cell, split above " +
              formatNumber(p.threshold) + ", depth " + std::to_string(p.depth);
   }
   return {};

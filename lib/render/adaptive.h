@@ -11,57 +11,47 @@
 // (render/sample_source.h), which builds on makeAdaptiveSampler() here, and
 // trace what it gives; everything downstream (reconstruction with any
 // filter, the study's metrics) takes the result like any sample set.
-// (adaptive.cpp: names and parameters; adaptive_trace.cpp: the methods; adaptive_work.h, adaptive_work.cpp:
-// their shared state and rounds.)
+// (adaptive.cpp: names and parameters; adaptive_trace.cpp: contrast, error and the entry point;
+// adaptive_subdiv.cpp: subdivision; adaptive_work.h, adaptive_work.cpp: their shared state and rounds.)
 //
 // Protocol (all three methods):
 // - Budget: exactly B = spp * width * height samples are traced in total, so
-//   the mean spent is spp (well within the 1 % asked of the study). Work goes
-//   in rounds over the whole image; a round never takes more than what is
-//   left, and the last one takes exactly what is left. Budget the refinement
-//   does not use (nothing exceeds a threshold, every candidate at its cap) is
-//   spent evenly at the end: floor(R / N) more samples in every pixel, one
-//   more in the R mod N pixels that rank first. So on a flat image every
-//   pixel gets exactly spp samples.
+//   the mean spent is spp. On a flat image every pixel gets exactly spp
+//   samples, each of weight 1/spp (the base sampler's plain mean).
 // - Positions: every sample lies inside its own pixel, [i, i+1) x [j, j+1).
 //   A round's points come from the base sampler built for that round's count
 //   with a seed hashed from (seed, round): round 0 uses the run's seed, so
-//   the first pass IS the base sampler at the first-pass count. Subdivision
-//   cells are sampled as pixels of a 2^d-times finer film (base sampler at 4
-//   points, seed hashed from (seed, depth)).
-// - Determinism: decisions are made between rounds from the samples traced
-//   so far, ranking pixels by (priority descending, count ascending,
-//   hash(seed, pixel) ascending): a strict order, so results are identical
-//   for any thread count (only the tracing inside a round runs in parallel).
+//   the pilot IS the base sampler at the pilot's count. Subdivision cells are
+//   sampled as pixels of a 2^d-times finer film (seed hashed from (seed, round)).
+// - Unbiased: every decision reads only samples whose share of the pixel's
+//   estimate (FilmSample::weight; a pixel's shares add up to 1, the buffer is
+//   areaWeighted) was fixed before they were traced, and every share that a
+//   decision moves goes to samples traced after it. So the estimate's
+//   expectation is the pixel integral whatever was decided (docs/adaptive.md).
+// - Determinism: decisions are made between rounds, ranking pixels by
+//   (priority descending, count ascending, hash(seed, pixel) ascending): a
+//   strict order, so results are identical for any thread count.
 //
 // Methods (shape parameters in AdaptiveParams, keys in brackets):
-// - contrast (Mitchell 1987): a first pass of n0 = round(first * spp)
-//   samples per pixel (at least 1), then rounds of n0 more samples to every
-//   pixel whose neighbourhood (the pixel and its 8 neighbours) has, in some
-//   channel c, contrast C_c = (Imax - Imin) / (Imax + Imin) above the
-//   threshold t_c (Mitchell's 0.4, 0.3, 0.6 for R, G, B), highest C_c / t_c
-//   first, until each is at the cap (cap * spp samples).
-// - error: first pass n0 = round(first * spp) (at least 2 where spp allows,
-//   to estimate a variance); then rounds, each spending at most `round` of
-//   the total budget, giving min(n0, ceil(R / N)) samples each to the
-//   pixels with the largest estimated standard error of the mean,
-//   sqrt(mean over channels of s_c^2 / n) (s_c^2 the unbiased sample
-//   variance of the pixel's own samples). Pixels with zero estimated error
-//   are not refined (a pixel whose first samples all agree is never looked
-//   at again: the method's blind spot).
-// - subdiv (Whitted 1980): 4 samples per pixel (the base sampler at 4
-//   points, stratified bases put one in each quadrant: the "corners"); a
-//   cell whose samples differ by more than `threshold` in some channel
-//   (max - min, radiance units) is split into 4 quadrants, each sampled at
-//   4 new points; recursively, level by level over the image (largest
-//   difference first), down to `depth` levels. At spp < 4 the first pass is
-//   spp samples and nothing is refined.
-//
-// Bias, measured rather than hidden: the decision to refine uses the same
-// samples that are averaged, and the reconstruction weights samples by
-// density (a filter sums f L / sum f over whatever samples fall in its
-// support), so refined regions count more. Both show in the study's
-// aliasing term (the error of the mean image against the reference).
+// - contrast (Mitchell 1987): a pilot of n0 = round(first * spp) samples per
+//   pixel (1 .. spp); from it alone, pixels whose neighbourhood (the pixel
+//   and its 8 neighbours) has, in some channel c, contrast
+//   C_c = (Imax - Imin) / (Imax + Imin) above the threshold t_c (Mitchell's
+//   0.4, 0.3, 0.6) get fresh samples up to the cap (cap * spp in all),
+//   highest C_c / t_c first; every pixel at least one; the rest evenly.
+//   Pilot weight n0/spp in all, fresh 1 - n0/spp.
+// - error: a pilot of n0 (at least 2); fresh samples in proportion to the
+//   pilot's standard deviation (the largest over the 3 x 3 neighbourhood),
+//   between floor * (spp - n0) (at least 1) and the cap; the rest evenly.
+//   Weights as contrast.
+// - subdiv (Whitted 1980): 4 decision samples per pixel; a cell whose
+//   samples differ by more than `threshold` in some channel (max - min,
+//   radiance) is split into 4 quadrants with 4 decision samples each,
+//   level by level (largest difference first) down to `depth`, while the
+//   budget pays for it; then fresh samples in every leaf (at least one).
+//   A cell's estimate is alpha * mean(its decision samples) + (1 - alpha) *
+//   (its children's mean, or its fresh samples' mean), alpha = 4/spp for the
+//   pixel and 1/2 below. At spp < 5: the base sampler, nothing decided.
 #pragma once
 #include <array>
 #include <memory>
@@ -81,9 +71,9 @@ struct AdaptiveParams {
   double first = 0.25;   ///< [first] share of spp spent in the first pass (contrast, error), in (0, 1]
   double cap = 4;        ///< [cap] no pixel refined beyond cap * spp samples (contrast, error), >= 1
   std::array<double, 3> contrast = {0.4, 0.3, 0.6};  ///< [threshold, or tr tg tb] Mitchell's per-channel thresholds
-  double round = 0.125;  ///< [round] share of the total budget one error round may spend, in (0, 1]
+  double floor = 0.25;   ///< [floor] error: fresh samples every pixel keeps, as a share of spp - pilot, in [0, 1]
   double threshold = 0.1;  ///< [threshold] subdiv: max - min of a cell's samples (radiance) that splits it
-  int depth = 3;         ///< [depth] subdiv: levels of splitting below the pixel, 0 .. 8
+  int depth = 2;         ///< [depth] subdiv: levels of splitting below the pixel, 0 .. 8
 };
 
 class AdaptiveSampler {
@@ -94,7 +84,7 @@ class AdaptiveSampler {
   int spp() const { return spp_; }
   uint64_t seed() const { return seed_; }
   const AdaptiveParams& params() const { return params_; }
-  /// The name it was made from, canonical ("adaptive-error:jittered+round=0.25").
+  /// The name it was made from, canonical ("adaptive-error:jittered+floor=0.5").
   std::string name() const;
   /// One line for logs and CSV rows.
   std::string describe() const;

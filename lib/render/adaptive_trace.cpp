@@ -1,5 +1,12 @@
-// Adaptive sampling: the three methods and the area weights; see adaptive.h. The state they share (Work:
-// the samples, the budget, the rounds that trace them) is in adaptive_work.h.
+// Adaptive sampling: the pilot-then-allocate methods (contrast, error) and the entry point; see adaptive.h.
+// Subdivision is in adaptive_subdiv.cpp; the state they share (Work: the samples, the budget, the rounds that
+// trace them) in adaptive_work.h.
+//
+// Both methods here run in two rounds: a pilot of n0 samples per pixel, then one allocation of the rest of the
+// budget decided from the pilot alone, traced as fresh samples (at least one per pixel). The pilot keeps the
+// fixed share alpha = n0 / spp of its pixel's estimate and the fresh samples the rest, 1 - alpha, whatever the
+// allocation: so each pixel's estimate alpha * mean(pilot) + (1 - alpha) * mean(fresh) is unbiased (the
+// fresh samples are drawn after the decision and know nothing of it). See docs/adaptive.md, "Bias".
 #include <algorithm>
 #include <cmath>
 
@@ -10,176 +17,126 @@ namespace aliaslab {
 
 namespace {
 
-using adaptiveimpl::Request;
 using adaptiveimpl::Work;
 
-int capOf(const AdaptiveSampler& a) {
-  return static_cast<int>(std::max<double>(a.spp(), std::llround(a.params().cap * a.spp())));
+/// Fresh samples per pixel allowed at most: cap * spp in all, less the pilot (at least 1).
+int freshCap(const AdaptiveSampler& a, int n0) {
+  return std::max(1, static_cast<int>(std::llround(a.params().cap * a.spp())) - n0);
 }
 
-/// Gives up to `step` samples to pixels in `order` whose priority exceeds `above`, up to the cap and the budget.
-/// Returns the samples given (0: no candidate).
-long long allot(const Work& w, const std::vector<long long>& order, const std::vector<double>& priority, double above,
-                int step, int cap, long long budget, std::vector<int>& add) {
-  add.assign(w.pixels(), 0);
-  long long given = 0;
-  for (long long p : order) {
-    if (!(priority[p] > above) || given >= budget) break;
-    const long long g = std::min<long long>({step, cap - w.count(p), budget - given});
-    if (g > 0) add[p] = static_cast<int>(g), given += g;
-  }
-  return given;
+/// The pilot: n0 samples per pixel, each of weight 1 / spp (its share alpha / n0). Returns alpha.
+double tracePilot(Work& w, const AdaptiveSampler& a, int n0) {
+  w.tracePixels(std::vector<int>(w.pixels(), n0), std::vector<double>(w.pixels(), double(n0) / a.spp()));
+  return double(n0) / a.spp();
 }
 
-// Mitchell: contrast of the 3x3 neighbourhood against per-channel thresholds.
+/// The fresh round: fresh[p] >= 1 samples in every pixel sharing 1 - alpha of its estimate.
+void traceFresh(Work& w, const std::vector<int>& fresh, double alpha) {
+  w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - alpha));
+}
+
+/// The largest value over each pixel's 3 x 3 neighbourhood.
+std::vector<double> dilate(const std::vector<double>& v, int W, int H) {
+  std::vector<double> out(v.size(), 0.0);
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      double m = 0;
+      for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
+        for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) m = std::max(m, v[size_t(y) * W + x]);
+      out[size_t(j) * W + i] = m;
+    }
+  return out;
+}
+
+// Mitchell: contrast of the 3x3 neighbourhood of the pilot against per-channel thresholds.
 void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
   const AdaptiveParams& prm = a.params();
-  const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), 1, a.spp()), cap = capOf(a);
-  w.tracePixels(std::vector<int>(w.pixels(), n0));
-  std::vector<Color> lo, hi;
-  std::vector<double> ratio(w.pixels());
-  std::vector<int> add;
-  while (w.left() > 0) {
-    w.pixelRanges(lo, hi);
-    for (int j = 0; j < H; ++j)
-      for (int i = 0; i < W; ++i) {
-        Color l = Color::Constant(INFINITY), h = Color::Constant(-INFINITY);
-        for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
-          for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
-            const size_t q = static_cast<size_t>(y) * W + x;
-            l = l.min(lo[q]), h = h.max(hi[q]);
-          }
-        double r = 0;
-        for (int c = 0; c < 3; ++c) {
-          const double sum = double(h[c]) + l[c];
-          if (sum > 1e-30 && std::isfinite(sum)) r = std::max(r, (double(h[c]) - l[c]) / sum / prm.contrast[c]);
-        }
-        ratio[static_cast<size_t>(j) * W + i] = r;
-      }
-    if (allot(w, w.rank(ratio), ratio, 1.0, n0, cap, w.left(), add) == 0) {
-      w.spendEvenly(ratio);
-      break;
-    }
-    w.tracePixels(add);
-  }
-}
-
-// Error-driven: the estimated standard error of each pixel's mean.
-void runError(Work& w, const AdaptiveSampler& a, long long budget) {
-  const AdaptiveParams& prm = a.params();
-  const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), std::min(2, a.spp()), a.spp());
-  const int cap = capOf(a);
-  const long long perRound = std::max<long long>(n0, std::llround(prm.round * static_cast<double>(budget)));
-  w.tracePixels(std::vector<int>(w.pixels(), n0));
-  std::vector<double> se(w.pixels());
-  std::vector<int> add;
-  while (w.left() > 0) {
-    for (long long p = 0; p < w.pixels(); ++p) {
-      const auto& s = w.samples(p);
-      const double n = static_cast<double>(s.size());
-      double mean[3] = {0, 0, 0}, var = 0;
-      for (const FilmSample& f : s)
-        for (int c = 0; c < 3; ++c) mean[c] += f.L[c] / n;
-      for (const FilmSample& f : s)
-        for (int c = 0; c < 3; ++c) var += (f.L[c] - mean[c]) * (f.L[c] - mean[c]);
-      se[p] = n > 1 && std::isfinite(var) ? std::sqrt(var / 3 / (n - 1) / n) : 0.0;
-    }
-    if (allot(w, w.rank(se), se, 0.0, n0, cap, std::min(w.left(), perRound), add) == 0) {
-      w.spendEvenly(se);
-      break;
-    }
-    w.tracePixels(add);
-  }
-}
-
-/// A cell of a pixel's quadtree as one number (level, cx, cy).
-uint64_t cellKey(int level, int cx, int cy) {
-  return (static_cast<uint64_t>(level) << 48) | (static_cast<uint64_t>(cx) << 24) | static_cast<uint64_t>(cy);
-}
-
-// Whitted: split cells whose samples differ by more than the threshold. Returns each pixel's split cells.
-std::vector<std::vector<uint64_t>> runSubdivision(Work& w, const AdaptiveSampler& a, int W) {
-  std::vector<std::vector<uint64_t>> splits(w.pixels());
-  const AdaptiveParams& prm = a.params();
-  const int n0 = std::min(4, a.spp());
-  w.tracePixels(std::vector<int>(w.pixels(), n0));
-  struct Cell {
-    long long p;
-    Request r;
-    double diff = 0;
-  };
-  std::vector<Cell> level;
-  for (long long p = 0; p < w.pixels(); ++p) level.push_back({p, {0, 0, 0, n0}});
-  for (int d = 0; d < prm.depth && w.left() > 0 && !level.empty(); ++d) {
-    // each cell's spread: max over channels of (max - min) of the pixel's samples inside it
-    std::vector<Cell> split;
-    for (Cell& c : level) {
-      const double side = std::ldexp(1.0, -c.r.level);
-      const double x0 = static_cast<double>(c.p % W) + c.r.cx * side, y0 = static_cast<double>(c.p / W) + c.r.cy * side;
-      Color lo = Color::Constant(INFINITY), hi = Color::Constant(-INFINITY);
-      int inCell = 0;
-      for (const FilmSample& s : w.samples(c.p))
-        if (s.x >= x0 && s.x < x0 + side && s.y >= y0 && s.y < y0 + side && s.L.allFinite())
-          lo = lo.min(s.L), hi = hi.max(s.L), ++inCell;
-      c.diff = inCell >= 2 ? static_cast<double>((hi - lo).maxCoeff()) : 0.0;
-      if (c.diff > prm.threshold) split.push_back(c);
-    }
-    // largest difference first; equal ones in the pixel-hash order (no bias towards the first rows)
-    std::stable_sort(split.begin(), split.end(), [&](const Cell& a, const Cell& b) {
-      return a.diff != b.diff ? a.diff > b.diff : w.hash(a.p) < w.hash(b.p);
-    });
-    // children, 4 points each, largest difference first, as long as the budget pays a whole split (16)
-    std::vector<std::vector<Request>> requests(w.pixels());
-    std::vector<Cell> next;
-    long long budget = w.left();
-    for (const Cell& c : split) {
-      if (budget < 16) break;
-      budget -= 16;
-      splits[c.p].push_back(cellKey(c.r.level, c.r.cx, c.r.cy));
-      for (int k = 0; k < 4; ++k) {
-        const Request child{c.r.level + 1, 2 * c.r.cx + (k & 1), 2 * c.r.cy + (k >> 1), 4};
-        requests[c.p].push_back(child);
-        next.push_back({c.p, child});
-      }
-    }
-    if (next.empty()) break;
-    w.trace(requests);
-    level = std::move(next);
-  }
-  // what is left goes evenly, first to the pixels with the largest spread
+  const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), 1, a.spp());
+  const double alpha = tracePilot(w, a, n0);
+  if (n0 == a.spp()) return;
   std::vector<Color> lo, hi;
   w.pixelRanges(lo, hi);
-  std::vector<double> spread(w.pixels());
-  for (long long p = 0; p < w.pixels(); ++p)
-    spread[p] = w.count(p) > 1 ? static_cast<double>((hi[p] - lo[p]).maxCoeff()) : 0.0;
-  w.spendEvenly(spread);
-  return splits;
+  std::vector<double> ratio(w.pixels());
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      Color l = Color::Constant(INFINITY), h = Color::Constant(-INFINITY);
+      for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
+        for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
+          const size_t q = static_cast<size_t>(y) * W + x;
+          l = l.min(lo[q]), h = h.max(hi[q]);
+        }
+      double r = 0;
+      for (int c = 0; c < 3; ++c) {
+        const double sum = double(h[c]) + l[c];
+        if (sum > 1e-30 && std::isfinite(sum)) r = std::max(r, (double(h[c]) - l[c]) / sum / prm.contrast[c]);
+      }
+      ratio[static_cast<size_t>(j) * W + i] = r;
+    }
+  // one fresh sample everywhere; the marked pixels an equal share up to the cap (one more to the first ones
+  // in rank order where the share does not divide); the rest evenly
+  std::vector<int> fresh(w.pixels(), 1);
+  long long left = w.left() - w.pixels();
+  const int cap = freshCap(a, n0);
+  long long marked = 0;
+  for (double r : ratio) marked += r > 1.0;
+  const std::vector<long long> order = w.rank(ratio, marked);
+  if (marked > 0) {
+    const long long each = std::min<long long>(cap - 1, left / marked);
+    const long long extra = each < cap - 1 ? left - each * marked : 0;
+    for (long long k = 0; k < marked; ++k) {
+      const long long g = each + (k < extra ? 1 : 0);
+      fresh[order[k]] += static_cast<int>(g), left -= g;
+    }
+  }
+  const std::vector<int> even = w.evenly(left, ratio);
+  for (long long p = 0; p < w.pixels(); ++p) fresh[p] += even[p];
+  traceFresh(w, fresh, alpha);
 }
 
-/// Sets each sample's weight to the area it stands for: its leaf cell's area (the pixel's, 1, when nothing was
-/// split) over the samples in that leaf.
-void setAreaWeights(SampleBuffer& b, const std::vector<std::vector<uint64_t>>& splits) {
-  for (int j = 0; j < b.height(); ++j)
-    for (int i = 0; i < b.width(); ++i) {
-      const size_t p = static_cast<size_t>(j) * b.width() + i;
-      FilmSample* s = b.pixel(i, j);
-      const int n = b.count(i, j);
-      std::vector<uint64_t> leaf(n);
-      std::vector<int> level(n);
-      for (int k = 0; k < n; ++k) {
-        int d = 0;
-        auto key = [&](int depth) {
-          return cellKey(depth, static_cast<int>(std::ldexp(s[k].x - i, depth)),
-                         static_cast<int>(std::ldexp(s[k].y - j, depth)));
-        };
-        while (!splits.empty() && std::find(splits[p].begin(), splits[p].end(), key(d)) != splits[p].end()) ++d;
-        leaf[k] = key(d), level[k] = d;
-      }
-      for (int k = 0; k < n; ++k)
-        s[k].weight = static_cast<float>(std::ldexp(1.0, -2 * level[k]) /
-                                         static_cast<double>(std::count(leaf.begin(), leaf.end(), leaf[k])));
+// Error-driven: fresh samples in proportion to the pilot's standard deviation (dilated over 3 x 3), between
+// a floor and the cap: the allocation n_p ~ sigma_p that minimises the summed variance sum sigma_p^2 / n_p.
+void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
+  const AdaptiveParams& prm = a.params();
+  const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), std::min(2, a.spp()), a.spp());
+  const double alpha = tracePilot(w, a, n0);
+  if (n0 == a.spp()) return;
+  std::vector<double> sd(w.pixels(), 0.0);
+  for (long long p = 0; p < w.pixels(); ++p) {
+    const auto& s = w.samples(p);
+    const double n = static_cast<double>(s.size());
+    double mean[3] = {0, 0, 0}, var = 0;
+    for (const FilmSample& f : s)
+      for (int c = 0; c < 3; ++c) mean[c] += f.L[c] / n;
+    for (const FilmSample& f : s)
+      for (int c = 0; c < 3; ++c) var += (f.L[c] - mean[c]) * (f.L[c] - mean[c]);
+    sd[p] = n > 1 && std::isfinite(var) ? std::sqrt(var / 3 / (n - 1)) : 0.0;
+  }
+  sd = dilate(sd, W, H);
+  const long long budget = w.left();
+  const int lowest = std::clamp(static_cast<int>(std::lround(prm.floor * (a.spp() - n0))), 1, a.spp() - n0);
+  const int cap = std::max(lowest, freshCap(a, n0));
+  auto allot = [&](double lambda, std::vector<int>* out) {
+    long long total = 0;
+    for (long long p = 0; p < w.pixels(); ++p) {
+      const double want = std::min<double>(cap, lambda * sd[p] - n0);
+      const int m = std::max(lowest, static_cast<int>(std::floor(std::max(0.0, want))));
+      total += m;
+      if (out) (*out)[p] = m;
     }
-  b.setAreaWeighted(true);
+    return total;
+  };
+  // the largest lambda whose allocation fits the budget (the total grows with lambda)
+  double lo = 0, hi = 1;
+  while (hi < 1e12 && allot(hi, nullptr) <= budget) hi *= 2;
+  for (int k = 0; k < 60; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    (allot(mid, nullptr) <= budget ? lo : hi) = mid;
+  }
+  std::vector<int> fresh(w.pixels());
+  const long long used = allot(lo, &fresh);
+  const std::vector<int> even = w.evenly(budget - used, sd);
+  for (long long p = 0; p < w.pixels(); ++p) fresh[p] += even[p];
+  traceFresh(w, fresh, alpha);
 }
 
 }  // namespace
@@ -188,11 +145,10 @@ SampleBuffer traceAdaptive(const Tracer& tracer, const AdaptiveSampler& sampler,
                            const Progress& progress) {
   if (!tracer.scene().camera) throw InputError(tracer.scene().path + ": the scene has no camera");
   Work w(tracer, sampler, width, height, threads, progress);
-  std::vector<std::vector<uint64_t>> splits;  // subdivision only: each pixel's split cells
   switch (sampler.method()) {
     case AdaptiveMethod::Contrast: runContrast(w, sampler, width, height); break;
-    case AdaptiveMethod::Error: runError(w, sampler, static_cast<long long>(sampler.spp()) * width * height); break;
-    case AdaptiveMethod::Subdivision: splits = runSubdivision(w, sampler, width); break;
+    case AdaptiveMethod::Error: runError(w, sampler, width, height); break;
+    case AdaptiveMethod::Subdivision: adaptiveimpl::runSubdivision(w, sampler); break;
   }
   std::vector<int> counts(w.pixels());
   for (long long p = 0; p < w.pixels(); ++p) counts[p] = w.count(p);
@@ -202,7 +158,7 @@ SampleBuffer traceAdaptive(const Tracer& tracer, const AdaptiveSampler& sampler,
       const auto& s = w.samples(static_cast<long long>(j) * width + i);
       std::copy(s.begin(), s.end(), out.pixel(i, j));
     }
-  setAreaWeights(out, splits);
+  out.setAreaWeighted(true);
   return out;
 }
 

@@ -15,30 +15,53 @@ Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height
     : tracer_(tracer), a_(a), W_(width), H_(height), threads_(threads), progress_(progress),
       N_(static_cast<long long>(width) * height), B_(N_ * a.spp()), px_(N_), hash_(N_) {
   for (long long p = 0; p < N_; ++p) hash_[p] = hashWords(a.seed(), 0x72616e6bULL, static_cast<uint64_t>(p));
+  for (auto& v : px_) v.reserve(a.spp());  // one allocation per pixel for the flat share
 }
 
 void Work::trace(const std::vector<std::vector<Request>>& requests) {
-  std::map<int, std::unique_ptr<Sampler>> samplers;  // by count, built before the parallel part
+  // Before the parallel part: for every count n requested, the samplers of its parts (by part count and the
+  // index of the part among equal counts, which goes into the seed so two parts of one count in a cell are
+  // independent), as a plan indexed by n that the workers only read.
+  std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
+  std::vector<std::vector<const Sampler*>> plan;
   long long total = 0;
   for (const auto& list : requests)
-    for (const Request& r : list)
-      if (r.n > 0 && !samplers.count(r.n)) samplers[r.n] = a_.baseSampler(r.n, round_);
-  for (const auto& list : requests)
-    for (const Request& r : list) total += r.n;
+    for (const Request& r : list) {
+      if (r.n <= 0) continue;
+      total += r.n;
+      if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
+      if (!plan[r.n].empty()) continue;
+      std::map<int, int> seen;
+      for (int part : parts(r.n)) {
+        const std::pair<int, int> key{part, seen[part]++};
+        auto& s = samplers[key];
+        if (!s) s = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
+        plan[r.n].push_back(s.get());
+      }
+    }
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
+    const float topY = std::nextafter(static_cast<float>(j + 1), 0.f);
     for (int i = 0; i < W_; ++i) {
+      const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
       const size_t p = static_cast<size_t>(j) * W_ + i;
+      std::vector<FilmSample>& out = px_[p];
+      size_t adding = 0;
+      for (const Request& r : requests[p]) adding += static_cast<size_t>(std::max(0, r.n));
+      if (out.size() + adding > out.capacity()) out.reserve(out.size() + adding);  // once per pixel and round
       for (const Request& r : requests[p]) {
         if (r.n <= 0) continue;
-        u.resize(r.n);
-        samplers.at(r.n)->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
-        const double side = std::ldexp(1.0, -r.level);
-        for (const Vec2& q : u) {
-          FilmSample s;
-          s.x = inside(i + (r.cx + q.x()) * side, i), s.y = inside(j + (r.cy + q.y()) * side, j);
-          s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-          px_[p].push_back(s);
+        const double side = 1.0 / static_cast<double>(1 << r.level);
+        for (const Sampler* sampler : plan[r.n]) {
+          u.resize(sampler->spp());
+          sampler->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
+          for (const Vec2& q : u) {
+            FilmSample s;
+            s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
+            s.weight = r.weight;
+            s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
+            out.push_back(s);
+          }
         }
       }
     }
@@ -50,31 +73,52 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
   }
 }
 
-void Work::tracePixels(const std::vector<int>& add) {
+void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share) {
   std::vector<std::vector<Request>> requests(N_);
   for (long long p = 0; p < N_; ++p)
-    if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p]});
+    if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p], static_cast<float>(share[p] / add[p])});
   trace(requests);
 }
 
-std::vector<long long> Work::rank(const std::vector<double>& priority) const {
+bool Work::fullQuality(int n) const {
+  auto it = quality_.find(n);
+  if (it == quality_.end()) it = quality_.emplace(n, a_.baseSampler(n, 0)->warning().empty()).first;
+  return it->second;
+}
+
+std::vector<int> Work::parts(int n) const {
+  std::vector<int> out;
+  while (n > 0) {
+    int c = n;
+    while (c > 1 && !fullQuality(c)) --c;
+    out.push_back(c), n -= c;
+  }
+  return out;
+}
+
+std::vector<long long> Work::rank(const std::vector<double>& priority, long long first) const {
   std::vector<long long> order(N_);
   for (long long p = 0; p < N_; ++p) order[p] = p;
-  std::sort(order.begin(), order.end(), [&](long long a, long long b) {
+  const auto before = [&](long long a, long long b) {
     if (priority[a] != priority[b]) return priority[a] > priority[b];
     if (count(a) != count(b)) return count(a) < count(b);
     return hash_[a] != hash_[b] ? hash_[a] < hash_[b] : a < b;
-  });
+  };
+  const long long k = std::clamp(first, 0LL, N_);
+  if (k < N_) std::nth_element(order.begin(), order.begin() + k, order.end(), before);  // the first k, unsorted
+  std::sort(order.begin(), order.begin() + k, before);
+  order.resize(k);
   return order;
 }
 
-void Work::spendEvenly(const std::vector<double>& priority) {
-  if (left() <= 0) return;
-  const long long q = left() / N_, extra = left() % N_;
+std::vector<int> Work::evenly(long long amount, const std::vector<double>& priority) const {
+  const long long q = std::max(0LL, amount) / N_, extra = std::max(0LL, amount) % N_;
   std::vector<int> add(N_, static_cast<int>(q));
-  const auto order = rank(priority);
-  for (long long k = 0; k < extra; ++k) ++add[order[k]];
-  tracePixels(add);
+  if (extra > 0) {
+    const auto order = rank(priority, extra);
+    for (long long k = 0; k < extra; ++k) ++add[order[k]];
+  }
+  return add;
 }
 
 void Work::pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const {

@@ -5,15 +5,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "render/adaptive.h"
 
 namespace aliaslab::adaptiveimpl {
 
-/// n points for one cell: the square [cx, cx+1) x [cy, cy+1) / 2^level of its pixel.
+/// n points for one cell: the square [cx, cx+1) x [cy, cy+1) / 2^level of its pixel, each carrying `weight`
+/// (FilmSample::weight: its share of the pixel's estimate, fixed before any of them is traced).
 struct Request {
   int level = 0, cx = 0, cy = 0, n = 0;
+  float weight = 1.f;
 };
 
 /// The state shared by the methods: every pixel's samples so far and the budget.
@@ -31,23 +34,30 @@ class Work {
   /// Traces one round: requests[p] lists the cells of pixel p to sample (in order).
   void trace(const std::vector<std::vector<Request>>& requests);
 
-  /// One round giving add[p] samples to pixel p, drawn over the whole pixel.
-  void tracePixels(const std::vector<int>& add);
+  /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p].
+  void tracePixels(const std::vector<int>& add, const std::vector<double>& share);
 
-  /// Pixels by priority descending, then count ascending, then a hash of (seed, pixel): a strict order.
-  std::vector<long long> rank(const std::vector<double>& priority) const;
+  /// The first `first` pixels (all by default) by priority descending, then count ascending, then a hash of
+  /// (seed, pixel): a strict order.
+  std::vector<long long> rank(const std::vector<double>& priority, long long first = 1LL << 62) const;
 
-  /// Spends what is left evenly: floor(R/N) everywhere, one more in the first R mod N pixels of rank(priority).
-  void spendEvenly(const std::vector<double>& priority);
+  /// `amount` samples spread evenly: floor(amount/N) everywhere, one more in the first amount mod N pixels of
+  /// rank(priority).
+  std::vector<int> evenly(long long amount, const std::vector<double>& priority) const;
+
+  /// How n points of one cell are drawn: as parts of counts at which the base sampler has its full quality
+  /// (no warning(): jittered at squares, zsobol at powers of two), largest first (jittered, 47: 36 + 9 + 1 + 1),
+  /// each from its own base sampler. A stratified base at another count degrades (jittered at 47: 1 x 47
+  /// strips), while a union of independent full-quality sets keeps most of the stratification; every point
+  /// keeps the same weight, so the union is unbiased like each part.
+  std::vector<int> parts(int n) const;
 
   /// Per pixel, per channel, the least and greatest radiance of its samples.
   void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
 
  private:
-  /// v as a float inside [i, i+1) (rounding of i + u could give i + 1).
-  static float inside(double v, int i) {
-    return std::clamp(static_cast<float>(v), static_cast<float>(i), std::nextafter(static_cast<float>(i + 1), 0.f));
-  }
+  /// v as a float inside [i, top] with top = the float below i + 1 (rounding of i + u could give i + 1).
+  static float inside(double v, int i, float top) { return std::clamp(static_cast<float>(v), static_cast<float>(i), top); }
 
   const Tracer& tracer_;
   const AdaptiveSampler& a_;
@@ -57,6 +67,12 @@ class Work {
   uint64_t round_ = 0;
   std::vector<std::vector<FilmSample>> px_;
   std::vector<uint64_t> hash_;
+  mutable std::map<int, bool> quality_;  ///< count -> the base sampler has no warning() at it
+
+  bool fullQuality(int n) const;
 };
+
+/// Whitted's subdivision with fresh leaf samples (adaptive_subdiv.cpp); traces the whole budget.
+void runSubdivision(Work& w, const AdaptiveSampler& a);
 
 }  // namespace aliaslab::adaptiveimpl

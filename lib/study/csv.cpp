@@ -28,7 +28,8 @@ const std::vector<std::string>& csvColumns() {
       "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
       "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
       "prefilter", "flip", "target_ref_error", "blur_se", "deterministic", "mse_target_seeds", "blurred_mse_own",
-      "lowfreq_error_own", "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se"};
+      "lowfreq_error_own", "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se", "blur_ratio_0.5", "blur_ratio_0.5_se",
+      "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2", "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se"};
   return cols;
 }
 
@@ -100,6 +101,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << r.deterministic << ',' << joinReals(r.mseTargetSeeds) << ',' << real(r.blurredMseOwn) << ','
     << real(r.lowfreqErrorOwn) << ',' << real(r.lowfreqErrorOwnSe) << ',' << real(r.cpuMs)
     << ',' << real(r.cpuMsSe);
+  for (size_t k = 0; k < r.blurRatio.size(); ++k) s << ',' << real(r.blurRatio[k]) << ',' << real(r.blurRatioSe[k]);
   return s.str();
 }
 

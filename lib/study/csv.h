@@ -9,11 +9,14 @@
 //   lowfreq_error,lowfreq_error_se,blurred_mse (measure/spectrum.h),
 //   mean_spp,max_spp,prefilter,flip,
 //   target_ref_error,blur_se,deterministic,mse_target_seeds,
-//   blurred_mse_own,lowfreq_error_own,lowfreq_error_own_se,cpu_ms,cpu_ms_se
+//   blurred_mse_own,lowfreq_error_own,lowfreq_error_own_se,cpu_ms,cpu_ms_se,
+//   blur_ratio_0.5,blur_ratio_0.5_se,blur_ratio_1,blur_ratio_1_se,blur_ratio_2,blur_ratio_2_se,
+//   blur_ratio_4,blur_ratio_4_se
 // Against the configuration's own reference G (the same on every target row of a configuration): mse, aliasing,
 // noise, psnr, ref_error (mean Var G), their *_se; mse_area against the pixel-area reference; blurred_mse_own,
 // lowfreq_error_own(_se). Against the row's target T: mse_target, blur, cross, their *_se, target_ref_error
-// (mean Var T), blurred_mse, lowfreq_error(_se), flip, mse_target_seeds (the K per-seed mse_target values joined
+// (mean Var T), blurred_mse, lowfreq_error(_se), blur_ratio_S(_se) (the blur curve: the error's share left
+// after a Gaussian blur of S pixels, measure/spectrum.h), flip, mse_target_seeds (the K per-seed mse_target values joined
 // by ';', their mean is mse_target). Every mean square that holds a reference estimate has that reference's
 // variance subtracted (measure/metrics.h), so an unbiased configuration has aliasing 0 within its *_se.
 // flagged: 1 when mse_target < 2 mse_target_se (the error cannot be told from zero given the seeds' and the
@@ -39,6 +42,7 @@
 // as numbers), which the end of a run and the merge of shards (study/merge.h) both apply, so a
 // resumed, sharded or interrupted run ends with the same file.
 #pragma once
+#include <array>
 #include <set>
 #include <string>
 #include <vector>
@@ -76,6 +80,7 @@ struct CsvRow {
   std::vector<double> mseTargetSeeds;  ///< per seed k: corrected mse_target of image k (mean = mseTarget)
   double blurredMseOwn = 0, lowfreqErrorOwn = 0, lowfreqErrorOwnSe = 0;  ///< against the own reference G
   double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
+  std::array<double, 4> blurRatio{}, blurRatioSe{};  ///< the blur curve at sigma 0.5, 1, 2, 4 (measure/spectrum.h)
 };
 
 /// The header line (no newline).

@@ -102,6 +102,7 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
     r.targetRefError = t.refVar;
     r.mseTargetSeeds = t.perSeed;
     r.lowfreqError = st.lowfreqError, r.lowfreqErrorSe = st.lowfreqErrorSe, r.blurredMse = st.blurredMse;
+    r.blurRatio = st.blurRatio, r.blurRatioSe = st.blurRatioSe;
     r.flip = p.flipSums[j] / seeds;
     r.flagged = r.mseTarget < 2.0 * r.mseTargetSe ? 1 : 0;
     p.rows.push_back(std::move(r));

@@ -271,7 +271,7 @@ TEST(Adaptive, NamesAndParameters) {
   EXPECT_NE(message("adaptive-sharp:jittered").find("adaptive-contrast:BASE"), std::string::npos);
   EXPECT_NE(message("adaptive-error").find("names no base"), std::string::npos);
   EXPECT_NE(message("adaptive-error:jitterd").find("valid: random"), std::string::npos);
-  EXPECT_NE(message("adaptive-error:jittered+depth=2").find("first, cap, round"), std::string::npos);
+  EXPECT_NE(message("adaptive-error:jittered+depth=2").find("first, cap, floor"), std::string::npos);
   EXPECT_NE(message("adaptive-subdiv:jittered+depth=2.5").find("integer"), std::string::npos);
   EXPECT_NE(message("adaptive-contrast:jittered+first=0").find("(0, 1]"), std::string::npos);
   EXPECT_NE(message("adaptive-contrast:adaptive-error:jittered").find("adaptive itself"), std::string::npos);

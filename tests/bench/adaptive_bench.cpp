@@ -1,0 +1,89 @@
+// Trace time of the adaptive samplers against their base sampler for the same number of rays (issue: at most
+// about 1.3x): traceSamples(jittered) and traceAdaptive(adaptive-METHOD:jittered) on fence, checker_horizon and
+// scenes/controls/edge.txt at 128 x 128, 16 samples per pixel (262,144 rays either way), one thread, the
+// default aggregate. items/s is rays per second. Retrace/NAME/SCENE traces the very rays of one adaptive sample
+// set (its positions, computed before the timing) in pixel order, writing a buffer: the cost of those rays
+// without the method's bookkeeping, since adaptive rays are not average rays (they crowd where the geometry is:
+// on fence they are about 2x dearer than the base sampler's). For same-run ratios run with
+// --benchmark_repetitions=N --benchmark_enable_random_interleaving=true (the machine is shared).
+#include "aliaslab_paths.h"
+#include <benchmark/benchmark.h>
+
+#include <map>
+
+#include "accel/aggregate.h"
+#include "render/adaptive.h"
+#include "render/render.h"
+#include "scene/scene.h"
+
+namespace aliaslab {
+namespace {
+
+constexpr int kSize = 128, kSpp = 16;
+
+struct Loaded {
+  Scene scene;
+  std::unique_ptr<Aggregate> aggregate;
+  std::unique_ptr<Tracer> tracer;
+};
+
+const Tracer& tracerFor(const std::string& file) {
+  static std::map<std::string, Loaded> cache;
+  auto it = cache.find(file);
+  if (it != cache.end()) return *it->second.tracer;
+  Loaded& l = cache[file];
+  l.scene = parseScene(std::string(ALIASLAB_SOURCE_DIR) + "/scenes/" + file);
+  l.aggregate = makeDefaultAggregate(*l.scene.root);
+  l.tracer = std::make_unique<Tracer>(l.scene, *l.aggregate, TraceOptions{});
+  return *l.tracer;
+}
+
+void base(benchmark::State& state, std::string file) {
+  const Tracer& t = tracerFor(file);
+  const auto sampler = makeSampler("jittered", kSpp, 1);
+  for (auto _ : state) benchmark::DoNotOptimize(traceSamples(t, *sampler, kSize, kSize, 1).samples().data());
+  state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
+}
+
+void adaptive(benchmark::State& state, std::string file, std::string name) {
+  const Tracer& t = tracerFor(file);
+  const auto sampler = makeAdaptiveSampler(name, kSpp, 1);
+  for (auto _ : state) benchmark::DoNotOptimize(traceAdaptive(t, *sampler, kSize, kSize, 1).samples().data());
+  state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
+}
+
+void retrace(benchmark::State& state, std::string file, std::string name) {
+  const Tracer& t = tracerFor(file);
+  const SampleBuffer rays = traceAdaptive(t, *makeAdaptiveSampler(name, kSpp, 1), kSize, kSize, 1);
+  for (auto _ : state) {
+    std::vector<FilmSample> out(rays.samples().size());
+    for (size_t k = 0; k < out.size(); ++k) {
+      out[k] = rays.samples()[k];
+      out[k].L = t.radianceAt(out[k].x, out[k].y, kSize, kSize);
+    }
+    benchmark::DoNotOptimize(out.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
+}
+
+const int registered = [] {
+  for (const char* file : {"fence.txt", "checker_horizon.txt", "controls/edge.txt"}) {
+    const std::string stem = std::string(file).substr(0, std::string(file).find('.'));
+    benchmark::RegisterBenchmark(("Trace/jittered/" + stem).c_str(), base, std::string(file))
+        ->Unit(benchmark::kMillisecond);
+    for (const std::string& m : adaptiveMethodNames())
+      benchmark::RegisterBenchmark(("Trace/adaptive-" + m + ":jittered/" + stem).c_str(), adaptive, std::string(file),
+                                   "adaptive-" + m + ":jittered")
+          ->Unit(benchmark::kMillisecond);
+    for (const std::string& m : adaptiveMethodNames())
+      benchmark::RegisterBenchmark(("Retrace/adaptive-" + m + ":jittered/" + stem).c_str(), retrace, std::string(file),
+                                   "adaptive-" + m + ":jittered")
+          ->Unit(benchmark::kMillisecond);
+  }
+  return 0;
+}();
+
+}  // namespace
+}  // namespace aliaslab
+
+BENCHMARK_MAIN();
