@@ -4,7 +4,7 @@
 // the still image's mse_target). Bad options exit 2 before any work; progress goes to stderr.
 //
 //   motion --scene scenes/motion/grating.txt --filters box:0.5,gaussian:1,gaussian:1.5,gaussian:2
-//          --frames 8 --motion 0.25,0 --out results/motion/grating.csv
+//          --frames 8 --motion 0.25,0 --output results/motion/grating.csv
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <iostream>
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   c.reference.spp = 1024;
   std::vector<std::string> filters = {"box:0.5", "gaussian:1", "gaussian:1.5", "gaussian:2"};
   std::vector<double> motion = {0.25, 0};
-  std::string out = "motion.csv";
+  std::string out = "motion.csv";  // --output: the CSV file
   app.add_option("--scene", c.scene, "scene file")->required();
   app.add_option("--samplers", c.samplers, "sampler names")->delimiter(',')->capture_default_str();
   app.add_option("--spp", c.spp, "samples per pixel (list)")->delimiter(',')->capture_default_str();
@@ -49,7 +49,7 @@ int main(int argc, char** argv) {
   app.add_option("--cache", c.cache, "reference cache folder (shared with sweep --cache)");
   app.add_option("--threads", c.threads, "worker threads (0 = all cores; results do not depend on it)")
       ->capture_default_str();
-  app.add_option("--out", out, "the CSV file")->capture_default_str();
+  app.add_option("--output", out, "the CSV file")->capture_default_str();
   bool quiet = false;
   app.add_flag("--quiet", quiet, "no progress on stderr");
   if (const int rc = parseCommandLine(app, argc, argv, "motion"); rc >= 0) return rc;
@@ -63,7 +63,7 @@ int main(int argc, char** argv) {
     if (c.threads < 0) throw OptionError("--threads", "must be >= 0 (0 = all cores)");
     if (!fs::is_regular_file(c.scene)) throw FileError(c.scene, "scene file not found (--scene)");
     const fs::path dir = fs::path(out).parent_path();
-    if (!dir.empty() && !fs::is_directory(dir)) throw OptionError("--out", "'" + out + "': folder does not exist");
+    if (!dir.empty() && !fs::is_directory(dir)) throw OptionError("--output", "'" + out + "': folder does not exist");
     validateMotionStudy(c);
     const std::vector<MotionRow> rows = runMotionStudy(c, std::cerr);
     writeTextFile(out, motionCsv(rows));
