@@ -21,9 +21,9 @@ const FilterSpec kArea{"box", 0.5};
 void setFrame(StudyScene& s, const Camera& base, uint64_t baseHash, int t, const MotionStudyConfig& c) {
   const Vec2 offset = frameScreenOffset(t, c.dx, c.dy, s.width, s.height);
   s.scene.camera = makeShiftedCamera(base, offset);
-  s.contentHash = offset.isZero(0.f) ? baseHash
-                                     : hashBytes("motion offset " + std::to_string(offset.x()) + " " +
-                                                     std::to_string(offset.y()), baseHash);
+  char exact[96];  // %a: every bit of the offset, so no two offsets share a key
+  std::snprintf(exact, sizeof exact, "motion offset %a %a", double(offset.x()), double(offset.y()));
+  s.contentHash = offset.isZero(0.f) ? baseHash : hashBytes(exact, baseHash);
 }
 
 std::string number(double v) { return formatNumber(v, "%.9g"); }
