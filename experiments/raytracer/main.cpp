@@ -76,7 +76,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
                 "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " + std::to_string(spp) +
                     " samples per pixel");
   // Scene, accelerator, tracer.
-  const Scene scene = parseScene(o.input);
+  Scene scene = parseScene(o.input);  // (its camera is swapped per frame with -frames)
   // No output may overwrite an input: the scene is checked with the options, its OBJ files here.
   const std::pair<const char*, std::string> outputs[] = {
       {"-output", o.output}, {"-normals", o.normals}, {"-depth", o.depth.empty() ? "" : o.depth[2]},
@@ -99,8 +99,17 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   to.footprintPixels = 1.f / std::sqrt(static_cast<float>(spp));
   const Tracer tracer(scene, *aggregate, to);
 
-  // Colour image (and sample visualisation), depth, normals.
-  if (!o.output.empty() || !o.renderSamples.empty()) {
+  // Colour image (and sample visualisation), depth, normals; or the frames.
+  if (o.frames > 0) {
+    const std::unique_ptr<Camera> base = std::move(scene.camera);
+    const double dx = o.motion.empty() ? 0 : o.motion[0], dy = o.motion.empty() ? 0 : o.motion[1];
+    for (int t = 0; t < o.frames; ++t) {
+      scene.camera = makeShiftedCamera(*base, frameScreenOffset(t, dx, dy, w, h));
+      RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+      images.emplace_back(framePath(o.output, t), std::move(r.image));
+    }
+    scene.camera.reset();
+  } else if (!o.output.empty() || !o.renderSamples.empty()) {
     RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
     refuseNonFinite(o.input, {{o.output.empty() ? o.renderSamples[0] : o.output, r.image}});  // (the samples' colours)
     if (!o.output.empty()) images.emplace_back(o.output, std::move(r.image));

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 
 #include "../common/cli.h"  // relative: tests/fuzz_regression_test.cpp and fuzz_cli compile this file too
@@ -21,7 +22,8 @@ const char* const kClassicFlags[] = {"input",          "size",           "output
                                      "bounces",        "weight",         "shade_back",      "grid",
                                      "depth",          "normals",        "stats",           "random_samples",
                                      "uniform_samples", "jittered_samples", "box_filter",    "tent_filter",
-                                     "gaussian_filter", "render_samples", "render_filter"};
+                                     "gaussian_filter", "render_samples", "render_filter", "frames",
+                                     "motion"};
 
 /// An output image path: supported extension, existing writable folder.
 void checkOutput(const std::string& option, const std::string& path) {
@@ -69,6 +71,12 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--normals", o.normals, "normal image file");
   app.add_flag("--stats", o.stats, "print ray counts, accelerator and timing");
   app.add_option("--threads", o.threads, "worker threads, 0 = all cores (images do not depend on it)");
+  app.add_option("--frames", o.frames,
+                 "render F frames of a camera moving by -motion pixels per frame parallel to the image plane; "
+                 "frame t goes to <output stem>_<t as 4 digits>.<ext> (out.png: out_0000.png, out_0001.png, ...)");
+  app.add_option("--motion", o.motion, "dx,dy: the camera's motion in pixels per frame (default 0,0; needs -frames)")
+      ->delimiter(',')
+      ->expected(2);
   // Classic sampling.
   app.add_option("--random_samples", o.randomSamples, "n independent uniform samples per pixel");
   app.add_option("--uniform_samples", o.uniformSamples, "n samples on a regular grid per pixel");
@@ -140,6 +148,13 @@ std::string classicMessage(std::string message) {
   return message;
 }
 
+std::string framePath(const std::string& output, int frame) {
+  const std::filesystem::path p(output);
+  char number[16];
+  std::snprintf(number, sizeof number, "_%04d", frame);
+  return (p.parent_path() / (p.stem().string() + number + p.extension().string())).string();
+}
+
 void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   namespace fs = std::filesystem;
   // Image size and tracing parameters.
@@ -160,6 +175,22 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
       cells *= n;
     }
     if (cells > double(1 << 27)) throw OptionError("-grid", "more than 2^27 cells");
+  }
+
+  // Frames: a count, a finite motion, the colour image only.
+  if (app.count("--frames") && (o.frames < 1 || o.frames > 10000))
+    throw OptionError("-frames", "must be a whole number in 1..10000, found " + std::to_string(o.frames));
+  if (!o.motion.empty()) {
+    if (!app.count("--frames")) throw OptionError("-motion", "needs -frames (the number of frames to render)");
+    for (double v : o.motion)
+      if (!std::isfinite(v) || std::abs(v) > 1e6)
+        throw OptionError("-motion", "dx and dy must be finite numbers of pixels per frame (at most 1e6)");
+  }
+  if (o.frames > 0) {
+    if (o.output.empty()) throw OptionError("-frames", "needs -output (its name gives the frames' names)");
+    if (!o.depth.empty() || !o.normals.empty() || !o.renderSamples.empty() || !o.renderFilter.empty())
+      throw OptionError("-frames", "renders the colour image only; drop -depth, -normals, -render_samples and "
+                                   "-render_filter");
   }
 
   // Outputs: at least one, each writable.

@@ -31,6 +31,10 @@ struct RaytracerOptions {
   std::string normals;             ///< -normals file
   bool stats = false;              ///< -stats: ray counts, accelerator and timing on stdout
   int threads = 0;                 ///< --threads N: 0 = all cores; images do not depend on it
+  // Frames (docs/science.md, "Motion"): -frames F writes F colour images, frame t with the camera moved by
+  // t (dx, dy) pixels (-motion dx,dy; default 0,0), named by framePath(-output, t).
+  int frames = 0;                  ///< -frames F: 0 = one image at -output (the classic behaviour)
+  std::vector<double> motion;      ///< -motion dx,dy in pixels per frame
   // Classic sampling (imply classic reconstruction).
   int randomSamples = 0, uniformSamples = 0, jitteredSamples = 0;  ///< -<kind>_samples n
   float boxFilter = 0.f, tentFilter = 0.f, gaussianFilter = 0.f;  ///< radius r, r, sigma
@@ -55,6 +59,9 @@ std::vector<std::string> translateClassicFlags(int argc, char** argv);
 
 /// A CLI11 message with double-dash classic flags turned back into single-dash ones.
 std::string classicMessage(std::string message);
+
+/// The file of frame t of -output: "<stem>_<t, 4 digits>.<ext>", e.g. out.png -> out_0003.png.
+std::string framePath(const std::string& output, int frame);
 
 /// Checks values, files and folders before any work; throws OptionError
 /// naming the option, or FileError for an unreadable input.

@@ -92,7 +92,28 @@ class PerspectiveCamera final : public Camera {
   float angle_, tanHalf_;
 };
 
+class ShiftedCamera final : public Camera {
+ public:
+  ShiftedCamera(const Camera& base, const Vec2& offset) : base_(base), offset_(offset) {}
+  Ray generateRay(const Vec2& s) const override { return base_.generateRay(s + offset_); }
+  RayDerivatives rayDerivatives(const Vec2& s) const override { return base_.rayDerivatives(s + offset_); }
+  float tMin() const override { return base_.tMin(); }
+  std::string describe() const override {
+    std::ostringstream out;
+    out << base_.describe() << " shifted by (" << offset_.x() << " " << offset_.y() << ") screen";
+    return out.str();
+  }
+
+ private:
+  const Camera& base_;
+  Vec2 offset_;
+};
+
 }  // namespace
+
+std::unique_ptr<Camera> makeShiftedCamera(const Camera& base, const Vec2& offset) {
+  return std::make_unique<ShiftedCamera>(base, offset);
+}
 
 std::unique_ptr<Camera> makeOrthographicCamera(const Vec3& center, const Vec3& direction, const Vec3& up,
                                                float size) {

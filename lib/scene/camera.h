@@ -36,6 +36,19 @@ inline Vec2 filmToScreen(float fx, float fy, int width, int height) {
   return Vec2((fx - 0.5f * width) / side + 0.5f, (fy - 0.5f * height) / side + 0.5f);
 }
 
+/// Camera motion (frames of an animation, docs/science.md "Motion"): frame t of a motion of (dx, dy) pixels per
+/// frame moves the camera by (t dx, t dy) pixels parallel to the image plane, so film position p of frame t
+/// sees what film position p + t (dx, dy) saw in frame 0 (the picture moves by -t (dx, dy)). It is applied as an
+/// offset of the screen point given to the camera: exactly a translation for an orthographic camera, a shift
+/// of the image plane (lens shift) for a perspective one. Offset zero leaves every ray bit-identical.
+inline Vec2 frameScreenOffset(int frame, double dx, double dy, int width, int height) {
+  const double side = width > height ? width : height;
+  return Vec2(static_cast<float>(frame * dx / side), static_cast<float>(frame * dy / side));
+}
+/// `base` seen through a screen offset: generateRay(s) = base.generateRay(s + offset), likewise its
+/// derivatives; describe() adds " shifted by (ox oy) screen". Keeps a reference to `base`, which must outlive it.
+std::unique_ptr<Camera> makeShiftedCamera(const Camera& base, const Vec2& offset);
+
 // Both factories normalise D, make U perpendicular to D (Gram-Schmidt) and
 // take horizontal = D x U. They throw InputError("camera: ...") when D is
 // zero or U is zero or parallel to D (the parser adds the file and line).

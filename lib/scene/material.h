@@ -139,9 +139,11 @@ std::unique_ptr<Material> makeWood(const Mat4& textureFromWorld, const Material*
 ///   sinc       w = 0.5 + 0.5 * sinc(frequency x) * sinc(frequency y), sinc(t) = sin(pi t)/(pi t)
 ///   siemens    w = 1 when sin(frequency * atan2(y, x)) >= 0 else 0 (frequency = number of spoke pairs)
 ///   stripes    w = 1 when sin(2 pi frequency x) >= 0 else 0
-enum class PatternKind { ZonePlate, Sinc, Siemens, Stripes };
+///   grating    w = 0.5 + 0.5 * cos(2 pi frequency (x cos a + y sin a)), a = angleDegrees (only the grating uses it)
+enum class PatternKind { ZonePlate, Sinc, Siemens, Stripes, Grating };
 std::unique_ptr<Material> makePattern(const Mat4& textureFromWorld, const Material* first,
-                                      const Material* second, PatternKind kind, float frequency);
+                                      const Material* second, PatternKind kind, float frequency,
+                                      float angleDegrees = 0.f);
 
 /// Perlin's improved noise (2002) with his published permutation; in about [-1, 1].
 float perlinNoise(float x, float y, float z);

@@ -219,8 +219,9 @@ float sinc(float t) {
 
 class Pattern final : public Blend {
  public:
-  Pattern(const Mat4& m, const Material* a, const Material* b, PatternKind kind, float frequency)
-      : Blend(m, a, b), kind_(kind), frequency_(frequency) {}
+  Pattern(const Mat4& m, const Material* a, const Material* b, PatternKind kind, float frequency, float angle)
+      : Blend(m, a, b), kind_(kind), frequency_(frequency), angle_(angle),
+        cos_(static_cast<float>(std::cos(angle * kPi / 180.0))), sin_(static_cast<float>(std::sin(angle * kPi / 180.0))) {}
   Weights weights(const Vec3& q, const TextureFootprint* fp) const override {
     return toSecond(fp ? filteredWeight(q, *fp) : weight(q));
   }
@@ -231,11 +232,12 @@ class Pattern final : public Blend {
       case PatternKind::Sinc: return 0.5f + 0.5f * sinc(frequency_ * x) * sinc(frequency_ * y);
       case PatternKind::Siemens: return std::sin(frequency_ * std::atan2(y, x)) >= 0.f ? 1.f : 0.f;
       case PatternKind::Stripes: return std::sin(2.f * kPi * frequency_ * x) >= 0.f ? 1.f : 0.f;
+      case PatternKind::Grating: return 0.5f + 0.5f * std::cos(2.f * kPi * frequency_ * (x * cos_ + y * sin_));
     }
     return 0.f;
   }
   // Box averages over the footprint's bounding box (half-widths hx, hy):
-  // stripes and sinc exactly; the zone plate and the Siemens star through
+  // stripes, sinc and the grating exactly; the zone plate and the Siemens star through
   // their local frequency (the phase linearised across the box).
   float filteredWeight(const Vec3& q, const TextureFootprint& fp) const {
     const double x = q.x(), y = q.y(), f = frequency_;
@@ -263,17 +265,25 @@ class Pattern final : public Blend {
       }
       case PatternKind::Stripes:
         return static_cast<float>(squareWaveAverage(f * x, std::abs(f) * hx));
+      case PatternKind::Grating: {
+        // cos(kx x + ky y) is separable into x and y factors: a box scales it by sinc(kx hx) sinc(ky hy).
+        const double kx = 2 * kPi * f * cos_, ky = 2 * kPi * f * sin_;
+        return static_cast<float>(0.5 + 0.5 * std::cos(kx * x + ky * y) * boxAttenuation(kx * hx) *
+                                            boxAttenuation(ky * hy));
+      }
     }
     return 0.f;
   }
   std::string pattern() const override {
-    static const char* names[] = {"zoneplate", "sinc", "siemens", "stripes"};
-    return std::string(names[static_cast<int>(kind_)]) + " frequency " + number(frequency_);
+    static const char* names[] = {"zoneplate", "sinc", "siemens", "stripes", "grating"};
+    return std::string(names[static_cast<int>(kind_)]) + " frequency " + number(frequency_) +
+           (kind_ == PatternKind::Grating ? " angle " + number(angle_) : "");
   }
 
  private:
   PatternKind kind_;
-  float frequency_;
+  float frequency_, angle_;
+  float cos_, sin_;  ///< of the grating's angle
 };
 
 }  // namespace
@@ -301,8 +311,9 @@ std::unique_ptr<Material> makeWood(const Mat4& textureFromWorld, const Material*
 }
 
 std::unique_ptr<Material> makePattern(const Mat4& textureFromWorld, const Material* first,
-                                      const Material* second, PatternKind kind, float frequency) {
-  return std::make_unique<Pattern>(textureFromWorld, first, second, kind, frequency);
+                                      const Material* second, PatternKind kind, float frequency,
+                                      float angleDegrees) {
+  return std::make_unique<Pattern>(textureFromWorld, first, second, kind, frequency, angleDegrees);
 }
 
 }  // namespace aliaslab

@@ -123,7 +123,7 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
     return kind == "Marble" ? makeMarble(m, blend[0], blend[1], o, fr, a) : makeWood(m, blend[0], blend[1], o, fr, a);
   }
   // Pattern (aliaslab extension).
-  FieldBlock f(t_, kind, {{"type", FieldKind::Word}, {"frequency"}});
+  FieldBlock f(t_, kind, {{"type", FieldKind::Word}, {"frequency"}, {"angle"}});
   f.require({"type", "frequency"});
   const std::string type = f.word("type");
   PatternKind pk;
@@ -131,8 +131,10 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
   else if (type == "sinc") pk = PatternKind::Sinc;
   else if (type == "siemens") pk = PatternKind::Siemens;
   else if (type == "stripes") pk = PatternKind::Stripes;
-  else f.fail("type", "must be zoneplate, sinc, siemens or stripes, found '" + type + "'");
-  return makePattern(m, blend[0], blend[1], pk, f.number("frequency"));
+  else if (type == "grating") pk = PatternKind::Grating;
+  else f.fail("type", "must be zoneplate, sinc, siemens, stripes or grating, found '" + type + "'");
+  if (pk != PatternKind::Grating && f.has("angle")) f.fail("angle", "is a key of the grating only");
+  return makePattern(m, blend[0], blend[1], pk, f.number("frequency"), f.number("angle", 0.f));
 }
 
 }  // namespace aliaslab::detail

@@ -303,3 +303,40 @@ TEST_F(RaytracerTest, AdaptiveSamplerSpendsTheBudgetWhereTheEdgesAre) {
     }
   EXPECT_GE(most, 3 * std::max(1, least)) << "least " << least << ", most " << most;
 }
+
+// -frames F -motion dx,dy: F images <stem>_NNNN.<ext>; frame t sees what pixel p + t (dx, dy) saw in frame 0;
+// -frames 1 -motion 0,0 writes the classic image bit for bit; frames do not depend on the thread count.
+TEST_F(RaytracerTest, FramesOfAMovingCamera) {
+  ASSERT_EQ(run("-input " + kScene + " -size 16 16 -output " + path("still.exr")).code, 0);
+  ASSERT_EQ(run("-input " + kScene + " -size 16 16 -frames 1 -motion 0,0 -output " + path("one.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("still.exr")), readImage(path("one_0000.exr"))));
+  const std::string moving = "-input " + kScene + " -size 16 16 -frames 3 -motion 1,0 --sampler jittered --spp 4";
+  ASSERT_EQ(run(moving + " --threads 1 -output " + path("a.exr")).code, 0);
+  ASSERT_EQ(run(moving + " --threads 2 -output " + path("b.exr")).code, 0);
+  for (const char* t : {"0000", "0001", "0002"})
+    EXPECT_TRUE(identical(readImage(path(std::string("a_") + t + ".exr")), readImage(path(std::string("b_") + t + ".exr"))));
+  EXPECT_FALSE(fs::exists(path("a_0003.exr")));
+  // A whole-pixel motion at pixel centres: frame 2's pixel x is frame 0's pixel x + 2 (all but edge pixels).
+  ASSERT_EQ(run("-input " + kScene + " -size 16 16 -frames 3 -motion 1,0 -output " + path("c.exr")).code, 0);
+  const Image f0 = readImage(path("c_0000.exr")), f2 = readImage(path("c_0002.exr"));
+  int same = 0, all = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 0; x + 2 < 16; ++x, ++all) same += f2.get(x, y).isApprox(f0.get(x + 2, y), 0.f) ? 1 : 0;
+  EXPECT_GE(same, all - 4);
+  EXPECT_FALSE(identical(f0, f2));
+}
+
+TEST_F(RaytracerTest, FramesRefuseBadValues) {
+  const std::string base = "-input " + kScene + " -size 16 16 -output " + path("x.png");
+  for (const auto& [args, words] : std::vector<std::pair<std::string, std::string>>{
+           {" -frames 0", "-frames: must be a whole number in 1..10000"},
+           {" -motion 1,0", "-motion: needs -frames"},
+           {" -frames 2 -motion 1,inf", "-motion"},
+           {" -frames 2 -motion 1", "-motion"},
+           {" -frames 2 -normals " + path("n.png"), "-frames: renders the colour image only"}}) {
+    const Result r = run(base + args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_NE(r.err.find(words), std::string::npos) << args << ": " << r.err;
+  }
+  EXPECT_TRUE(fs::is_empty(dir_) || !fs::exists(path("x_0000.png")));
+}

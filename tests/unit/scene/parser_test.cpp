@@ -308,7 +308,10 @@ const BadScene kBad[] = {
      3, "no Materials"},
     {"bad pattern type", kCam + "Materials { numMaterials 3 Material { } Material { }\n"
                          "Pattern { materialIndex 0 materialIndex 1\ntype moire frequency 2 } }\n",
-     4, "zoneplate, sinc, siemens or stripes"},
+     4, "zoneplate, sinc, siemens, stripes or grating"},
+    {"angle of a non-grating", kCam + "Materials { numMaterials 3 Material { } Material { }\n"
+                               "Pattern { materialIndex 0 materialIndex 1\ntype sinc frequency 2\nangle 30 } }\n",
+     5, "'angle' is a key of the grating only"},
 };
 
 class ParserErrors : public testing::TestWithParam<BadScene> {};

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/hash.h"
@@ -132,6 +133,34 @@ TEST(Procedural, PatternWeightsAtKnownPoints) {
   EXPECT_EQ(w(PatternKind::Stripes, f, 0.75f / f, 7), 0.f);         // sin(3pi/2) < 0
   EXPECT_EQ(w(PatternKind::Siemens, f, std::cos(0.17f), std::sin(0.17f)), 1.f);  // sin(4 * 0.17) > 0
   EXPECT_EQ(w(PatternKind::Siemens, f, std::cos(0.9f), std::sin(0.9f)), 0.f);    // sin(3.6) < 0
+  // grating 0.5 + 0.5 cos(2 pi f (x cos a + y sin a)): angle 0 is along x, angle 90 along y
+  auto g = [&](float angle, float x, float y) {
+    return makePattern(Mat4::Identity(), a.get(), b.get(), PatternKind::Grating, f, angle)->diffuse(Vec3(x, y, 0))[0];
+  };
+  EXPECT_NEAR(g(0, 0, 0.3f), 1.f, kTol);
+  EXPECT_NEAR(g(0, 0.5f / f, 0.3f), 0.f, kTol);
+  EXPECT_NEAR(g(0, 0.125f / f, 5), 0.5f + 0.5f * std::cos(kPi / 4), kTol);
+  EXPECT_NEAR(g(90, 0.3f, 0.5f / f), 0.f, kTol);
+  EXPECT_NEAR(g(60, 1 / f, 0), 0.f, kTol);  // cos(2 pi * 0.5) = -1
+}
+
+// The grating's footprint average (an axis-aligned box) against a midpoint rule over the box.
+TEST(Procedural, GratingFootprintIsTheBoxAverage) {
+  auto a = makePhong({.diffuse = Color::Zero()}), b = makePhong({.diffuse = Color::Ones()});
+  const float f = 3.f, angle = 25.f;
+  const auto g = makePattern(Mat4::Identity(), a.get(), b.get(), PatternKind::Grating, f, angle);
+  const double c = std::cos(angle * kPi / 180), s = std::sin(angle * kPi / 180);
+  for (const auto& [x, y, hx, hy] : {std::array<double, 4>{0.1, -0.2, 0.05, 0.08}, {0.37, 0.5, 0.2, 0.01}}) {
+    const int n = 400;
+    double sum = 0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        const double u = x + hx * (2 * (i + 0.5) / n - 1), v = y + hy * (2 * (j + 0.5) / n - 1);
+        sum += 0.5 + 0.5 * std::cos(2 * kPi * f * (u * c + v * s));
+      }
+    const SurfacePoint p(Vec3(float(x), float(y), 0), Vec3(float(2 * hx), 0, 0), Vec3(0, float(2 * hy), 0));
+    EXPECT_NEAR(g->diffuse(p)[0], sum / (n * n), 1e-4) << x << " " << y;
+  }
 }
 
 // Perlin noise -----------------------------------------------------------------
