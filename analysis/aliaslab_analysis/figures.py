@@ -1,6 +1,6 @@
-"""Matplotlib set up once (the Agg backend, no display needed), the series colours, file-name-safe names
+"""Matplotlib set up once (the Agg backend, no display needed), file-name-safe names
 and the saving of a figure as PNG and SVG. Import plt from here, never matplotlib.pyplot directly (the
-backend must be chosen before pyplot is imported).
+backend must be chosen before pyplot is imported). Series colours and markers: palette.py.
 """
 import os
 import re
@@ -9,15 +9,6 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-
-# Distinct colours for up to 14 series (tab10, then four more).
-PALETTE = [plt.cm.tab10(i) for i in range(10)] + ["black", "gold", "navy", "lime"]
-
-
-def colour(i):
-    """The i-th series colour."""
-    return PALETTE[i % len(PALETTE)]
-
 
 def slug(text):
     """A file-name-safe version of a scene or method name."""

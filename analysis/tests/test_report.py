@@ -49,7 +49,7 @@ class Report(unittest.TestCase):
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.linked = f.read()
-        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts"])  # embedded, the default
+        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts", "--embed"])  # embedded
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.embedded = f.read()
@@ -64,7 +64,8 @@ class Report(unittest.TestCase):
         page = self.linked
         findings = page.index("id='findings'")
         self.assertIn("Answer for this study", page)
-        self.assertLess(findings, page.index("<img"))
+        self.assertLess(findings, page.index("<figure"))  # only the scene gallery's thumbnails come before
+        self.assertLess(page.index("id='gallery'"), findings)
         self.assertLess(findings, page.index("id='scenes'"))
         self.assertLess(page.index("id='scenes'"), page.index("id='stability'"))
         # The one chart of the findings sits before the first scene.

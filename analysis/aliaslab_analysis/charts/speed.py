@@ -8,10 +8,10 @@ import os
 import numpy as np
 import pandas as pd
 
-from .. import figures
+from .. import figures, palette
 from ..figures import plt
 from ..stats import fronts as tie_fronts
-from .axes import (ERROR_LABEL, MARKERS, METHOD, clip_outliers, empty_panel, has_target, method_label,
+from .axes import (ERROR_LABEL, METHOD, clip_outliers, empty_panel, has_target, method_label,
                    number_points, plain_log_x, usable, yerr_log)
 
 
@@ -19,8 +19,8 @@ def speed_accuracy(df, out_dir):
     """Error against the target vs time per scene; returns the Pareto rows of every scene."""
     samplers = sorted(df["sampler"].unique())
     filters = sorted(df["filter_name"].unique())
-    colours = {s: figures.colour(i) for i, s in enumerate(samplers)}
-    markers = {f: MARKERS[i % len(MARKERS)] for i, f in enumerate(filters)}
+    colours = {s: palette.sampler_colour(s) for s in samplers}
+    markers = {f: palette.filter_marker(f) for f in filters}
     show_recon = df["reconstruction"].nunique() > 1
     prefiltered = (df["prefilter"] != "none").any()
     fronts = []

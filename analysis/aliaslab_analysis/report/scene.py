@@ -84,12 +84,36 @@ def scene_table(sd, ranked=None):
             + "".join(rows) + "</table>")
 
 
+def committed_spectra(page_dir, scene, charts_dir, embed):
+    """The spectrum charts already in charts_dir, drawn when the study ran, for a study whose spectra/ CSVs are
+    not at hand (they are not committed): '' when there are none."""
+    import glob
+    s = figures.slug(scene)
+    found = sorted(glob.glob(os.path.join(charts_dir, f"spectrum_{s}_spp*.png")))
+    pairs = sorted(glob.glob(os.path.join(charts_dir, f"spectrum_pair_{s}_spp*.png")),
+                   key=lambda p: int(p.rsplit("spp", 1)[1][:-4]))
+    if not found and not pairs:
+        return ""
+    parts = ["<p>Radially averaged power spectra of the per-seed error images, frequency in cycles per pixel; the "
+             f"dotted line is a quarter of Nyquist ({spectra.CUTOFF:g} cycles/pixel). White error is flat; error "
+             "moved to high frequencies (what the correlated samplers aim for) rises to the right. Drawn when the "
+             "study ran (its <code>spectra/</code> CSVs are not committed). Definitions: docs/spectrum.md.</p>"]
+    figs = [figure(page_dir, p, f"Error spectra of every sampler at {p.rsplit('spp', 1)[1][:-4]} spp.", embed,
+                   cls="spec") for p in found]
+    figs += [figure(page_dir, p, f"An independent and a correlated sampler at {p.rsplit('spp', 1)[1][:-4]} spp.",
+                    embed, cls="spec") for p in pairs]
+    return "\n".join(parts) + "<div class='pair'>" + "".join(f for f in figs if f) + "</div>"
+
+
 def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     """Issue 22: where the error sits on screen. An overview chart of every sampler's error spectrum at one
     spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
     spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
     head = "<h4>Where the error sits on screen</h4>"
     if spec is None or not (spec["scene"] == str(scene)).any():
+        kept = committed_spectra(page_dir, scene, charts_dir, embed) if spec is None else ""
+        if kept:
+            return head + kept
         return (head + "<p class='note'>No error spectra for this scene (the study CSV has no "
                 "<code>spectra/</code> files beside it: written by sweeps since issue 22).</p>")
     spec = spec[spec["scene"] == str(scene)]
@@ -152,26 +176,39 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
             parts.append("<table>" + "".join(cells) + "</table>")
         if pics:
             parts.append("<div class='pair'>" + "".join(pics) + "</div>")
-        else:
+        elif os.path.isdir(images):
             parts.append("<p class='note'>No images for these rows (run the sweep with <code>--images</code>).</p>")
     return "\n".join(p for p in parts if p)
+
+
+def scene_notes(images, embed):
+    """What holds for every scene, said once above them instead of in each."""
+    if os.path.isdir(images):
+        return ""
+    return ("<p class='note'>This study kept no per-configuration images (a large sweep writes none unless given "
+            "<code>--images</code>): each scene shows its tables and charts, no renders.</p>")
 
 
 def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None):
     s = figures.slug(scene)
     parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd, ranked)]
-    chart = lambda kind, caption: figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed)
+
+    def chart(kind, caption, toc=None):
+        return figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed,
+                      anchor=f"{kind}-{s}", toc=toc or kind.replace("_", " "))
     parts.append(chart("decomposition", "Where the error comes from: noise, aliasing and blur stacked, the cross "
-                       "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors."))
+                       "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors.",
+                       "decomposition"))
     parts.append(chart("radius", "The radius trade-off per filter: a wider filter lowers noise (dashed) and "
-                       "adds blur (dotted)."))
+                       "adds blur (dotted); one y range for all panels; degenerate points (weight sums near zero) "
+                       "at the top edge, in red.", "radius trade-off"))
     parts.append(chart("convergence", "Convergence with spp (slopes only over at least three spp levels)."))
     parts.append(chart("speed_accuracy", "Error against the target vs time per image; the front with ties "
                        "(a point leaves it only when another is significantly better and not significantly "
-                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic)."))
-    heat = chart("heatmap", "Error over filter x radius, one row per spp level.")
-    if heat:
-        parts.append(f"<details><summary>Error over filter x radius (heatmap)</summary>{heat}</details>")
+                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic).",
+                       "error vs time"))
+    parts.append(chart("heatmap", "Error over sampler x filter x radius, one panel per spp level; degenerate cells "
+                       "(weight sums near zero) hatched and kept out of the colour scale.", "heatmap"))
     sheet = os.path.join(images, f"contact-{s}.png")
     if os.path.isfile(sheet):
         caption = "Contact sheet: zoomed crops of the hardest region."
@@ -197,5 +234,6 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ran
         pics = [p for p in pics if p]
         if len(pics) > 1:
             parts.append("<div class='pix'>" + "".join(pics) + "</div>")
-    parts.append(spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
+    parts.append(f"<div id='spectra-{html.escape(s)}' data-toc='error spectra'></div>"
+                 + spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
     return "\n".join(p for p in parts if p)
