@@ -22,7 +22,7 @@ SAMPLER_COLOURS = {
     "multijittered": "#44AA99",    # teal
     "cmj": "#117733",              # green
     "halton": "#999933",           # olive
-    "hammersley": "#C9A227",       # dark sand
+    "hammersley": "#DDCC77",       # sand
     "sobol": "#CC6677",            # rose
     "zsobol": "#882255",           # wine
     "pmj02": "#AA4499",            # purple

@@ -127,6 +127,7 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     fig.savefig(path, dpi=110)
+    figures.quantize_png(path)
     plt.close(fig)
     return path
 

@@ -8,7 +8,7 @@ from .. import degenerate, figures
 from ..figures import plt
 from .axes import ERROR_LABEL, has_target, usable
 
-CELL_W, CELL_H = 0.56, 0.27  # inches per cell: at the page's width the numbers are about 10 px tall
+CELL_W, CELL_H = 0.52, 0.27  # inches per cell: at the page's width the numbers are about 10 px tall
 
 
 def cell_text(v, flagged):
@@ -30,13 +30,15 @@ def heatmaps(df, out_dir):
         methods = sorted(sd["method"].unique())
         radii = sorted(sd["radius"].unique())
         columns = [(m, r) for m in methods for r in radii]
-        pos = usable(sd[~sd["degenerate"]])["error"]
-        vmin, vmax = (np.log10(pos.min()), np.log10(pos.max())) if len(pos) else (-6.0, 0.0)
+        pos = np.log10(usable(sd[~sd["degenerate"]])["error"].to_numpy(dtype=float))
+        # the scale spans the non-degenerate cells up to their 95th percentile (above: the top colour, the
+        # colour bar's arrow), so that a few poor cells do not turn every useful one the same colour
+        vmin, vmax = (pos.min(), min(pos.max(), np.quantile(pos, 0.95))) if len(pos) else (-6.0, 0.0)
         if vmax - vmin < 1e-9:
             vmin, vmax = vmin - 0.5, vmax + 0.5
         norm = matplotlib.colors.Normalize(vmin, vmax)
-        width = CELL_W * len(columns) + 2.6
-        height = (CELL_H * len(samplers) + 0.9) * len(levels) + 0.8
+        width = CELL_W * len(columns) + 1.4
+        height = (CELL_H * len(samplers) + 0.9) * len(levels) + 1.4
         fig, axes = plt.subplots(len(levels), 1, figsize=(width, height), squeeze=False, layout="constrained")
         im = None
         n_deg = 0
@@ -65,7 +67,7 @@ def heatmaps(df, out_dir):
                 shade = logd[i, j]
                 light = np.isfinite(shade) and norm(shade) > 0.6
                 colour = "#8b1a10" if deg[i, j] else ("black" if light or not np.isfinite(shade) else "white")
-                ax.text(j, i, cell_text(v, flag[i, j]), ha="center", va="center", fontsize=6.5, color=colour,
+                ax.text(j, i, cell_text(v, flag[i, j]), ha="center", va="center", fontsize=7.5, color=colour,
                         weight="bold" if deg[i, j] else "normal")
             ax.set_xticks(range(len(columns)), [f"{r:g}" for _, r in columns], fontsize=7)
             ax.set_yticks(range(len(samplers)), samplers, fontsize=7.5)
@@ -75,7 +77,8 @@ def heatmaps(df, out_dir):
                 ax.text((k + 0.5) * len(radii) - 0.5, -0.7, m, ha="center", va="bottom", fontsize=8, weight="bold")
             ax.set_xlabel("radius (px), grouped by filter", fontsize=7)
             ax.set_title(f"{int(spp)} spp", fontsize=9, loc="left", pad=14)
-        fig.colorbar(im, ax=axes, label="log10 " + ERROR_LABEL[has_target(df)].replace(" (", "\n("), shrink=0.9)
+        fig.colorbar(im, ax=axes, label="log10 " + ERROR_LABEL[has_target(df)], location="bottom", shrink=0.6,
+                     aspect=40, extend="max" if len(pos) and pos.max() > vmax else "neither")
         fig.suptitle(f"Error over sampler x filter x radius: {scene}. Hatched red: degenerate ({degenerate.RULE}; "
                      f"{n_deg} cell(s), kept out of the colour scale); * flagged (kept); n/a: no value", fontsize=9)
         figures.save_figure(fig, out_dir, f"heatmap_{figures.slug(scene)}")

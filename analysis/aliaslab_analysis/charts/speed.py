@@ -95,8 +95,10 @@ def speed_accuracy(df, out_dir):
         ax.add_artist(leg)
         if lines:
             shown = lines[:25] + ([f"... {len(lines) - 25} more in pareto.csv"] if len(lines) > 25 else [])
-            ax.text(1.01, 0.0, "Front with ties:\n" + "\n".join(shown),
-                    transform=ax.transAxes, fontsize=7, va="bottom", ha="left", family="monospace")
+            per = 9  # below the chart, in columns: beside it the legend would cover them
+            for c in range(0, len(shown), per):
+                ax.text(0.5 * (c // per), -0.11, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+                        transform=ax.transAxes, fontsize=7, va="top", ha="left", family="monospace")
         figures.save_figure(fig, out_dir, f"speed_accuracy_{figures.slug(scene)}")
     cols = ["scene"] + METHOD + ["spp", "time_ms", "cost", "cost_se", "error", "error_se", "flagged"]
     table = pd.concat(fronts)[cols] if fronts else pd.DataFrame(columns=cols)

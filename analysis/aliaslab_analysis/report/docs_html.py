@@ -17,11 +17,12 @@ LINK = re.compile(r"""href=(["'])(?!https?:|#|mailto:)([^"'#]+)\.md(#[^"']*)?\1"
 
 
 def to_html(text):
-    """HTML of a Markdown text: python3-markdown with tables, fenced code and sane lists when present."""
+    """HTML of a Markdown text: python3-markdown with tables, fenced code, sane lists and heading ids (toc: the
+    same slugs as the docs' own #links) when present."""
     if _markdown is None:
         return ("<p class='note'>python3-markdown is not installed: a plain rendering.</p>"
                 + "\n".join(b for _, b in markdown_blocks(text)))
-    return _markdown.markdown(text, extensions=["tables", "fenced_code", "sane_lists"], output_format="html")
+    return _markdown.markdown(text, extensions=["tables", "fenced_code", "sane_lists", "toc"], output_format="html")
 
 
 def md_links_to_html(fragment):

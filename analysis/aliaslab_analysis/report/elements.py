@@ -22,7 +22,7 @@ td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}
 .pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}
 figure img{cursor:zoom-in}figcaption a.anchor{color:#999;text-decoration:none;margin-left:.3em}
-.docs li{margin:.15em 0}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
+.docs li{margin:.15em 0}.docs td,.docs th{text-align:left}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
 
 
 def chart_png_bytes(path):
@@ -36,6 +36,9 @@ def chart_png_bytes(path):
             return f.read()
     out = io.BytesIO()
     with Image.open(path) as im:
+        if im.mode == "P":  # already palette-coded (figures.save_figure does it since issue 30)
+            with open(path, "rb") as f:
+                return f.read()
         im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)
     return out.getvalue()
 

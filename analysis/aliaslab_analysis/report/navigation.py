@@ -1,6 +1,7 @@
 """Finding one's way on the page: a sticky table of contents built from the page's own anchors (every
 <h2>/<h3> with an id, and every figure with an id and a data-toc label, nested under the heading before it),
-the scene gallery (a card per scene linking to its section), and click-to-enlarge (a lightbox in plain
+the scene gallery (a card per scene linking to its section); a scene's charts show in the contents
+while the reader is in that scene, and click-to-enlarge (a lightbox in plain
 CSS/JS: no network, works from file://). The palette is handed to the page's scripts as
 window.ALIASLAB_PALETTE (palette.as_json) and as CSS variables (--sampler-NAME)."""
 import html
@@ -13,10 +14,10 @@ CSS = """body{max-width:1560px}.layout{display:grid;grid-template-columns:230px 
 font-size:.8em;padding:.6em .2em 1em 0;border-right:1px solid #ddd}nav.toc ul{list-style:none;margin:0;
 padding-left:.9em}nav.toc>ul{padding-left:0}nav.toc li{margin:.1em 0}nav.toc a{color:#236;text-decoration:none}
 nav.toc a:hover{text-decoration:underline}nav.toc a.here{font-weight:bold;color:#000}nav.toc .fig a{color:#567}
-nav.toc b{display:block;margin-bottom:.3em}.gallery{display:flex;flex-wrap:wrap;gap:10px;margin:.8em 0}
+nav.toc b{display:block;margin-bottom:.3em}nav.toc ul ul ul{display:none}nav.toc li:has(a.here)>ul{display:block}.gallery{display:flex;flex-wrap:wrap;gap:10px;margin:.8em 0}
 .gallery a{display:block;width:170px;background:#fff;border:1px solid #ddd;padding:5px;color:#222;
 text-decoration:none;font-size:.8em}.gallery a:hover{border-color:#236}.gallery img{width:160px;height:160px;
-object-fit:contain;image-rendering:pixelated;background:#eee;display:block}.gallery .none{width:160px;height:160px;
+object-fit:contain;background:#eee;display:block}.gallery .none{width:160px;height:160px;
 background:#eee;display:flex;align-items:center;justify-content:center;color:#777;text-align:center}
 #lightbox{display:none;position:fixed;inset:0;background:rgba(0,0,0,.82);z-index:50;overflow:auto;cursor:zoom-out}
 #lightbox.open{display:block}#lightbox img{display:block;margin:2em auto;background:#fff;max-width:none}
@@ -90,17 +91,20 @@ window.ALIASLAB_PALETTE = %s;
   document.addEventListener('keydown', function (e) {
     if (e.key === 'Escape') box.classList.remove('open');
   });
-  var links = {};
-  document.querySelectorAll('nav.toc a').forEach(function (a) { links[a.getAttribute('href').slice(1)] = a; });
-  if (!('IntersectionObserver' in window)) return;
-  var seen = new IntersectionObserver(function (list) {
-    list.forEach(function (en) {
-      if (!en.isIntersecting || !links[en.target.id]) return;
-      Object.keys(links).forEach(function (k) { links[k].classList.remove('here'); });
-      links[en.target.id].classList.add('here');
-    });
-  }, {rootMargin: '0px 0px -70%% 0px'});
-  Object.keys(links).forEach(function (k) { var el = document.getElementById(k); if (el) seen.observe(el); });
+  // the contents mark where the reader is: the last anchor whose top has passed the upper third of the window
+  var links = Array.from(document.querySelectorAll('nav.toc a')), queued = false, current = null;
+  var targets = links.map(function (a) { return document.getElementById(a.getAttribute('href').slice(1)); });
+  function mark() {
+    queued = false;
+    var line = window.innerHeight / 3, pick = null;
+    targets.forEach(function (el, i) { if (el && el.getBoundingClientRect().top <= line) pick = links[i]; });
+    if (pick === current) return;
+    if (current) current.classList.remove('here');
+    if (pick) pick.classList.add('here');
+    current = pick;
+  }
+  window.addEventListener('scroll', function () { if (!queued) { queued = true; requestAnimationFrame(mark); } });
+  mark();
 })();
 """
 

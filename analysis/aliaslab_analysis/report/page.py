@@ -161,7 +161,7 @@ def scenes_section(c):
     if len(s.targets) > 1:
         body.append(f"<p class='note'>Per scene, against the primary target <code>{html.escape(s.primary)}</code>; "
                     "the answer under the other targets is in the table above.</p>")
-    body.append(scene_notes(c.images, c.embed))
+    body.append(scene_notes(c.images, c.spec))
     ranked = s.ranked[s.ranked["target"].astype(str) == s.primary]
     for scene in s.scenes:
         body.append(scene_section(c.results, scene, c.primary[c.primary["scene"] == scene], c.charts_dir, c.images,

@@ -84,36 +84,14 @@ def scene_table(sd, ranked=None):
             + "".join(rows) + "</table>")
 
 
-def committed_spectra(page_dir, scene, charts_dir, embed):
-    """The spectrum charts already in charts_dir, drawn when the study ran, for a study whose spectra/ CSVs are
-    not at hand (they are not committed): '' when there are none."""
-    import glob
-    s = figures.slug(scene)
-    found = sorted(glob.glob(os.path.join(charts_dir, f"spectrum_{s}_spp*.png")))
-    pairs = sorted(glob.glob(os.path.join(charts_dir, f"spectrum_pair_{s}_spp*.png")),
-                   key=lambda p: int(p.rsplit("spp", 1)[1][:-4]))
-    if not found and not pairs:
-        return ""
-    parts = ["<p>Radially averaged power spectra of the per-seed error images, frequency in cycles per pixel; the "
-             f"dotted line is a quarter of Nyquist ({spectra.CUTOFF:g} cycles/pixel). White error is flat; error "
-             "moved to high frequencies (what the correlated samplers aim for) rises to the right. Drawn when the "
-             "study ran (its <code>spectra/</code> CSVs are not committed). Definitions: docs/spectrum.md.</p>"]
-    figs = [figure(page_dir, p, f"Error spectra of every sampler at {p.rsplit('spp', 1)[1][:-4]} spp.", embed,
-                   cls="spec") for p in found]
-    figs += [figure(page_dir, p, f"An independent and a correlated sampler at {p.rsplit('spp', 1)[1][:-4]} spp.",
-                    embed, cls="spec") for p in pairs]
-    return "\n".join(parts) + "<div class='pair'>" + "".join(f for f in figs if f) + "</div>"
-
-
 def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     """Issue 22: where the error sits on screen. An overview chart of every sampler's error spectrum at one
     spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
     spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
     head = "<h4>Where the error sits on screen</h4>"
-    if spec is None or not (spec["scene"] == str(scene)).any():
-        kept = committed_spectra(page_dir, scene, charts_dir, embed) if spec is None else ""
-        if kept:
-            return head + kept
+    if spec is None:
+        return ""  # said once above the scenes (scene_notes)
+    if not (spec["scene"] == str(scene)).any():
         return (head + "<p class='note'>No error spectra for this scene (the study CSV has no "
                 "<code>spectra/</code> files beside it: written by sweeps since issue 22).</p>")
     spec = spec[spec["scene"] == str(scene)]
@@ -181,12 +159,18 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     return "\n".join(p for p in parts if p)
 
 
-def scene_notes(images, embed):
+def scene_notes(images, spec):
     """What holds for every scene, said once above them instead of in each."""
-    if os.path.isdir(images):
-        return ""
-    return ("<p class='note'>This study kept no per-configuration images (a large sweep writes none unless given "
-            "<code>--images</code>): each scene shows its tables and charts, no renders.</p>")
+    notes = []
+    if not os.path.isdir(images):
+        notes.append("This study kept no per-configuration images (a large sweep writes none unless given "
+                     "<code>--images</code>): each scene shows its tables and charts, no renders.")
+    if spec is None:
+        notes.append("No error spectra: the study CSV has no <code>spectra/</code> files beside it (written by "
+                     "sweeps since issue 22; not committed for the studies in results/), so where the error sits "
+                     "on screen is told by the <code>lowfreq_error</code> and <code>blurred_mse</code> columns of "
+                     "the tables alone.")
+    return "".join(f"<p class='note'>{n}</p>" for n in notes)
 
 
 def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None):
@@ -234,6 +218,7 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ran
         pics = [p for p in pics if p]
         if len(pics) > 1:
             parts.append("<div class='pix'>" + "".join(pics) + "</div>")
-    parts.append(f"<div id='spectra-{html.escape(s)}' data-toc='error spectra'></div>"
-                 + spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
+    spectra_html = spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed)
+    if spectra_html:
+        parts.append(f"<div id='spectra-{html.escape(s)}' data-toc='error spectra'></div>" + spectra_html)
     return "\n".join(p for p in parts if p)

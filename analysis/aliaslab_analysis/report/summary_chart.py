@@ -45,9 +45,11 @@ def summary_chart(s, out_dir):
     above = g["median_ratio"] > cap
     g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
     g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
-    fig, panels = plt.subplots(1, len(levels), figsize=(4.2 * len(levels) + 2.4, 5.8), sharey=True, squeeze=False)
-    panels = panels[0]
     front = g[g["front"]].sort_values(["spp", "cost", "median_ratio"])
+    widths = [1 + (front["spp"] == spp).sum() / 8 for spp in levels]  # room for the numbers where the front is long
+    fig, panels = plt.subplots(1, len(levels), figsize=(2.2 * sum(widths) + 4.0, 6.0), sharey=True, squeeze=False,
+                               gridspec_kw=dict(width_ratios=widths))
+    panels = panels[0]
     lines = [f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['median_ratio']:.3g} "
              f"[{r['ci_low']:.3g}-{r['ci_high']:.3g}], {r['cost']:.3g} ms" for k, (_, r) in enumerate(front.iterrows(), 1)]
     timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
