@@ -17,7 +17,8 @@ nav.toc a:hover{text-decoration:underline}nav.toc a.here{font-weight:bold;color:
 nav.toc b{display:block;margin-bottom:.3em}nav.toc ul ul ul{display:none}nav.toc li:has(a.here)>ul{display:block}.gallery{display:flex;flex-wrap:wrap;gap:10px;margin:.8em 0}
 .gallery a{display:block;width:170px;background:#fff;border:1px solid #ddd;padding:5px;color:#222;
 text-decoration:none;font-size:.8em}.gallery a:hover{border-color:#236}.gallery img{width:160px;height:160px;
-object-fit:contain;background:#eee;display:block}.gallery .none{width:160px;height:160px;
+object-fit:contain;background:#eee;display:block}
+.gallery img.px{image-rendering:pixelated}.gallery .none{width:160px;height:160px;
 background:#eee;display:flex;align-items:center;justify-content:center;color:#777;text-align:center}
 #lightbox{display:none;position:fixed;inset:0;background:rgba(0,0,0,.82);z-index:50;overflow:auto;cursor:zoom-out}
 #lightbox.open{display:block}#lightbox img{display:block;margin:2em auto;background:#fff;max-width:none}
@@ -66,10 +67,12 @@ def with_toc(body):
 
 
 def gallery(cards):
-    """The scene gallery: cards [(anchor, title, image src or None, line of text)], each linking to its scene."""
+    """The scene gallery: cards [(anchor, title, image src or None, line of text, magnified)], each linking to its
+    scene; a magnified image (smaller than its card) is drawn with its pixels square, not smoothed."""
     out = []
-    for anchor, title, src, text in cards:
-        pic = (f"<img src='{html.escape(src)}' loading='lazy' alt='{html.escape(title)}'>" if src
+    for anchor, title, src, text, magnified in cards:
+        px = " class='px'" if magnified else ""
+        pic = (f"<img{px} src='{html.escape(src)}' loading='lazy' alt='{html.escape(title)}'>" if src
                else "<span class='none'>no image in this study</span>")
         out.append(f"<a href='#{html.escape(anchor)}'>{pic}<b>{html.escape(title)}</b><br>{text}</a>")
     return "<div class='gallery'>" + "".join(out) + "</div>"

@@ -118,16 +118,17 @@ def gallery_section(c):
     cards = []
     for scene in c.s.scenes:
         slug = figures.slug(scene)
-        src = None
+        src, small = None, False
         for p in (os.path.join(c.images, slug, "reference-area.png"), os.path.join(folder, "thumbnails", slug + ".png")):
             if os.path.isfile(p):
                 src = image_src(c.results, p, c.embed)
+                small = int(c.primary.loc[c.primary["scene"] == scene, ["width", "height"]].to_numpy().max()) < 160
                 break
         sd = c.primary[c.primary["scene"] == scene]
         best = charts_axes.best_row(sd[~sd["deterministic"].astype(bool)])  # the fixed grid is not ranked
         text = (f"best at {int(best['spp'])} spp: {html.escape(method_name(best))}, error {best['error']:.2g}"
                 if best is not None else "no unflagged row")
-        cards.append((f"scene-{slug}", str(scene), src, text))
+        cards.append((f"scene-{slug}", str(scene), src, text, small))
     return "<h2 id='gallery'>The scenes</h2>" + navigation.gallery(cards)
 
 
