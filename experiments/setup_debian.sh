@@ -10,7 +10,8 @@ packages=(
   build-essential cmake ninja-build git
   libeigen3-dev libopenimageio-dev openimageio-tools libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  python3 python3-numpy python3-pandas python3-matplotlib
+  python3 python3-numpy python3-pandas python3-matplotlib python3-markdown
+  chromium chromium-driver python3-selenium
   parallel clang libclang-rt-14-dev
   munge slurmctld slurmd slurm-client
 )

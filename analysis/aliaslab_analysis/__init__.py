@@ -9,7 +9,9 @@ Layout, a concept a module:
   csv_tables.py      reading the experiments' small CSVs, checked
   errors.py          bad input: InputError, exit 2 with a message naming the file or option
   fits.py            the log-log slope fit and the Pareto front
-  figures.py         matplotlib (Agg), series colours, file-name-safe names, saving PNG + SVG
+  figures.py         matplotlib (Agg), file-name-safe names, saving PNG + SVG
+  palette.py         the one palette: each sampler's colour, each filter's marker (every chart, the page)
+  degenerate.py      the rule that marks degenerate configurations (weight sums near zero) on the charts
   charts/            the study's charts, one module per chart family (the `charts` command)
   study_rows.py      the columns of issue 29 load_study adds (deterministic, cost, per-seed values), the targets
   stats/             tie groups (paired within a sample set), rankings across scenes, fronts with ties

@@ -12,7 +12,7 @@ import argparse
 
 import numpy as np
 
-from . import csv_tables, errors, figures, fits
+from . import csv_tables, errors, figures, fits, palette
 from .figures import plt
 
 COLUMNS = ["sampler", "integrand", "n", "rmse", "realisations"]
@@ -32,7 +32,7 @@ def chart(df, out_dir, fit_min, fit_max):
     for ax in axes.flat[len(integrands):]:
         ax.axis("off")
     for ax, integrand in zip(axes.flat, integrands):
-        for i, sampler in enumerate(samplers):
+        for sampler in samplers:
             g = df[(df["integrand"] == integrand) & (df["sampler"] == sampler)].sort_values("n")
             g = g[(g["rmse"] > 0) & np.isfinite(g["rmse"]) & (g["n"] > 0)]
             if g.empty:
@@ -43,13 +43,13 @@ def chart(df, out_dir, fit_min, fit_max):
                 label = f"{sampler} ({slope:+.2f})"
             except ValueError:
                 label = f"{sampler} (no fit)"
-            c = figures.colour(i)
+            c = palette.sampler_colour(sampler)
             ax.plot(g["n"][pow2], g["rmse"][pow2], "-o", ms=3, color=c, label=label, lw=1)
             ax.plot(g["n"][~pow2], g["rmse"][~pow2], "x", ms=5, color=c)
         ax.set_xscale("log", base=2)
         ax.set_yscale("log")
         ax.set_xlabel("N (points per estimate)")
-        ax.set_ylabel("RMSE of the estimate")
+        ax.set_ylabel("RMSE of the estimate (lower is better)")
         ax.set_title(integrand)
         ax.grid(True, which="major", alpha=0.3)
         ax.legend(fontsize=6, ncol=2, title="sampler (fitted slope)", title_fontsize=6)

@@ -1,6 +1,6 @@
-"""Matplotlib set up once (the Agg backend, no display needed), the series colours, file-name-safe names
+"""Matplotlib set up once (the Agg backend, no display needed), file-name-safe names
 and the saving of a figure as PNG and SVG. Import plt from here, never matplotlib.pyplot directly (the
-backend must be chosen before pyplot is imported).
+backend must be chosen before pyplot is imported). Series colours and markers: palette.py.
 """
 import os
 import re
@@ -10,28 +10,33 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# Distinct colours for up to 14 series (tab10, then four more).
-PALETTE = [plt.cm.tab10(i) for i in range(10)] + ["black", "gold", "navy", "lime"]
-
-
-def colour(i):
-    """The i-th series colour."""
-    return PALETTE[i % len(PALETTE)]
-
-
 def slug(text):
     """A file-name-safe version of a scene or method name."""
     base = os.path.splitext(os.path.basename(str(text)))[0]
     return re.sub(r"[^A-Za-z0-9_.-]+", "_", base) or "unnamed"
 
 
+def quantize_png(path):
+    """Rewrites a chart's PNG with a 256-colour palette (no dithering): about a third of the bytes, and a chart
+    has far fewer colours than that (the page loads these files). Left as is where Pillow (a dependency of
+    Debian's matplotlib) is missing. Never for renders: their pixels are data."""
+    try:
+        from PIL import Image
+    except ImportError:
+        return path
+    with Image.open(path) as im:
+        small = im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE)
+    small.save(path, "PNG", optimize=True)
+    return path
+
+
 def save_figure(fig, out_dir, name):
-    """Writes name.png and name.svg into out_dir; returns the two paths."""
+    """Writes name.png (palette-coded: quantize_png) and name.svg into out_dir; returns the two paths."""
     os.makedirs(out_dir, exist_ok=True)
     paths = []
     for ext in ("png", "svg"):
         path = os.path.join(out_dir, f"{name}.{ext}")
         fig.savefig(path, dpi=120, bbox_inches="tight")
-        paths.append(path)
+        paths.append(quantize_png(path) if ext == "png" else path)
     plt.close(fig)
     return paths

@@ -20,7 +20,7 @@ import subprocess
 
 import pandas as pd
 
-from . import csv_tables, errors, figures
+from . import csv_tables, errors, figures, palette
 from .figures import plt
 
 COLUMNS = ["filter", "radius", "describe", "kind", "x", "value"]
@@ -29,12 +29,14 @@ NUMERIC = ["radius", "x", "value"]
 
 def chart(df, out_dir):
     fig, (a, b) = plt.subplots(1, 2, figsize=(14, 5))
-    for i, (name, g) in enumerate(df.groupby("filter", sort=False)):
+    for name, g in df.groupby("filter", sort=False):
         label = g["describe"].iloc[0]
         p = g[g["kind"] == "profile"]
         r = g[g["kind"] == "response"]
-        a.plot(p["x"], p["value"], color=figures.colour(i), lw=1.2, label=label)
-        b.plot(r["x"], r["value"], color=figures.colour(i), lw=1.2, label=label)
+        style = dict(color=palette.filter_colour(name), lw=1.2, label=label, marker=palette.filter_marker(name),
+                     markevery=0.1, ms=4)
+        a.plot(p["x"], p["value"], **style)
+        b.plot(r["x"], r["value"], **style)
     a.axhline(0, color="k", lw=0.6)
     a.set_xlabel("offset x (pixels)")
     a.set_ylabel("1-D profile g(x)")

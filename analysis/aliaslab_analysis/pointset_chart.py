@@ -11,7 +11,7 @@ import os
 
 import pandas as pd
 
-from . import csv_tables, errors, figures
+from . import csv_tables, errors, figures, palette
 from .figures import plt
 
 
@@ -20,9 +20,9 @@ def spectra_chart(sp, out_dir):
     samplers = list(dict.fromkeys(sp["sampler"]))
     fig, axes = plt.subplots(1, len(counts), figsize=(5 * len(counts), 4.2), squeeze=False, sharey=True)
     for ax, n in zip(axes.flat, counts):
-        for i, s in enumerate(samplers):
+        for s in samplers:
             g = sp[(sp["n"] == n) & (sp["sampler"] == s)]
-            ax.plot(g["k_norm"], g["power"], lw=1, color=figures.colour(i), label=s)
+            ax.plot(g["k_norm"], g["power"], lw=1, color=palette.sampler_colour(s), label=s)
         ax.axhline(1.0, color="grey", lw=0.8, ls=":")
         ax.set_yscale("log")
         ax.set_ylim(1e-3, None)  # exact zeros of the regular grid would squash the rest
@@ -37,15 +37,15 @@ def spectra_chart(sp, out_dir):
 
 def discrepancy_chart(ps, out_dir):
     fig, (a, b) = plt.subplots(1, 2, figsize=(12, 4.5))
-    for i, (s, g) in enumerate(ps.groupby("sampler", sort=False)):
+    for s, g in ps.groupby("sampler", sort=False):
         g = g.sort_values("n")
         a.errorbar(g["n"], g["l2star_mean"], yerr=g["l2star_sd"], marker="o", ms=3, lw=1, capsize=2,
-                   color=figures.colour(i), label=s)
-        b.plot(g["n"], g["min_dist_norm_mean"], marker="o", ms=3, lw=1, color=figures.colour(i), label=s)
+                   color=palette.sampler_colour(s), label=s)
+        b.plot(g["n"], g["min_dist_norm_mean"], marker="o", ms=3, lw=1, color=palette.sampler_colour(s), label=s)
     a.set_xscale("log", base=2)
     a.set_yscale("log")
     a.set_xlabel("N")
-    a.set_ylabel("L2-star discrepancy (mean ± sd over sets)")
+    a.set_ylabel("L2-star discrepancy (mean ± sd over sets)\nlower is better")
     a.set_title("L2-star discrepancy (Warnock)")
     b.set_xscale("log", base=2)
     b.set_xlabel("N")

@@ -13,7 +13,7 @@ import numpy as np
 import pandas as pd
 from matplotlib import ticker
 
-from . import figures
+from . import figures, palette
 from .figures import plt
 
 CUTOFF = 0.125  # cycles per pixel: lib/measure/spectrum.h kLowFrequencyCutoff
@@ -105,7 +105,7 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
     for sampler in order:
         f, p = data[sampler]
         keep = p > 0
-        ax.plot(f[keep], p[keep], lw=1.6, ls="--" if is_correlated(sampler) else "-",
+        ax.plot(f[keep], p[keep], lw=1.6, ls="--" if is_correlated(sampler) else "-", color=palette.sampler_colour(sampler),
                 label=sampler + (" (correlated)" if is_correlated(sampler) else ""))
     ax.axvline(CUTOFF, color="0.3", lw=1, ls=":")
     ax.text(CUTOFF, 1.01, " quarter Nyquist", transform=ax.get_xaxis_transform(), fontsize=8, color="0.3",
@@ -119,7 +119,7 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
         ax.tick_params(axis="y", which="minor", labelsize=7)
     ax.set_xlim(0, max(float(np.max(f)) for f, _ in data.values()) * 1.02)
     ax.set_xlabel("frequency (cycles per pixel; Nyquist = 0.5 along an axis)")
-    ax.set_ylabel("error power (radial mean)")
+    ax.set_ylabel("error power (radial mean)\nlower is better")
     ax.set_title(title or f"{scene}: error spectrum at {int(spp)} spp ({filt} r={float(radius):g}, {recon})",
                  fontsize=10, loc="left", pad=14)
     ax.grid(True, which="major", alpha=0.3)
@@ -127,6 +127,7 @@ def chart(spec, scene, spp, path, samplers=None, title=None):
     fig.tight_layout()
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     fig.savefig(path, dpi=110)
+    figures.quantize_png(path)
     plt.close(fig)
     return path
 

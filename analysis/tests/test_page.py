@@ -62,6 +62,23 @@ class Page(unittest.TestCase):
         self.assertIn("compared paired", self.page)
         self.assertIn("seed 29", self.page)
 
+    def test_contents_gallery_and_lazy_images(self):
+        # issue 30 item 5: every entry of the table of contents points at an id of the page; every scene has a card
+        # in the gallery linking to it; the images are linked files, decoded lazily
+        toc = self.page[self.page.index("<nav class='toc'"):self.page.index("</nav>")]
+        targets = re.findall(r"href='#([^']+)'", toc)
+        ids = set(re.findall(r"\sid='([^']+)'", self.page))
+        self.assertTrue(targets)
+        self.assertLessEqual(set(targets), ids)
+        for scene in ("a", "b"):
+            self.assertIn(f"scene-{scene}", targets)
+        gallery = self.page[self.page.index("id='gallery'"):self.page.index("id='findings'")]
+        self.assertEqual(sorted(re.findall(r"href='#(scene-[^']+)'", gallery)), ["scene-a", "scene-b"])
+        self.assertNotIn("data:image", self.page)
+        imgs = re.findall(r"<img [^>]*>", self.page)
+        self.assertTrue(imgs)
+        self.assertTrue(all("loading='lazy'" in i for i in imgs if "src=" in i), imgs[:3])
+
 
 if __name__ == "__main__":
     unittest.main()

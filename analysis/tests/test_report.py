@@ -49,7 +49,7 @@ class Report(unittest.TestCase):
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.linked = f.read()
-        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts"])  # embedded, the default
+        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts", "--embed"])  # embedded
         assert code == 0, err
         with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
             cls.embedded = f.read()
@@ -64,7 +64,8 @@ class Report(unittest.TestCase):
         page = self.linked
         findings = page.index("id='findings'")
         self.assertIn("Answer for this study", page)
-        self.assertLess(findings, page.index("<img"))
+        self.assertLess(findings, page.index("<figure"))  # only the scene gallery's thumbnails come before
+        self.assertLess(page.index("id='gallery'"), findings)
         self.assertLess(findings, page.index("id='scenes'"))
         self.assertLess(page.index("id='scenes'"), page.index("id='stability'"))
         # The one chart of the findings sits before the first scene.
@@ -118,7 +119,8 @@ class Report(unittest.TestCase):
 
     def test_embedded_charts_keep_their_size_and_renders_their_pixels(self):
         # Every embedded image decodes to a PNG of its file's size; a chart (from charts/) is palette-coded
-        # and smaller than its file, any other image (a render) is embedded byte for byte.
+        # (written so by figures.save_figure) and no larger than its file, any other image (a render) is
+        # embedded byte for byte.
         import base64
         from PIL import Image
         charts_dir = os.path.join(self.results, "charts")
@@ -128,7 +130,8 @@ class Report(unittest.TestCase):
         with Image.open(io.BytesIO(data)) as small, Image.open(path) as full:
             self.assertEqual(small.size, full.size)
             self.assertEqual(small.mode, "P")
-        self.assertLess(len(data), os.path.getsize(path))
+            self.assertEqual(full.mode, "P")
+        self.assertLessEqual(len(data), os.path.getsize(path))
         render = os.path.join(self.tmp.name, "render.png")
         Image.new("RGB", (5, 3), (10, 200, 30)).save(render)
         src = report_elements.image_src(self.tmp.name, render, True)

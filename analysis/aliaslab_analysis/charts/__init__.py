@@ -23,17 +23,19 @@ Writes into DIR, each as .png and .svg:
                           cross term as its own (signed) bar, the total with
                           +-2 se; negative terms drawn left of 0
   radius_<scene>          the radius trade-off: error, noise and blur against
-                          radius, one panel per filter, one colour per spp
+                          radius, one panel per filter (one shared y range),
+                          one colour per spp; degenerate points at the top
   convergence_<scene>     error, noise and aliasing against spp per sampler;
                           slopes only when >= 3 spp levels
-  heatmap_<scene>         log10 error over filter x radius, one row of panels
-                          per spp level, one column per sampler
+  heatmap_<scene>         log10 error over sampler x filter x radius, one panel
+                          per spp level; degenerate cells (degenerate.py)
+                          hatched and out of the colour scale
   stability               undefined / negative / NaN pixel counts per method,
                           and flagged rows per method (empty panels say so)
 and the tables pareto.csv (the front of every scene), flagged.csv and
 decomposition.csv. A CSV repeating a configuration is refused (exit 2).
 
-One module per chart family (axes.py: what they share); draw_all draws them all, cli.py is the command.
+Colours and markers: palette.py. One module per chart family (axes.py: what they share); draw_all draws them all, cli.py is the command.
 """
 from .. import errors
 from .convergence import convergence

@@ -6,10 +6,9 @@ import matplotlib.patheffects
 import matplotlib.ticker
 import numpy as np
 
-MARKERS = ["o", "s", "^", "D", "v", "P", "X", "*", "<", ">", "h", "p"]
 METHOD = ["sampler", "filter_name", "radius", "filter_params", "reconstruction", "prefilter"]
-ERROR_LABEL = {True: "error against the target (mse_target, per pixel and channel)",
-               False: "error against the pixel-area reference (mse_area, per pixel and channel)"}
+ERROR_LABEL = {True: "error against the target (mse_target, per pixel and channel; lower is better)",
+               False: "error against the pixel-area reference (mse_area, per pixel and channel; lower is better)"}
 COMPONENT_COLOURS = {"noise": "#4c72b0", "aliasing": "#dd8452", "blur": "#55a868", "cross": "#8c8c8c",
                      "blur_cross": "#55a868"}
 BEST_SHOWN = 10
@@ -63,7 +62,7 @@ def label_log_axis(ax):
         ax.tick_params(axis="y", which="minor", labelsize=7)
 
 
-def number_points(ax, xs, ys, fontsize=8):
+def number_points(ax, xs, ys, fontsize=8, start=1):
     """Numbers the points (xs[k], ys[k]) 1, 2, ... on the axes without two numbers overlapping: each label
     takes the first free spot of a ring of offsets around its point (nearest first), further rings once the
     near ones are taken, with a thin leader line when it sits away from its point. Call it after the axes'
@@ -75,7 +74,7 @@ def number_points(ax, xs, ys, fontsize=8):
     w, h = 0.62 * fontsize, 1.0 * fontsize  # one digit's box, in points
     rings = [(dx * r, dy * r) for r in (1, 2, 3, 4, 5) for dx, dy in
              ((1, 1), (1, -1), (-1, 1), (-1, -1), (0, 1.4), (0, -1.4), (1.4, 0), (-1.4, 0))]
-    for k, (x, y) in enumerate(zip(xs, ys), 1):
+    for k, (x, y) in enumerate(zip(xs, ys), start):
         px, py = (v * to_points for v in ax.transData.transform((x, y)))
         text = str(k)
         tw = w * len(text)

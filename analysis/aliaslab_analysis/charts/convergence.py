@@ -3,9 +3,9 @@ per scene; slopes only over at least three spp levels (fits.MIN_SLOPE_LEVELS).""
 import numpy as np
 import pandas as pd
 
-from .. import figures, fits
+from .. import figures, fits, palette
 from ..figures import plt
-from .axes import MARKERS, best_row, empty_panel, has_target, label_log_axis, method_label, usable, yerr_log
+from .axes import best_row, empty_panel, has_target, label_log_axis, method_label, usable, yerr_log
 
 
 def convergence(df, out_dir, filter_name):
@@ -26,7 +26,7 @@ def convergence(df, out_dir, filter_name):
         for ax, (metric, se_col, name) in zip(axes, panels):
             title = name
             drawn = 0
-            for i, (sampler, g) in enumerate(fd.groupby("sampler", sort=True)):
+            for sampler, g in fd.groupby("sampler", sort=True):
                 g = g.sort_values("spp")
                 pos = usable(g, metric)
                 slope = fits.slope_or_none(g["spp"], g[metric])
@@ -35,12 +35,12 @@ def convergence(df, out_dir, filter_name):
                     continue
                 drawn += 1
                 se = pos[se_col] if se_col in pos.columns else pd.Series(np.nan, index=pos.index)
-                ax.errorbar(pos["spp"], pos[metric], yerr=yerr_log(pos[metric], se), marker=MARKERS[i % len(MARKERS)],
-                            color=figures.colour(i), label=label, capsize=2, ms=5, lw=1.2)
+                ax.errorbar(pos["spp"], pos[metric], yerr=yerr_log(pos[metric], se), marker="o",
+                            color=palette.sampler_colour(sampler), label=label, capsize=2, ms=5, lw=1.2)
                 fl = pos[pos["flagged"] == 1]
                 if metric == "error" and len(fl):  # flagged rows stay, drawn hollow
-                    ax.scatter(fl["spp"], fl[metric], s=40, marker=MARKERS[i % len(MARKERS)], facecolors="white",
-                               edgecolors=figures.colour(i), zorder=3)
+                    ax.scatter(fl["spp"], fl[metric], s=40, marker="o", facecolors="white",
+                               edgecolors=palette.sampler_colour(sampler), zorder=3)
                     title = name + "\n(hollow: flagged, kept)"
             if metric == "aliasing" and "aliasing_se" in fd.columns:
                 zero = fd[fd["aliasing_zero"].astype(bool)]
@@ -54,7 +54,7 @@ def convergence(df, out_dir, filter_name):
             ax.set_xscale("log", base=2)
             ax.set_yscale("log")
             ax.set_xlabel("samples per pixel")
-            ax.set_ylabel(f"{name}\n(per pixel and channel)", fontsize=9)
+            ax.set_ylabel(f"{name}\n(per pixel and channel; lower is better)", fontsize=9)
             ax.grid(True, which="major", alpha=0.3)
             label_log_axis(ax)
             ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, frameon=False)

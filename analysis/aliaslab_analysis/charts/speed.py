@@ -8,10 +8,10 @@ import os
 import numpy as np
 import pandas as pd
 
-from .. import figures
+from .. import figures, palette
 from ..figures import plt
 from ..stats import fronts as tie_fronts
-from .axes import (ERROR_LABEL, MARKERS, METHOD, clip_outliers, empty_panel, has_target, method_label,
+from .axes import (ERROR_LABEL, METHOD, clip_outliers, empty_panel, has_target, method_label,
                    number_points, plain_log_x, usable, yerr_log)
 
 
@@ -19,8 +19,8 @@ def speed_accuracy(df, out_dir):
     """Error against the target vs time per scene; returns the Pareto rows of every scene."""
     samplers = sorted(df["sampler"].unique())
     filters = sorted(df["filter_name"].unique())
-    colours = {s: figures.colour(i) for i, s in enumerate(samplers)}
-    markers = {f: MARKERS[i % len(MARKERS)] for i, f in enumerate(filters)}
+    colours = {s: palette.sampler_colour(s) for s in samplers}
+    markers = {f: palette.filter_marker(f) for f in filters}
     show_recon = df["reconstruction"].nunique() > 1
     prefiltered = (df["prefilter"] != "none").any()
     fronts = []
@@ -95,8 +95,10 @@ def speed_accuracy(df, out_dir):
         ax.add_artist(leg)
         if lines:
             shown = lines[:25] + ([f"... {len(lines) - 25} more in pareto.csv"] if len(lines) > 25 else [])
-            ax.text(1.01, 0.0, "Front with ties:\n" + "\n".join(shown),
-                    transform=ax.transAxes, fontsize=7, va="bottom", ha="left", family="monospace")
+            per = 9  # below the chart, in columns: beside it the legend would cover them
+            for c in range(0, len(shown), per):
+                ax.text(0.5 * (c // per), -0.11, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+                        transform=ax.transAxes, fontsize=7, va="top", ha="left", family="monospace")
         figures.save_figure(fig, out_dir, f"speed_accuracy_{figures.slug(scene)}")
     cols = ["scene"] + METHOD + ["spp", "time_ms", "cost", "cost_se", "error", "error_se", "flagged"]
     table = pd.concat(fronts)[cols] if fronts else pd.DataFrame(columns=cols)

@@ -2,7 +2,7 @@
 
 Usage:
   /usr/bin/python3 -m analysis report RESULTS_DIR [--study CSV] [--charts DIR] [--images DIR]
-                                       [--label TEXT] [--link] [--reuse-charts]
+                                       [--label TEXT] [--embed] [--reuse-charts]
   /usr/bin/python3 -m analysis report RESULTS_DIR --tables [--study CSV]
   /usr/bin/python3 -m analysis report RESULTS_DIR --findings-md [--study CSV]
 
@@ -13,11 +13,14 @@ Defaults: --study RESULTS_DIR/study/study.csv (else RESULTS_DIR/study.csv),
 Only the one study CSV is read: shard CSVs lying beside it are ignored, and a
 CSV that repeats a configuration is refused (exit 2).
 
-The page, in order:
+The page, in order (page.SECTIONS: a section is one line there), beside a sticky table of contents built
+from its anchors (navigation.py; every scene and every chart has one), click-to-enlarge on every chart:
   0. what study it shows (size, spp, seeds, references, targets; "a quick
      study" when below 256 px or references below 64x its highest spp) and
      links to the other studies in RESULTS_DIR (each folder with an
-     index.html and a study CSV; report/studies.py);
+     study CSV: its page, else its CSV; report/studies.py), then the scene
+     gallery (a card per scene: the study's reference image or
+     thumbnails/<scene>.png beside the CSV, and its best method);
   1. the question and this study's answer, generated from the CSV by the
      findings package (the top groups per spp under each target, what holds
      under all targets, the front with ties, equal time, where the error
@@ -33,12 +36,13 @@ The page, in order:
      filter profiles) when RESULTS_DIR has them;
   5. a link to engineering.html (benchmarks, fuzzing).
 The charts are (re)drawn from the study into --charts first (the charts
-package), unless --reuse-charts. The page is self-contained (images
-embedded as data URIs) unless --link, which refers to the files by relative
-path. It names the study it reports: "the quick study PATH" when the CSV is
+package), unless --reuse-charts. The page refers to its images by relative
+path, decoded lazily (--link, the default); --embed embeds them as data URIs
+(one self-contained file). docs/*.md are rendered into RESULTS/docs/*.html
+(docs_html.py, Debian's python3-markdown), which the page links. It names the study it reports: "the quick study PATH" when the CSV is
 below 256 px or its references below 64x its highest spp, else "the study
 PATH" (or --label).
-Definitions: docs/science.md, linked from the page.
+Definitions: docs/science.md, linked from the page as docs/science.html.
 
 --tables prints Markdown for results/README.md instead (the Pareto front of
 every scene by the error against the target, and the stability counts);
@@ -49,7 +53,8 @@ primary target (box:0.5 when present, else the CSV's first).
 Modules: findings.py (the generated findings as HTML, the tie rules in words), targets_table.py (the
 answer under each target), studies.py (the other studies linked), summary_chart.py (the findings' chart),
 scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
-markdown.py (the records' Markdown), tables.py (--tables), cli.py (the command).
+markdown.py (--tables' Markdown, the fallback reader), docs_html.py (Markdown to HTML: docs/, engineering.html),
+navigation.py (contents, gallery, lightbox), tables.py (--tables), cli.py (the command).
 """
 
 

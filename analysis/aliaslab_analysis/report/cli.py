@@ -33,8 +33,9 @@ def main(argv=None, prog=None):
     ap.add_argument("--images", help="folder of the sweep's images (default: the study CSV's folder/images)")
     ap.add_argument("--label", help="how the page names the study (default: 'the quick study PATH' or "
                     "'the study PATH', read from the CSV)")
-    ap.add_argument("--link", action="store_true", help="refer to images by relative path instead of embedding")
-    ap.add_argument("--embed", action="store_true", help="embed images (the default; kept for old scripts)")
+    ap.add_argument("--link", action="store_true", help="refer to images by relative path, decoded lazily (the "
+                    "default; kept for old scripts)")
+    ap.add_argument("--embed", action="store_true", help="embed images as data URIs: one file to share, larger")
     ap.add_argument("--reuse-charts", action="store_true", help="do not redraw the charts already in --charts")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
     ap.add_argument("--findings-md", action="store_true",
@@ -60,7 +61,7 @@ def main(argv=None, prog=None):
             return 0
         if study is None:
             errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
-        path = build_report(args.results, study, args.charts, args.images, args.label, embed=not args.link,
+        path = build_report(args.results, study, args.charts, args.images, args.label, embed=args.embed,
                             draw=not args.reuse_charts)
     except errors.InputError as e:
         errors.fail(str(e))

@@ -1,11 +1,13 @@
-"""The HTML building blocks of the report's pages: the style sheet, figures (images embedded as data URIs,
-charts palette-reduced, or linked by relative path) and the writing of a whole page."""
+"""The HTML building blocks of the report's pages: the style sheet, figures (images linked by relative path and
+loaded lazily, or embedded as data URIs with charts palette-reduced), each with an anchor, and the writing of
+a whole page (with the table of contents and the click-to-enlarge script of navigation.py)."""
 import base64
 import html
 import io
 import os
 
-from .. import errors
+from .. import errors, palette
+from . import navigation
 
 CSS = """body{font-family:sans-serif;margin:0 auto;max-width:1250px;padding:1em 1.5em;background:#fafafa;
 color:#222;line-height:1.45}h1{font-size:1.55em;margin-bottom:.2em}h2{border-bottom:1px solid #ccc;margin-top:2em}
@@ -18,7 +20,9 @@ td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}
 .pix img{width:192px;image-rendering:pixelated}.sheet img{max-height:860px;width:auto}.pix figure{margin-right:8px}
 .pair{display:flex;flex-wrap:wrap;gap:8px;align-items:flex-start}.pair figure{margin:0}
 .pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
-details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}"""
+details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}
+figure img{cursor:zoom-in}figcaption a.anchor{color:#999;text-decoration:none;margin-left:.3em}
+.docs li{margin:.15em 0}.docs td,.docs th{text-align:left}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
 
 
 def chart_png_bytes(path):
@@ -32,6 +36,9 @@ def chart_png_bytes(path):
             return f.read()
     out = io.BytesIO()
     with Image.open(path) as im:
+        if im.mode == "P":  # already palette-coded (figures.save_figure does it since issue 30)
+            with open(path, "rb") as f:
+                return f.read()
         im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)
     return out.getvalue()
 
@@ -47,18 +54,33 @@ def image_src(page_dir, path, embed):
     return html.escape(os.path.relpath(path, page_dir).replace(os.sep, "/"))
 
 
-def figure(page_dir, path, caption, embed, cls=""):
-    """<figure> of an existing PNG (or '' when the file is missing)."""
+def plain(caption):
+    """A caption's text without its tags, for alt text."""
+    import re
+    return html.unescape(re.sub(r"<[^>]+>", "", caption))
+
+
+def figure(page_dir, path, caption, embed, cls="", anchor=None, toc=None):
+    """<figure> of an existing PNG (or '' when the file is missing), decoded lazily; with an anchor id (and a
+    link to itself in the caption) when given; toc: its entry in the table of contents (navigation.py)."""
     if not os.path.isfile(path):
         return ""
-    return (f"<figure class='{cls}'><img src='{image_src(page_dir, path, embed)}' alt='{html.escape(caption)}'>"
-            f"<figcaption>{caption}</figcaption></figure>")
+    ident = f" id='{html.escape(anchor)}'" if anchor else ""
+    entry = f" data-toc='{html.escape(toc)}'" if toc and anchor else ""
+    link = f"<a class='anchor' href='#{html.escape(anchor)}' title='link to this chart'>#</a>" if anchor else ""
+    return (f"<figure class='{cls}'{ident}{entry}><img src='{image_src(page_dir, path, embed)}' loading='lazy' "
+            f"decoding='async' alt='{html.escape(plain(caption))}'><figcaption>{caption}{link}</figcaption></figure>")
 
 
-def write_page(path, title, body):
+def write_page(path, title, body, toc=False):
+    """Writes the page atomically; toc: a sticky table of contents beside the body, built from its headings
+    and anchored figures (navigation.py). Every page gets the click-to-enlarge script."""
+    if toc:
+        body = navigation.with_toc(body)
     page = ("<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'>"
             f"<meta name='viewport' content='width=device-width'><title>{html.escape(title)}</title>"
-            f"<style>{CSS}</style></head><body>{body}</body></html>\n")
+            f"<style>{CSS}{navigation.CSS}{palette.css_variables()}</style></head><body>{body}"
+            f"{navigation.lightbox()}</body></html>\n")
     tmp = path + ".partial"
     try:
         with open(tmp, "w", encoding="utf-8") as f:

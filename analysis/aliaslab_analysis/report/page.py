@@ -1,19 +1,23 @@
-"""The assembly of the report: index.html (findings first, then the scenes, stability and the samplers
-and filters in isolation) and engineering.html (the benchmark and fuzzing records)."""
+"""The assembly of the report: index.html from the list SECTIONS (the header and the other studies, the scene
+gallery, the findings, the answer per target, the summary chart, the scenes, stability, the samplers and
+filters in isolation, engineering), with a sticky table of contents; engineering.html (the benchmark and
+fuzzing records); docs/*.html (the definitions rendered from the repository's docs/*.md)."""
 import html
 import os
 import re
+from dataclasses import dataclass
 
 import numpy as np
 
 from .. import charts, errors, figures, spectra, study_csv
+from ..charts import axes as charts_axes
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
-from . import studies
-from .elements import figure, write_page
-from .findings import findings, tie_rules
-from .markdown import markdown_blocks, markdown_tables
-from .scene import scene_section
+from . import docs_html, navigation, studies
+from .elements import figure, image_src, write_page
+from .findings import findings, method_name, tie_rules
+from .markdown import markdown_tables
+from .scene import scene_notes, scene_section
 from .summary_chart import summary_chart
 from .targets_table import targets_section
 
@@ -48,18 +52,25 @@ def engineering_page(results, science_href):
             f"in the results folder (definitions: <a href='{science_href}'>docs/science.md</a>).</p>"]
     for f in files:
         with open(os.path.join(results, f), encoding="utf-8", errors="replace") as fh:
-            body.append(f"<h2>{html.escape(f)}</h2>" + "\n".join(b for _, b in markdown_blocks(fh.read())))
-    return write_page(os.path.join(results, "engineering.html"), "aliaslab engineering records", "\n".join(body))
+            anchor = figures.slug(f).replace(".", "-")
+            body.append(f"<h2 id='{anchor}'>{html.escape(f)}</h2><div class='docs'>"
+                        + docs_html.md_links_to_html(docs_html.to_html(fh.read())) + "</div>")
+    return write_page(os.path.join(results, "engineering.html"), "aliaslab engineering records", "\n".join(body),
+                      toc=True)
 
 
 def isolation_section(results, embed):
     """Samplers and filters on their own (convergence on integrands, point sets, filter profiles)."""
     parts = []
-    for rel, caption in (("convergence/convergence.png", "RMSE against N on analytic integrands, fitted slopes."),
-                         ("pointsets/discrepancy.png", "Point sets: discrepancy and minimum distance."),
-                         ("pointsets/spectra.png", "Point sets: radial power spectra."),
-                         ("filters/filter_profiles.png", "Filter profiles and frequency responses.")):
-        parts.append(figure(results, os.path.join(results, rel), caption, embed))
+    for rel, caption, toc in (("convergence/convergence.png", "RMSE against N on analytic integrands, fitted slopes.",
+                               "convergence on integrands"),
+                              ("pointsets/discrepancy.png", "Point sets: discrepancy and minimum distance.",
+                               "discrepancy"),
+                              ("pointsets/spectra.png", "Point sets: radial power spectra.", "point-set spectra"),
+                              ("filters/filter_profiles.png", "Filter profiles and frequency responses.",
+                               "filter profiles")):
+        parts.append(figure(results, os.path.join(results, rel), caption, embed,
+                            anchor="iso-" + figures.slug(rel).replace(".", "-"), toc=toc))
     slopes = os.path.join(results, "convergence", "slopes.md")
     if os.path.isfile(slopes):
         with open(slopes, encoding="utf-8") as f:
@@ -70,10 +81,133 @@ def isolation_section(results, embed):
     return ("<h2 id='isolation'>Samplers and filters in isolation</h2>" + "\n".join(parts)) if parts else ""
 
 
-def build_report(results, study, charts_dir=None, images=None, label=None, embed=True, draw=True):
-    """Writes RESULTS/index.html (and engineering.html); returns the index path. Raises errors.InputError."""
+@dataclass
+class Context:
+    """What the page's sections share, built once by build_report."""
+    results: str
+    study: str
+    df: object
+    notes: list
+    s: Study
+    primary: object
+    charts_dir: str
+    images: str
+    embed: bool
+    science: str
+    name: str
+    spec: object = None
+
+
+def header_section(c):
+    df, s = c.df, c.s
+    target = ", ".join(study_csv.describe_target(t) for t in s.targets)
+    csv_href = html.escape(os.path.relpath(os.path.abspath(c.study), c.results).replace(os.sep, "/"))
+    facts = (f"{len(s.scenes)} scene(s); samplers {', '.join(sorted(df['sampler'].unique()))}; filters "
+             f"{', '.join(sorted(df['filter_name'].unique()))}; radii "
+             f"{', '.join(f'{r:g}' for r in sorted(df['radius'].unique()))}; spp {', '.join(map(str, s.levels))}; "
+             f"seeds {', '.join(str(int(k)) for k in sorted(df['seeds'].unique()))}; target(s) {target}. "
+             f"Read from <a href='{csv_href}'><code>{html.escape(shown_path(c.study))}</code></a>. "
+             f"Definitions: <a href='{c.science}'>docs/science.md</a>. Click a chart to see it at full size.")
+    return (f"<h1>aliaslab report: {html.escape(c.name)}</h1><p class='facts'>{facts}</p>"
+            + studies.links_html(studies.other_studies(c.results, c.study, REPO)))
+
+
+def gallery_section(c):
+    """A card per scene: its image (the study's pixel-area reference or thumbnail) and its best method."""
+    folder = os.path.dirname(os.path.abspath(c.study))
+    cards = []
+    for scene in c.s.scenes:
+        slug = figures.slug(scene)
+        src, small = None, False
+        for p in (os.path.join(c.images, slug, "reference-area.png"), os.path.join(folder, "thumbnails", slug + ".png")):
+            if os.path.isfile(p):
+                src = image_src(c.results, p, c.embed)
+                small = int(c.primary.loc[c.primary["scene"] == scene, ["width", "height"]].to_numpy().max()) < 160
+                break
+        sd = c.primary[c.primary["scene"] == scene]
+        best = charts_axes.best_row(sd[~sd["deterministic"].astype(bool)])  # the fixed grid is not ranked
+        text = (f"best at {int(best['spp'])} spp: {html.escape(method_name(best))}, error {best['error']:.2g}"
+                if best is not None else "no unflagged row")
+        cards.append((f"scene-{slug}", str(scene), src, text, small))
+    return "<h2 id='gallery'>The scenes</h2>" + navigation.gallery(cards)
+
+
+def findings_section(c):
+    body = ["<h2 id='findings'>Findings</h2>",
+            "<p><b>Question.</b> Which sampler, filter and radius give the lowest error against the target "
+            "for the time they take? The error of a configuration is its mean squared difference from the target "
+            "over seeds, pixels and channels (the references' own error subtracted where the CSV says so); it "
+            "splits into noise (changes with the seed), aliasing (structured error that stays), blur (the "
+            f"filter's own reference against the target) and a cross term. Definitions: <a href='{c.science}'>"
+            "docs/science.md</a>.</p>",
+            "<div class='answer'><b>Answer for this study</b> (every number below is computed from the CSV)."
+            + "".join(findings(c.df, c.notes, study=c.s)) + "</div>", tie_rules()]
+    if c.notes:
+        body.append("<div class='note'><b>About this CSV.</b> " + " ".join(html.escape(n) for n in c.notes) + "</div>")
+    return "\n".join(body)
+
+
+def summary_section(c):
+    summary_png, _, _ = summary_chart(c.s, c.charts_dir)
+    return figure(c.results, summary_png, f"Every method at every spp level against <code>{html.escape(c.s.primary)}"
+                  "</code>: the median over scenes of its error relative to each scene's best at that spp, "
+                  "with its bootstrap interval, against its time; one panel per spp level; the front with ties is "
+                  "numbered and listed. Hollow: flagged or undetermined in at least one scene (kept, counted as is).",
+                  c.embed, anchor="summary-chart", toc="every method: error vs time")
+
+
+def scenes_section(c):
+    s = c.s
+    body = ["<h2 id='scenes'>Per scene</h2>"]
+    if len(s.targets) > 1:
+        body.append(f"<p class='note'>Per scene, against the primary target <code>{html.escape(s.primary)}</code>; "
+                    "the answer under the other targets is in the table above.</p>")
+    body.append(scene_notes(c.images, c.spec))
+    ranked = s.ranked[s.ranked["target"].astype(str) == s.primary]
+    for scene in s.scenes:
+        body.append(scene_section(c.results, scene, c.primary[c.primary["scene"] == scene], c.charts_dir, c.images,
+                                  c.embed, c.spec, ranked[ranked["scene"] == scene]))
+    return "\n".join(body)
+
+
+def stability_section(c):
+    counts = {k: int(np.nansum(c.primary[k].to_numpy(dtype=float))) for k in
+              ("undefined_pixels", "negative_pixels", "nan_pixels")}
+    return ("<h2 id='stability'>Stability</h2>"
+            f"<p>Over all configurations: {counts['undefined_pixels']} undefined, {counts['negative_pixels']} "
+            f"negative and {counts['nan_pixels']} NaN/Inf pixels; {int((c.df['flagged'] == 1).sum())} of {len(c.df)} "
+            "row(s) flagged (listed in charts/flagged.csv; drawn hollow, kept in every ranking).</p>"
+            + figure(c.results, os.path.join(c.charts_dir, "stability.png"), "Pixel failure counts per method and "
+                     "sampler, summed over scenes and spp; empty panels: no such pixel.", c.embed,
+                     anchor="stability-chart", toc="pixel failures"))
+
+
+def engineering_section(c):
+    if not engineering_page(c.results, c.science):
+        return ""
+    return ("<h2 id='engineering'>Engineering</h2><p>Benchmarks and fuzzing records are on their own page: "
+            "<a href='engineering.html'>engineering.html</a>.</p>")
+
+
+# The page, in order: each entry a function of the Context returning HTML ('' to leave it out). A new section
+# (an <h2 id=...> heading and its content) is one line here; the table of contents follows its anchors.
+SECTIONS = [
+    header_section,
+    gallery_section,
+    findings_section,
+    lambda c: targets_section(c.s, c.science),
+    summary_section,
+    scenes_section,
+    stability_section,
+    lambda c: isolation_section(c.results, c.embed),
+    engineering_section,
+]
+
+
+def build_report(results, study, charts_dir=None, images=None, label=None, embed=False, draw=True):
+    """Writes RESULTS/index.html (and engineering.html, and docs/*.html: the definitions rendered); returns the
+    index path. Raises errors.InputError."""
     df, notes = study_csv.load_study(study)
-    spec = spectra.load(study)
     charts_dir = charts_dir or os.path.join(results, "charts")
     images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
     s = Study(df, notes)
@@ -81,59 +215,9 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     if draw:
         charts.draw_all(primary, charts_dir)
     errors.prepare_out(charts_dir, "--charts")
-    summary_png, _, _ = summary_chart(s, charts_dir)
-    name = study_label(study, label, is_quick(facts_of(df)))
-    target = ", ".join(study_csv.describe_target(t) for t in s.targets)
-    science = html.escape(os.path.relpath(SCIENCE, results).replace(os.sep, "/"))
-    scenes = s.scenes
-    levels = s.levels
-    facts = (f"{len(scenes)} scene(s); samplers {', '.join(sorted(df['sampler'].unique()))}; filters "
-             f"{', '.join(sorted(df['filter_name'].unique()))}; radii "
-             f"{', '.join(f'{r:g}' for r in sorted(df['radius'].unique()))}; spp {', '.join(map(str, levels))}; "
-             f"seeds {', '.join(str(int(k)) for k in sorted(df['seeds'].unique()))}; target(s) {target}. "
-             f"Read from <code>{html.escape(shown_path(study))}</code>.")
-    body = [f"<h1>aliaslab report: {html.escape(name)}</h1>", f"<p class='facts'>{facts}</p>",
-            studies.links_html(studies.other_studies(results, study, REPO)),
-            "<nav><a href='#findings'>Findings</a><a href='#targets'>Targets</a><a href='#scenes'>Scenes</a>"
-            "<a href='#stability'>Stability</a>"
-            + ("<a href='#isolation'>Samplers and filters</a>" if os.path.isdir(os.path.join(results, "pointsets"))
-               else "") + f"<a href='{science}'>Definitions (docs/science.md)</a></nav>",
-            "<h2 id='findings'>Findings</h2>",
-            "<p><b>Question.</b> Which sampler, filter and radius give the lowest error against the target "
-            "for the time they take? The error of a configuration is its mean squared difference from the target "
-            "over seeds, pixels and channels (the references' own error subtracted where the CSV says so); it "
-            "splits into noise (changes with the seed), aliasing (structured error that stays), blur (the "
-            f"filter's own reference against the target) and a cross term. Definitions: <a href='{science}'>"
-            "docs/science.md</a>.</p>",
-            "<div class='answer'><b>Answer for this study</b> (every number below is computed from the CSV)."
-            + "".join(findings(df, notes, study=s)) + "</div>", tie_rules()]
-    if notes:
-        body.append("<div class='note'><b>About this CSV.</b> " + " ".join(html.escape(n) for n in notes) + "</div>")
-    body.append(targets_section(s, science))
-    body.append(figure(results, summary_png, f"Every method at every spp level against <code>{html.escape(s.primary)}"
-                       "</code>: the median over scenes of its error relative to each scene's best at that spp, "
-                       "with its bootstrap interval, against its time; the front with ties is numbered and listed. "
-                       "Hollow: flagged or undetermined in at least one scene (kept, counted as is).", embed))
-    body.append("<h2 id='scenes'>Per scene</h2><p>" + " ".join(
-        f"<a href='#scene-{html.escape(figures.slug(x))}'>{html.escape(x)}</a>" for x in scenes) + "</p>")
-    if len(s.targets) > 1:
-        body.append(f"<p class='note'>Per scene, against the primary target <code>{html.escape(s.primary)}</code>; "
-                    "the answer under the other targets is in the table above.</p>")
-    ranked = s.ranked[s.ranked["target"].astype(str) == s.primary]
-    for scene in scenes:
-        body.append(scene_section(results, scene, primary[primary["scene"] == scene], charts_dir, images, embed,
-                                  spec, ranked[ranked["scene"] == scene]))
-    body.append("<h2 id='stability'>Stability</h2>")
-    counts = {c: int(np.nansum(primary[c].to_numpy(dtype=float))) for c in
-              ("undefined_pixels", "negative_pixels", "nan_pixels")}
-    body.append(f"<p>Over all configurations: {counts['undefined_pixels']} undefined, {counts['negative_pixels']} "
-                f"negative and {counts['nan_pixels']} NaN/Inf pixels; {int((df['flagged'] == 1).sum())} of {len(df)} "
-                "row(s) flagged (listed in charts/flagged.csv; drawn hollow, kept in every ranking).</p>")
-    body.append(figure(results, os.path.join(charts_dir, "stability.png"), "Pixel failure counts per method and "
-                       "sampler, summed over scenes and spp; empty panels: no such pixel.", embed))
-    body.append(isolation_section(results, embed))
-    eng = engineering_page(results, science)
-    if eng:
-        body.append("<h2>Engineering</h2><p>Benchmarks and fuzzing records are on their own page: "
-                    "<a href='engineering.html'>engineering.html</a>.</p>")
-    return write_page(os.path.join(results, "index.html"), f"aliaslab report: {name}", "\n".join(body))
+    docs_html.render_docs(os.path.dirname(SCIENCE), os.path.join(results, "docs"), write_page, "../index.html")
+    c = Context(results, study, df, notes, s, primary, charts_dir, images, embed,
+                html.escape(os.path.join("docs", "science.html")), study_label(study, label, is_quick(facts_of(df))))
+    c.spec = spectra.load(study)
+    body = [part for part in (section(c) for section in SECTIONS) if part]
+    return write_page(os.path.join(results, "index.html"), f"aliaslab report: {c.name}", "\n".join(body), toc=True)

@@ -89,7 +89,9 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
     spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
     spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
     head = "<h4>Where the error sits on screen</h4>"
-    if spec is None or not (spec["scene"] == str(scene)).any():
+    if spec is None:
+        return ""  # said once above the scenes (scene_notes)
+    if not (spec["scene"] == str(scene)).any():
         return (head + "<p class='note'>No error spectra for this scene (the study CSV has no "
                 "<code>spectra/</code> files beside it: written by sweeps since issue 22).</p>")
     spec = spec[spec["scene"] == str(scene)]
@@ -152,26 +154,45 @@ def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
             parts.append("<table>" + "".join(cells) + "</table>")
         if pics:
             parts.append("<div class='pair'>" + "".join(pics) + "</div>")
-        else:
+        elif os.path.isdir(images):
             parts.append("<p class='note'>No images for these rows (run the sweep with <code>--images</code>).</p>")
     return "\n".join(p for p in parts if p)
+
+
+def scene_notes(images, spec):
+    """What holds for every scene, said once above them instead of in each."""
+    notes = []
+    if not os.path.isdir(images):
+        notes.append("This study kept no per-configuration images (a large sweep writes none unless given "
+                     "<code>--images</code>): each scene shows its tables and charts, no renders.")
+    if spec is None:
+        notes.append("No error spectra: the study CSV has no <code>spectra/</code> files beside it (written by "
+                     "sweeps since issue 22; not committed for the studies in results/), so where the error sits "
+                     "on screen is told by the <code>lowfreq_error</code> and <code>blurred_mse</code> columns of "
+                     "the tables alone.")
+    return "".join(f"<p class='note'>{n}</p>" for n in notes)
 
 
 def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None):
     s = figures.slug(scene)
     parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd, ranked)]
-    chart = lambda kind, caption: figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed)
+
+    def chart(kind, caption, toc=None):
+        return figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed,
+                      anchor=f"{kind}-{s}", toc=toc or kind.replace("_", " "))
     parts.append(chart("decomposition", "Where the error comes from: noise, aliasing and blur stacked, the cross "
-                       "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors."))
+                       "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors.",
+                       "decomposition"))
     parts.append(chart("radius", "The radius trade-off per filter: a wider filter lowers noise (dashed) and "
-                       "adds blur (dotted)."))
+                       "adds blur (dotted); one y range for all panels; degenerate points (weight sums near zero) "
+                       "at the top edge, in red.", "radius trade-off"))
     parts.append(chart("convergence", "Convergence with spp (slopes only over at least three spp levels)."))
     parts.append(chart("speed_accuracy", "Error against the target vs time per image; the front with ties "
                        "(a point leaves it only when another is significantly better and not significantly "
-                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic)."))
-    heat = chart("heatmap", "Error over filter x radius, one row per spp level.")
-    if heat:
-        parts.append(f"<details><summary>Error over filter x radius (heatmap)</summary>{heat}</details>")
+                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic).",
+                       "error vs time"))
+    parts.append(chart("heatmap", "Error over sampler x filter x radius, one panel per spp level; degenerate cells "
+                       "(weight sums near zero) hatched and kept out of the colour scale.", "heatmap"))
     sheet = os.path.join(images, f"contact-{s}.png")
     if os.path.isfile(sheet):
         caption = "Contact sheet: zoomed crops of the hardest region."
@@ -197,5 +218,7 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ran
         pics = [p for p in pics if p]
         if len(pics) > 1:
             parts.append("<div class='pix'>" + "".join(pics) + "</div>")
-    parts.append(spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed))
+    spectra_html = spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed)
+    if spectra_html:
+        parts.append(f"<div id='spectra-{html.escape(s)}' data-toc='error spectra'></div>" + spectra_html)
     return "\n".join(p for p in parts if p)

@@ -1,5 +1,6 @@
 """The other studies a page links to (issue 29 item 9): every folder directly under the results folder that
-holds a page (index.html) and a study CSV (study/study.csv or study.csv), described from its CSV (scenes,
+holds a study CSV (study/study.csv or study.csv), linked to its page (index.html) or else to the CSV, described
+from its CSV (scenes,
 size, spp, seeds, references, targets), and the repository's presented study (results/index.html) when the
 page is written elsewhere (the quick study of README command (a) writes runs/default/index.html)."""
 import html
@@ -50,9 +51,13 @@ def other_studies(results, study, repo):
         folder = os.path.join(results, name)
         page = os.path.join(folder, "index.html")
         csv = csv_of(folder)
-        if not os.path.isdir(folder) or not os.path.isfile(page) or csv is None or os.path.realpath(csv) == here:
+        if not os.path.isdir(folder) or csv is None or os.path.realpath(csv) == here:
             continue
-        out.append((f"{name}/index.html", name, summary(csv)))
+        if os.path.isfile(page):
+            out.append((f"{name}/index.html", name, summary(csv)))
+        else:  # a committed study without a page of its own: its CSV
+            rel = os.path.relpath(csv, results).replace(os.sep, "/")
+            out.append((rel, name, summary(csv) + " (no page of its own: the link opens its CSV)"))
     presented = os.path.join(repo, "results", "index.html")
     if os.path.realpath(results) != os.path.realpath(os.path.join(repo, "results")) and os.path.isfile(presented):
         out.append((os.path.relpath(presented, results).replace(os.sep, "/"), "the presented study",

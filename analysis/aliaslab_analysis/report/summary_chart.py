@@ -7,7 +7,7 @@ import os
 
 import numpy as np
 
-from .. import figures
+from .. import figures, palette
 from ..charts import axes
 from ..figures import plt
 from .findings import method_name
@@ -21,20 +21,21 @@ def summary_points(s):
 
 
 def summary_chart(s, out_dir):
-    """Draws summary_error_time; returns (png path, the front's lines, the points drawn)."""
+    """Draws summary_error_time; returns (png path, the front's lines, the points drawn). One panel per spp
+    level, side by side on one shared y axis, each with its own time range, so that the front's numbers of
+    one cluster of times do not pile up."""
     g = summary_points(s)
-    fig, ax = plt.subplots(figsize=(10, 5.6))
     name = "summary_error_time"
     g = g[np.isfinite(g["median_ratio"].to_numpy(dtype=float)) & np.isfinite(g["cost"].to_numpy(dtype=float))
           & (g["cost"] > 0)].copy()
     if g.empty:
+        fig, ax = plt.subplots(figsize=(10, 5.6))
         axes.empty_panel(ax, "no method has a finite error ratio and time")
         figures.save_figure(fig, out_dir, name)
         return os.path.join(out_dir, name + ".png"), [], g
     levels = sorted(g["spp"].unique())
     samplers = sorted(g["sampler"].unique())
-    colours = {x: figures.colour(i) for i, x in enumerate(samplers)}
-    sizes = {x: 18 + 60 * i / max(1, len(levels) - 1) for i, x in enumerate(levels)}
+    colours = {x: palette.sampler_colour(x) for x in samplers}
     pos = g["median_ratio"] > 0
     floor = float(g.loc[pos, "ci_low"].clip(lower=g.loc[pos, "median_ratio"].min() / 2).min()) / 1.5 if pos.any() else 1e-3
     # the y axis ends at CAP_FACTOR x the front's largest median (at least 10x): the question is which methods
@@ -44,60 +45,70 @@ def summary_chart(s, out_dir):
     above = g["median_ratio"] > cap
     g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
     g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
-    f = g[g["front"]]
-    lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
-    hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
-    ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#999", lw=0.8, zorder=1)
-    if above.any():
-        ax.scatter(g.loc[above, "cost"], np.full(int(above.sum()), cap * 1.15), marker="^", color="grey", s=22,
-                   zorder=2, clip_on=False)
-    for (sampler, hollow, det, pre), h in g[~above].groupby(["sampler", "hollow", "deterministic", "prefilter"]):
-        colour = colours[sampler]
-        marker = np.where(h["median_ratio"] > 0, "o", "v")
-        for m in set(marker):
-            k = h[marker == m]
-            if det:
-                ax.scatter(k["cost"], k["y"], s=k["spp"].map(sizes), marker="x", color=colour, linewidths=1.2,
-                           alpha=0.8, zorder=2)
-                continue
-            ax.scatter(k["cost"], k["y"], s=k["spp"].map(sizes), marker=m, facecolors="none" if hollow else colour,
-                       edgecolors="black" if pre != "none" else colour,
-                       linewidths=1.5 if pre != "none" or hollow else 0.8, alpha=0.8, zorder=2)
-    front = g[g["front"]].sort_values(["cost", "median_ratio"])
-    ax.plot(front["cost"], front["y"], "k--", lw=1)
+    front = g[g["front"]].sort_values(["spp", "cost", "median_ratio"])
+    widths = [1 + (front["spp"] == spp).sum() / 8 for spp in levels]  # room for the numbers where the front is long
+    fig, panels = plt.subplots(1, len(levels), figsize=(2.2 * sum(widths) + 4.0, 6.0), sharey=True, squeeze=False,
+                               gridspec_kw=dict(width_ratios=widths))
+    panels = panels[0]
     lines = [f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['median_ratio']:.3g} "
              f"[{r['ci_low']:.3g}-{r['ci_high']:.3g}], {r['cost']:.3g} ms" for k, (_, r) in enumerate(front.iterrows(), 1)]
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    axes.plain_log_x(ax)
-    ax.set_ylim(bottom=float(g["y"].min()) / 1.3, top=cap * 1.3)
+    timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
+    number = 1
+    for ax, spp in zip(panels, levels):
+        h_all = g[g["spp"] == spp]
+        f = front[front["spp"] == spp]
+        lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
+        hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
+        ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#999", lw=0.8, zorder=1)
+        up = above[h_all.index]
+        if up.any():
+            ax.scatter(h_all.loc[up, "cost"], np.full(int(up.sum()), cap * 1.15), marker="^", color="grey", s=18,
+                       zorder=2, clip_on=False)
+        for (sampler, hollow, det, pre), h in h_all[~up].groupby(["sampler", "hollow", "deterministic", "prefilter"]):
+            colour = colours[sampler]
+            marker = np.where(h["median_ratio"] > 0, "o", "v")
+            for m in set(marker):
+                k = h[marker == m]
+                if det:
+                    ax.scatter(k["cost"], k["y"], s=40, marker="x", color=colour, linewidths=1.2, alpha=0.9, zorder=2)
+                    continue
+                ax.scatter(k["cost"], k["y"], s=36, marker=m, facecolors="none" if hollow else colour,
+                           edgecolors="black" if pre != "none" else colour,
+                           linewidths=1.5 if pre != "none" or hollow else 0.8, alpha=0.85, zorder=2)
+        ax.plot(f["cost"], f["y"], "k--", lw=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        axes.plain_log_x(ax)
+        ax.set_ylim(bottom=float(g["y"].min()) / 1.3, top=cap * 1.3)
+        ax.set_title(f"{int(spp)} spp", fontsize=10)
+        ax.set_xlabel(f"{timing} per image (ms, mean over scenes)", fontsize=8)
+        ax.grid(True, which="both", alpha=0.25)
+        axes.number_points(ax, list(f["cost"]), list(f["y"]), start=number)
+        number += len(f)
+    panels[0].set_ylabel("error / each scene's best at that spp, lower is better\n"
+                         "(median over scenes; front: 95 % bootstrap interval)")
     clipped = (f"{int(above.sum())} point(s) above {cap:.3g}x (up to {g['median_ratio'].max():.3g}x) drawn as grey "
                "triangles at the top" if above.any() else "")
-    timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
-    ax.set_xlabel(f"{timing} per image (ms, mean over scenes)")
-    ax.set_ylabel("error / each scene's best at that spp\n(median over scenes; front: 95 % bootstrap interval)")
-    ax.grid(True, which="both", alpha=0.25)
     handles = [plt.Line2D([], [], ls="", marker="o", color=colours[x], label=x) for x in samplers]
-    handles += [plt.Line2D([], [], ls="", marker="o", color="grey", ms=np.sqrt(sizes[x]), label=f"{int(x)} spp")
-                for x in levels]
     handles.append(plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"))
-    handles.append(plt.Line2D([], [], ls="", marker="o", mfc="none", mec="grey", label="hollow: flagged or\n"
+    handles.append(plt.Line2D([], [], ls="", marker="o", mfc="none", mec="0.3", label="hollow: flagged or\n"
                               "undetermined in >= 1 scene\n(kept, counted as is)"))
     if g["deterministic"].any():
-        handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="deterministic (fixed grid,\nnot ranked)"))
+        handles.append(plt.Line2D([], [], ls="", marker="x", color="0.3", label="cross: deterministic\n(fixed grid, not ranked)"))
     if (g["median_ratio"] <= 0).any():
-        handles.append(plt.Line2D([], [], ls="", marker="v", color="grey", label="median <= 0 (drawn at the edge)"))
+        handles.append(plt.Line2D([], [], ls="", marker="v", color="0.3", label="median <= 0 (drawn at the edge)"))
     if (g["prefilter"] != "none").any():
         handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.5, label="pre-filtered"))
-    leg = ax.legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0),
-                    title="colour: sampler, size: spp", title_fontsize=7)
+    leg = panels[-1].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0),
+                            title="colour: sampler", title_fontsize=7)
     leg.set_in_layout(True)
-    shown = lines[:24] + ([f"... {len(lines) - 24} more"] if len(lines) > 24 else [])
-    for c in range(0, len(shown), 8):
-        ax.text(0.6 * (c // 8), -0.17, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + 8]),
-                transform=ax.transAxes, fontsize=7, va="top", family="monospace")
-    ax.set_title(f"Error against `{s.primary}` vs time: every method at every spp level, all "
+    shown = lines[:36] + ([f"... {len(lines) - 36} more"] if len(lines) > 36 else [])
+    per = 12
+    for c in range(0, len(shown), per):
+        fig.text(0.02 + 0.33 * (c // per), -0.02, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+                 fontsize=7, va="top", family="monospace")
+    fig.suptitle(f"Error against `{s.primary}` vs time: every method at every spp level, all "
                  f"{len(s.scenes)} scenes" + (f"\n{clipped}" if clipped else ""), fontsize=10)
-    axes.number_points(ax, list(front["cost"]), list(front["y"]))
+    fig.tight_layout()
     figures.save_figure(fig, out_dir, name)
     return os.path.join(out_dir, name + ".png"), lines, g

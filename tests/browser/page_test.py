@@ -1,0 +1,134 @@
+"""The report page in a real browser (issue 30 item 6): a tiny study is swept and reported here (about 10 s),
+its index.html loaded from file:// in headless Chromium at 1366 px, and checked: no severe console message
+(a failed load, a script error), every link and anchor resolves, every image decodes (lazy ones included),
+every entry of the table of contents points at an element of the page, the scene gallery links to the scenes,
+and a click on a chart opens it enlarged (Esc closes it). A screenshot of the top of the page at 1366 px is
+written to ARTIFACTS/page-1366.png (CI keeps it: look at it when the page changes).
+
+  python3 tests/browser/page_test.py --sweep build/bin/sweep --source . --artifacts build/artifacts
+Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or python3-selenium is missing.
+"""
+import argparse
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+import urllib.parse
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import browser  # noqa: E402
+
+ARGS = None
+
+
+def sweep_and_report(sweep, source, out):
+    study = os.path.join(out, "study")
+    subprocess.run([sweep, "--scenes", f"{source}/scenes/zoneplate.txt,{source}/scenes/fence.txt", "--size", "24",
+                    "24", "--samplers", "uniform,jittered,sobol,zsobol", "--spp", "4,16", "--filters", "box,lanczos",
+                    "--radii", "0.5,1", "--seeds", "2", "--ref-spp", "64", "--target", "area,gaussian:1.5",
+                    "--cache", os.path.join(out, "cache"), "--out", study, "--images", "--quiet", "--threads", "2"],
+                   check=True)
+    env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
+    subprocess.run([sys.executable, "-m", "analysis", "report", out, "--study", os.path.join(study, "study.csv")],
+                   check=True, cwd=source, env=env, stdout=subprocess.DEVNULL)
+    return os.path.join(out, "index.html")
+
+
+class Page(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.TemporaryDirectory()
+        cls.page = sweep_and_report(ARGS.sweep, ARGS.source, cls.tmp.name)
+        cls.driver = browser.start(1366, 900)
+        cls.driver.get("file://" + cls.page)
+        cls.failed_images = browser.wait_images(cls.driver)
+        cls.log = browser.console(cls.driver)
+        browser.screenshot(cls.driver, os.path.join(ARGS.artifacts, "page-1366.png"))
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.driver.quit()
+        cls.tmp.cleanup()
+
+    def js(self, code, *args):
+        return self.driver.execute_script(code, *args)
+
+    def test_no_severe_console_message(self):
+        self.assertEqual(browser.severe(self.log), [])
+
+    def test_every_image_decodes(self):
+        self.assertEqual(self.failed_images, [])
+        self.assertGreater(self.js("return document.querySelectorAll('figure img').length;"), 10)
+
+    def test_every_link_resolves(self):
+        hrefs = self.js("return Array.from(document.querySelectorAll('a[href]')).map(a => a.getAttribute('href'));")
+        self.assertTrue(hrefs)
+        for href in hrefs:
+            parts = urllib.parse.urlsplit(href)
+            self.assertIn(parts.scheme, ("", "file"), f"a link leaves the page's folder: {href}")
+            if not parts.path:  # an anchor on this page
+                self.assertTrue(self.js("return document.getElementById(arguments[0]) !== null;",
+                                        urllib.parse.unquote(parts.fragment)), f"no element with id {href}")
+                continue
+            target = os.path.normpath(os.path.join(os.path.dirname(self.page), urllib.parse.unquote(parts.path)))
+            self.assertTrue(os.path.exists(target), f"{href}: {target} does not exist")
+
+    def test_the_table_of_contents_points_at_the_page(self):
+        ids = self.js("return Array.from(document.querySelectorAll('nav.toc a')).map(a => a.hash.slice(1));")
+        for required in ("findings", "scenes", "scene-zoneplate", "scene-fence", "heatmap-fence", "gallery"):
+            self.assertIn(required, ids)
+        for i in ids:
+            self.assertTrue(self.js("return document.getElementById(arguments[0]) !== null;", i), i)
+        # sticky: after scrolling far down, the contents are still on screen
+        self.js("window.scrollTo(0, document.body.scrollHeight / 2);")
+        top = self.js("return document.querySelector('nav.toc').getBoundingClientRect().top;")
+        self.assertGreaterEqual(top, -1)
+        self.assertLess(top, 50)
+
+    def test_the_gallery_links_every_scene(self):
+        links = self.js("return Array.from(document.querySelectorAll('.gallery a')).map(a => a.hash);")
+        self.assertEqual(sorted(links), ["#scene-fence", "#scene-zoneplate"])
+
+    def test_a_click_enlarges_a_chart_and_escape_closes_it(self):
+        from selenium.webdriver.common.by import By
+        from selenium.webdriver.common.keys import Keys
+        img = self.driver.find_element(By.CSS_SELECTOR, "figure img")
+        self.js("arguments[0].scrollIntoView();", img)
+        img.click()
+        box = self.driver.find_element(By.ID, "lightbox")
+        self.assertIn("open", box.get_attribute("class"))
+        self.assertEqual(box.find_element(By.TAG_NAME, "img").get_attribute("src"), img.get_attribute("src"))
+        self.driver.find_element(By.TAG_NAME, "body").send_keys(Keys.ESCAPE)
+        self.assertNotIn("open", box.get_attribute("class"))
+
+    def test_the_definitions_open_as_html(self):
+        href = self.js("return Array.from(document.querySelectorAll('a')).find(a => a.textContent.includes("
+                       "'docs/science.md')).getAttribute('href');")
+        self.assertTrue(href.endswith(".html"), href)
+        self.driver.get("file://" + os.path.join(os.path.dirname(self.page), href))
+        self.assertGreater(self.js("return document.querySelectorAll('.docs table, .docs li').length;"), 5)
+        self.assertEqual(browser.severe(browser.console(self.driver)), [])
+        self.driver.get("file://" + self.page)
+
+
+def main():
+    global ARGS
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--sweep", required=True)
+    ap.add_argument("--source", required=True, help="the repository root")
+    ap.add_argument("--artifacts", required=True, help="folder of the screenshot (CI artefact)")
+    ap.add_argument("--skip", help="skip with this reason (exit 77)")
+    ARGS, rest = ap.parse_known_args()
+    why = ARGS.skip or browser.missing()
+    if why:
+        print(f"SKIPPED: {why}")
+        return 77
+    ARGS.source = os.path.abspath(ARGS.source)
+    ARGS.artifacts = os.path.abspath(ARGS.artifacts)
+    result = unittest.main(argv=[sys.argv[0]] + rest, exit=False, verbosity=2).result
+    return 0 if result.wasSuccessful() else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
