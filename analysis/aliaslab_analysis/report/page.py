@@ -9,6 +9,7 @@ import numpy as np
 from .. import charts, errors, figures, spectra, study_csv
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
+from ..viewer.section import viewer_section
 from . import studies
 from .elements import figure, write_page
 from .findings import findings, tie_rules
@@ -114,6 +115,7 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
                        "</code>: the median over scenes of its error relative to each scene's best at that spp, "
                        "with its bootstrap interval, against its time; the front with ties is numbered and listed. "
                        "Hollow: flagged or undetermined in at least one scene (kept, counted as is).", embed))
+    body.append(viewer_section(results))  # issue 30: the comparison viewer and the teaching strand (viewer/)
     body.append("<h2 id='scenes'>Per scene</h2><p>" + " ".join(
         f"<a href='#scene-{html.escape(figures.slug(x))}'>{html.escape(x)}</a>" for x in scenes) + "</p>")
     if len(s.targets) > 1:
