@@ -11,6 +11,7 @@ import json
 import os
 
 from .. import errors, figures, study_csv
+from ..teaching import build as teaching
 from . import export, render
 from .plan import Plan
 
@@ -74,6 +75,7 @@ def main(argv=None, prog=None):
             return 0
         out = export.export_study(args.results, args.study, df, plan, scenes, args.work, args.cache,
                                   quiet=args.quiet)
+        teaching.build(args.results, args.study, df, plan, args.work, args.cache, out)
     except errors.InputError as e:
         errors.fail(str(e))
     print(f"wrote {out}")

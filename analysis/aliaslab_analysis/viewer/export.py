@@ -121,6 +121,9 @@ class SceneExport:
         lowest spp with set A's filter."""
         return "A" in c["sets"] and c["spp"] == self.plan.levels[0] and c["sampler"] in self.plan.teaching
 
+    def has_reference(self, filt, radius):
+        return any(e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9 for e in self.manifest["filters"])
+
     def reference(self, filt, radius):
         for e in self.manifest["filters"]:
             if e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9:

@@ -42,4 +42,13 @@ def viewer_section(page_dir, data_dir=None):
             "<div class='alv-scenes'></div><div class='alv-controls'></div><div class='alv-status'></div>"
             "<canvas class='alv-bar' width='384' height='12'></canvas><span class='alv-bar-label'></span>"
             "<div class='alv-panels'></div></div>"
-            f"<script>{asset('viewer.js')}</script>")
+            f"<script>{asset('viewer.js')}</script>" + teaching(data_dir))
+
+
+def teaching(data_dir):
+    """The teaching strand's fragment written beside the data (teaching/build.py), or ''."""
+    path = os.path.join(data_dir, "teaching.html")
+    if not os.path.isfile(path):
+        return ""
+    with open(path, encoding="utf-8") as f:
+        return ".teach-ps img{width:160px;image-rendering:pixelated}".join(["<style>", "</style>"]) + f.read()
