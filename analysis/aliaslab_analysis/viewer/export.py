@@ -216,6 +216,7 @@ class SceneExport:
                 "crop": {"x": cx, "y": cy, "size": n,
                          "how": f"the {n} x {n} window with the largest summed variance across the methods of set A "
                                 f"(seed 0, {plan.levels[0]} spp)"},
+                "wholeHow": f"{', '.join(plan.teaching)} at {plan.levels[0]} spp, {plan.filter} r={plan.radius:g}",
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "scales": scale,
                 "scaleHow": "99th percentile of |I - T| over the crop of every sampler of set A at that spp (seed 0)",

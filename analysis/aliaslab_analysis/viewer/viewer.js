@@ -16,7 +16,8 @@
   window.ALIASLAB_VIEWER = {state: S, data: data};
   window.ALIASLAB_VIEWER_ADD = function (d) { data[d.scene] = d; if (S.pending === d.scene) open(d.scene); };
 
-  const fmt = (v) => v === null || v === undefined ? "n/a" : typeof v === "number" ? Number(v).toPrecision(3) : String(v);
+  const fmt = (v) => v === null || v === undefined ? "n/a"
+    : typeof v === "number" ? (Number.isInteger(v) ? String(v) : Number(v).toPrecision(3)) : String(v);
   const el = (tag, attrs, text) => {
     const e = document.createElement(tag);
     for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
@@ -100,13 +101,12 @@
     choose(dim, vals[(i + by + vals.length) % vals.length]);
   }
 
-  function buttonRow(label, items, onClick, isOn) {
+  function buttonRow(label, items, onClick) {
     const row = el("div", {class: "alv-row"});
     row.appendChild(el("span", {class: "alv-label"}, label));
     for (const [value, text] of items) {
       const b = el("button", {type: "button", "data-value": String(value)}, text);
       b.onclick = () => { S.engaged = true; onClick(value); };
-      b.dataset.on = isOn;
       row.appendChild(b);
     }
     return row;
@@ -155,10 +155,9 @@
   }
 
   async function panelData(c) {
-    const d = D(), [id, seed] = imageId(c);
-    const img = await values(id), tgt = await values(d.targetImages[S.target][S.region]);
-    const ref = await values(d.refs[c.ref][S.region]);
-    return {img: img, tgt: tgt, ref: ref, seed: seed};
+    const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
+    if (!id || !t || !r) return {missing: true, seed: seed};  // whole images: a few only (the size budget)
+    return {img: await values(id), tgt: await values(t), ref: await values(r), seed: seed};
   }
 
   async function draw() {
@@ -176,7 +175,7 @@
     const panels = $(".alv-panels");
     const all = await Promise.all(shown.map((id) => panelData(cfgOf(id))));
     panels.textContent = "";
-    const n = all[0].img.w;
+    const n = S.region === "crop" ? d.crop.size : d.width;
     if (!S.zoom) { S.zoom = VIEW / n; S.ox = 0; S.oy = 0; }
     all.forEach((p, i) => panels.appendChild(panel(cfgOf(shown[i]), p, scale, i === 0)));
     colourBar(scale);
@@ -190,6 +189,16 @@
   function panel(c, p, scale, main) {
     const fig = el("figure", {class: "alv-panel" + (main ? " alv-main" : ""), "data-config": c.id});
     const cv = el("canvas", {width: VIEW, height: VIEW});
+    if (p.missing) {
+      const ctx = cv.getContext("2d");
+      ctx.fillStyle = "#ddd"; ctx.fillRect(0, 0, VIEW, VIEW); ctx.fillStyle = "#333"; ctx.font = "14px sans-serif";
+      ctx.fillText("whole image not stored for this one", 20, VIEW / 2 - 10);
+      ctx.fillText("(size budget): see the crop, or the", 20, VIEW / 2 + 10);
+      ctx.fillText(D().wholeHow || "", 20, VIEW / 2 + 30);
+      fig.appendChild(cv);
+      fig.appendChild(el("figcaption", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
+      return fig;
+    }
     const off = el("canvas", {width: p.img.w, height: p.img.h}), octx = off.getContext("2d");
     const out = octx.createImageData(p.img.w, p.img.h);
     const g = (v) => 255 * Math.max(0, Math.min(1, v));
@@ -249,6 +258,7 @@
 
   function redrawOnly() {
     for (const cv of root.querySelectorAll(".alv-panel canvas")) {
+      if (!cv._off) continue;
       const ctx = cv.getContext("2d");
       ctx.setTransform(1, 0, 0, 1, 0, 0); ctx.fillStyle = "#777"; ctx.fillRect(0, 0, VIEW, VIEW);
       ctx.setTransform(S.zoom, 0, 0, S.zoom, -S.ox * S.zoom, -S.oy * S.zoom);
@@ -262,6 +272,7 @@
     const d = D();
     for (const fig of root.querySelectorAll(".alv-panel")) {
       const p = fig.querySelector("canvas")._p, out = fig.querySelector(".alv-readout");
+      if (!out) continue;
       if (!p || x < 0 || y < 0 || x >= p.img.w || y >= p.img.h) { out.textContent = "outside the image"; continue; }
       const i = y * p.img.w + x, gx = S.region === "crop" ? x + d.crop.x : x, gy = S.region === "crop" ? y + d.crop.y : y;
       const vals = [0, 1, 2].slice(0, p.img.c).map((ch) => at(p.img, i, ch));
