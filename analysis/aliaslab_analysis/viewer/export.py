@@ -11,8 +11,8 @@ ALIASLAB_VIEWER_ADD(scene data) with:
             error is taken against them) (png_entry);
             lo, hi the image's own minimum and maximum, so the step is stated per image
   configs   per configuration: sampler, spp, filter, radius, the seeds rendered, its image ids (crop per seed;
-            the whole image of seed 0 only for the teaching samplers at the lowest spp with set A's filter: the
-            size budget), its own reference and its CSV rows, one per target (the CSV's values)
+            the whole image of seed 0 only for the grid and jittered at the lowest spp with set A's filter: the
+            size budget), its own reference and its CSV rows, one per target (the CSV's values in ROW_COLUMNS)
   targets   the target images (crop and whole); refs: each filter x radius's own reference G
   scales    the signed error's colour scale per (spp, target): the 99th percentile of |I_0 - T| (the mean over
             the channels) over set A's methods at that spp in the crop
@@ -31,8 +31,9 @@ from .. import errors, figures
 from .exr import read_exr, read_exrs
 from .plan import crop_window, image_stem
 
-ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "aliasing_se", "noise", "noise_se", "blur", "cross",
-               "mse", "flip", "flagged", "deterministic", "undefined_pixels", "cpu_ms", "mse_target_seeds")
+ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
+               "cpu_ms")  # the CSV columns shown beside an image
+WHOLE = ("uniform", "jittered")  # the samplers whose whole image is stored (the size budget)
 TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_target (float images, double sums)
 
 
@@ -95,7 +96,7 @@ def row_values(r):
         v = r[c]
         if c == "mse_target_seeds":
             out[c] = [float(x) for x in str(v).split(";") if x]
-        elif c in ("flagged", "deterministic", "undefined_pixels"):
+        elif c in ("flagged", "deterministic"):
             out[c] = int(v)
         else:
             out[c] = None if not np.isfinite(float(v)) else float(v)
@@ -117,9 +118,9 @@ class SceneExport:
         self.images, self.checked, self.worst = {}, 0, 0.0
 
     def whole(self, c):
-        """Whether the whole image of a configuration is stored (the size budget): the teaching samplers at the
-        lowest spp with set A's filter."""
-        return "A" in c["sets"] and c["spp"] == self.plan.levels[0] and c["sampler"] in self.plan.teaching
+        """Whether the whole image of a configuration is stored (the size budget): the grid and jittered at the
+        lowest spp with set A's filter (the references' whole images are not stored; the primary target's is)."""
+        return "A" in c["sets"] and c["spp"] == self.plan.levels[0] and c["sampler"] in WHOLE
 
     def has_reference(self, filt, radius):
         return any(e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9 for e in self.manifest["filters"])
@@ -173,15 +174,16 @@ class SceneExport:
         for c in configs:
             rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
                            & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
-            per_target = {}
+            per_target, per_seed = {}, {}
             for _, r in rows.iterrows():
                 per_target[str(r["target"])] = row_values(r)
+                per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
             base = image_stem(c, 0)[:-len("-seed0")]
             for k in c["seeds"]:
                 img = seeds[(image_stem(c, 0), k)]
                 for t in self.targets:
                     mine = float(np.mean((img - target_imgs[t]) ** 2)) - target_var[t]
-                    theirs = per_target[t]["mse_target_seeds"][k]
+                    theirs = per_seed[t][k]
                     rel = abs(mine - theirs) / max(abs(theirs), 1e-12)
                     self.worst, self.checked = max(self.worst, rel), self.checked + 1
                     if rel > TOLERANCE:
@@ -194,9 +196,6 @@ class SceneExport:
             if ref_key not in refs:
                 g, _, describe = self.reference(c["filter"], c["radius"])
                 refs[ref_key] = {"crop": self.add(f"ref-{ref_key}-crop", g, 8, "crop"), "describe": describe}
-            if whole and "whole" not in refs[ref_key]:
-                refs[ref_key]["whole"] = self.add(f"ref-{ref_key}-whole", self.reference(c["filter"], c["radius"])[0],
-                                                  8, "whole")
             crops = {str(k): self.add(f"{base}-seed{k}-crop", seeds[(image_stem(c, 0), k)], 8, "crop")
                      for k in c["seeds"]}
             out_configs.append({"id": f"{c['sampler']}|{c['spp']}|{c['filter']}|{c['radius']:g}",
@@ -216,7 +215,7 @@ class SceneExport:
                 "crop": {"x": cx, "y": cy, "size": n,
                          "how": f"the {n} x {n} window with the largest summed variance across the methods of set A "
                                 f"(seed 0, {plan.levels[0]} spp)"},
-                "wholeHow": f"{', '.join(plan.teaching)} at {plan.levels[0]} spp, {plan.filter} r={plan.radius:g}",
+                "wholeHow": f"{', '.join(WHOLE)} at {plan.levels[0]} spp, {plan.filter} r={plan.radius:g}",
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "scales": scale,
                 "scaleHow": "99th percentile of |I - T| over the crop of every sampler of set A at that spp (seed 0)",

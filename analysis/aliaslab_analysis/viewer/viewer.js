@@ -156,8 +156,10 @@
 
   async function panelData(c) {
     const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
-    if (!id || !t || !r) return {missing: true, seed: seed};  // whole images: a few only (the size budget)
-    return {img: await values(id), tgt: await values(t), ref: await values(r), seed: seed};
+    if (!id || !t) return {missing: true, seed: seed};  // whole images: a few only (the size budget)
+    if (S.mode === "ref" && !r) return {missing: true, seed: seed};
+    const img = await values(id);
+    return {img: img, tgt: await values(t), ref: r ? await values(r) : null, seed: seed};
   }
 
   async function draw() {
@@ -192,7 +194,7 @@
     if (p.missing) {
       const ctx = cv.getContext("2d");
       ctx.fillStyle = "#ddd"; ctx.fillRect(0, 0, VIEW, VIEW); ctx.fillStyle = "#333"; ctx.font = "14px sans-serif";
-      ctx.fillText("whole image not stored for this one", 20, VIEW / 2 - 10);
+      ctx.fillText(S.mode === "ref" ? "whole references not stored" : "whole image not stored for this one", 20, VIEW / 2 - 10);
       ctx.fillText("(size budget): see the crop, or the", 20, VIEW / 2 + 10);
       ctx.fillText(D().wholeHow || "", 20, VIEW / 2 + 30);
       fig.appendChild(cv);
@@ -280,7 +282,7 @@
       out.appendChild(el("span", {"data-x": gx, "data-y": gy, "data-value": vals.join(","), "data-step": String(p.img.step)},
         `pixel (${gx}, ${gy}): value ${shownValue(p.img, i)} (\u00b1${(p.img.step / 2).toPrecision(2)} stored), target ` +
         `${shownValue(p.tgt, i)}, error ${(mean(p.img, i) - mean(p.tgt, i)).toFixed(4)}` + (p.img.c > 1 ? " (mean of R, G, B)" : "") +
-        `, own reference ${shownValue(p.ref, i)}`));
+        (p.ref ? `, own reference ${shownValue(p.ref, i)}` : "")));
     }
   }
 
