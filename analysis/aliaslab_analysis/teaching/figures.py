@@ -53,6 +53,8 @@ def edge_point(img, margin=12):
     d = np.abs(np.diff(g, axis=1))
     d[:, :margin] = 0
     d[:, -margin:] = 0
+    d[:margin] = 0
+    d[-margin:] = 0
     y, x = np.unravel_index(np.argmax(d), d.shape)
     return int(x), int(y)
 

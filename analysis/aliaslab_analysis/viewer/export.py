@@ -38,7 +38,7 @@ TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_ta
 
 
 def crop_size(width, height):
-    return int(max(8, min(40, min(width, height) // 2)))
+    return int(max(8, min(32, min(width, height) // 2)))
 
 
 def encode(q, mode):
