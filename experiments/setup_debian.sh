@@ -4,6 +4,8 @@
 # munge and Slurm are for tests/slurm (slurm_test), which starts its own
 # single-node cluster from a temporary folder: installing them configures no
 # cluster (their services stay down without /etc/slurm/slurm.conf).
+# chromium, chromium-driver and python3-selenium drive the page in a real browser
+# (tests/browser); python3-openimageio reads the images there independently.
 set -euo pipefail
 
 packages=(
@@ -14,6 +16,7 @@ packages=(
   chromium chromium-driver python3-selenium
   parallel clang libclang-rt-14-dev
   munge slurmctld slurmd slurm-client
+  chromium chromium-driver python3-selenium python3-openimageio python3-pil
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -2,7 +2,7 @@
 
 Run from the repository root with Debian's /usr/bin/python3 (numpy, pandas, matplotlib):
     /usr/bin/python3 -m analysis COMMAND [options]      (COMMAND -h for its options)
-COMMAND is report, charts, compare, convergence, pointsets or filters (cli.py).
+COMMAND is report, charts, compare, convergence, pointsets, filters or viewer (cli.py).
 
 Layout, a concept a module:
   study_csv.py       reading a study CSV: load_study(path) -> (DataFrame, notes)
@@ -18,6 +18,9 @@ Layout, a concept a module:
   findings/          the findings generated from a study: numbers (claims) and text, for the page and README
   report/            the HTML report: findings, scene sections, page assembly, Markdown (`report`)
   spectra.py         the error spectra beside a study CSV, read and drawn (for the report)
+  viewer/            the page's comparison viewer: chosen configurations rendered, checked against the CSV,
+                     exported per scene (`viewer`); its section of the page
+  teaching/          the teaching strand (grid against jittered, point sets, ringing, blur, broken filters)
   compare.py         two study CSVs compared (`compare`; exit 1 on an accuracy regression)
   convergence_chart.py, pointset_chart.py, filter_profiles.py
                      the charts of the convergence, pointsets and filterprofile experiments

@@ -7,10 +7,11 @@ import sys
 from . import compare, convergence_chart, filter_profiles, pointset_chart
 from .charts import cli as charts_cli
 from .report import cli as report_cli
+from .viewer import cli as viewer_cli
 
 COMMANDS = {"report": report_cli.main, "charts": charts_cli.main, "compare": compare.main,
             "convergence": convergence_chart.main, "pointsets": pointset_chart.main,
-            "filters": filter_profiles.main}
+            "filters": filter_profiles.main, "viewer": viewer_cli.main}
 USAGE = """usage: {prog} COMMAND [options]      (COMMAND -h lists its options)
 
   report       the HTML report of a study, findings first
@@ -19,6 +20,7 @@ USAGE = """usage: {prog} COMMAND [options]      (COMMAND -h lists its options)
   convergence  RMSE against N from the `convergence` experiment's CSV
   pointsets    the spectra and discrepancy charts of the `pointsets` experiment
   filters      filter profiles and frequency responses from `filterprofile`
+  viewer       render and export the comparison viewer's images of a study (then `report` shows it)
 """
 
 

@@ -18,6 +18,7 @@ from .elements import figure, image_src, write_page
 from .findings import findings, method_name, tie_rules
 from .markdown import markdown_tables
 from .scene import scene_notes, scene_section
+from ..viewer.section import viewer_section
 from .summary_chart import summary_chart
 from .targets_table import targets_section
 
@@ -197,6 +198,7 @@ SECTIONS = [
     findings_section,
     lambda c: targets_section(c.s, c.science),
     summary_section,
+    lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
     stability_section,
     lambda c: isolation_section(c.results, c.embed),

@@ -1,0 +1,173 @@
+"""The comparison viewer's data and the teaching strand's numbers (issue 30).
+
+The committed viewer data of the presented study (results/viewer) against its CSV, read here with the csv module
+(not the package's loader): every value the viewer displays beside an image equals the CSV row's. The image
+encoding round trip, the crop choice and the plan's filter choice against independent computations, and the
+teaching strand's rules on a small synthetic table."""
+import csv
+import json
+import os
+import statistics
+import unittest
+
+import numpy as np
+import pandas as pd
+
+from ..aliaslab_analysis.teaching import facts
+from ..aliaslab_analysis.viewer import export, plan, section
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+VIEWER = os.path.join(REPO, "results", "viewer")
+STUDY = os.path.join(REPO, "results", "presented", "study.csv")
+
+
+def load_js(path):
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    head = "ALIASLAB_VIEWER_ADD("
+    assert text.startswith(head) and text.rstrip().endswith(");"), path
+    return json.loads(text[len(head):text.rstrip().rindex(")")])
+
+
+def csv_rows():
+    out = {}
+    with open(STUDY, newline="", encoding="utf-8") as f:
+        for r in csv.DictReader(f):
+            if r["reconstruction"] == "weighted" and r["prefilter"] == "none":
+                out[(r["scene"], r["sampler"], int(r["spp"]), r["filter"], float(r["radius"]), r["target"])] = r
+    return out
+
+
+class CommittedViewerData(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        with open(os.path.join(VIEWER, "index.json"), encoding="utf-8") as f:
+            cls.index = json.load(f)
+        cls.scenes = {s: load_js(os.path.join(VIEWER, v["file"])) for s, v in cls.index["scenes"].items()}
+        cls.rows = csv_rows()
+
+    def test_every_scene_of_the_study(self):
+        scenes = {k[0] for k in self.rows}
+        self.assertEqual(set(self.scenes), scenes)
+
+    def test_values_shown_equal_the_csv_rows(self):
+        checked = 0
+        for scene, d in self.scenes.items():
+            for c in d["configs"]:
+                for target, shown in c["rows"].items():
+                    r = self.rows[(scene, c["sampler"], c["spp"], c["filter"], float(c["radius"]), target)]
+                    for col, v in shown.items():
+                        if col == "mse_target_seeds":
+                            self.assertEqual(v, [float(x) for x in r[col].split(";")])
+                        elif v is None:
+                            self.assertFalse(np.isfinite(float(r[col])), (scene, c["id"], col))
+                        else:
+                            self.assertEqual(v, float(r[col]), (scene, c["id"], target, col))
+                        checked += 1
+                self.assertEqual(set(c["rows"]), set(d["targets"]), c["id"])
+        self.assertGreater(checked, 1000)
+
+    def test_images_were_verified_against_the_csv(self):
+        for scene, d in self.scenes.items():
+            self.assertGreater(d["verified"]["comparisons"], 0, scene)
+            self.assertLessEqual(d["verified"]["max_relative_difference"], export.TOLERANCE, scene)
+
+    def test_images_decode_to_their_stated_range(self):
+        for scene, d in self.scenes.items():
+            n = d["crop"]["size"]
+            for c in d["configs"][:5]:
+                for k, key in c["crop"].items():
+                    e = d["images"][key]
+                    v = export.decode(e)
+                    self.assertEqual(v.shape[:2], (n, n))
+                    self.assertAlmostEqual(float(v.min()), e["lo"], places=9)
+                    self.assertAlmostEqual(float(v.max()), e["hi"], places=9)
+            self.assertTrue(0 <= d["crop"]["x"] <= d["width"] - n and 0 <= d["crop"]["y"] <= d["height"] - n)
+
+    def test_size_budget(self):
+        total = sum(v["bytes"] for v in self.index["scenes"].values())
+        self.assertLess(total, 3_000_000, "the viewer data should stay well under the page's 5 MB budget")
+
+
+class Encoding(unittest.TestCase):
+    def test_round_trip_within_half_a_step(self):
+        rng = np.random.default_rng(3)
+        for bits in (8, 16):
+            for c in (1, 3):
+                a = rng.normal(0.5, 0.3, size=(13, 17, c))
+                e = export.png_entry(a, bits)
+                step = (a.max() - a.min()) / ((1 << bits) - 1)
+                self.assertLessEqual(float(np.abs(export.decode(e) - a).max()), step / 2 + 1e-12, (bits, c))
+
+    def test_channels(self):
+        grey = np.repeat(np.arange(12.0).reshape(3, 4, 1), 3, axis=2)
+        self.assertEqual(export.channels(grey).shape, (3, 4, 1))
+        colour = grey.copy()
+        colour[0, 0, 1] += 1
+        self.assertEqual(export.channels(colour).shape, (3, 4, 3))
+
+
+class Choices(unittest.TestCase):
+    def test_crop_is_where_the_methods_differ(self):
+        stack = np.zeros((4, 64, 64))
+        stack[:, 40:50, 8:18] = np.arange(4)[:, None, None]  # the methods differ only there
+        x, y = plan.crop_window(stack, 8)
+        self.assertTrue(8 <= x <= 10 and 40 <= y <= 42, (x, y))
+
+    def test_good_filter_by_an_independent_median(self):
+        df = pd.read_csv(STUDY)
+        df = df[(df["reconstruction"] == "weighted") & (df["prefilter"] == "none")]
+        spp = sorted(df["spp"].unique())[len(df["spp"].unique()) // 2]
+        df = df[(df["spp"] == spp) & (df["deterministic"] == 0)]
+        per = {}
+        for (t, f, r), g in df.groupby(["target", "filter", "radius"]):
+            per.setdefault((f, float(r)), []).append(statistics.median(g["mse_target"]))
+        best = min(per, key=lambda k: statistics.median(per[k]))
+        renamed = pd.read_csv(STUDY).rename(columns={"filter": "filter_name"})
+        self.assertEqual(plan.good_filter(renamed), best)
+
+
+class Teaching(unittest.TestCase):
+    def rows(self):
+        base = dict(scene="s", spp=4, target="box:0.5", reconstruction="weighted", prefilter="none",
+                    deterministic=0, undefined_pixels=0, mse_target_se=0.001)
+        rows = []
+        for sampler, f, r, mse, noise, und in (("jittered", "box", 0.5, 0.02, 0.01, 0),
+                                                ("uniform", "box", 0.5, 0.03, 0.0, 0),
+                                                ("jittered", "lanczos", 0.5, 5.0, 1.5, 0),
+                                                ("jittered", "tent", 0.5, 0.05, 0.02, 7),
+                                                ("jittered", "box", 2.0, 0.04, 0.001, 0)):
+            rows.append(dict(base, sampler=sampler, filter_name=f, radius=r, mse_target=mse, noise=noise,
+                             undefined_pixels=und, deterministic=int(sampler == "uniform")))
+        return pd.DataFrame(rows)
+
+    def test_broken_filters_are_apart_and_not_worst(self):
+        rows = self.rows()
+        bad = facts.degenerate(rows)
+        self.assertIn(("s", "jittered", 4, "lanczos", 0.5), bad)  # noise 150 times the box's
+        self.assertIn(("s", "jittered", 4, "tent", 0.5), bad)  # undefined pixels
+        self.assertEqual(len(bad), 2)
+        ext, spp = facts.extremes(rows, bad)
+        best, worst, degen = ext["s"]
+        self.assertEqual((best["filter_name"], worst["filter_name"], worst["radius"]), ("box", "box", 2.0))
+        self.assertEqual(len(degen), 2)
+
+    def test_grid_scene(self):
+        g = facts.grid_scene(self.rows())
+        self.assertEqual((g["scene"], g["wins"], g["scenes"]), ("s", 0, 1))
+        self.assertAlmostEqual(g["ratio"], 1.5)
+
+
+class Section(unittest.TestCase):
+    def test_no_data_no_section(self):
+        self.assertEqual(section.viewer_section(os.path.join(REPO, "docs")), "")
+
+    def test_section_lists_the_scenes_and_loads_lazily(self):
+        html = section.viewer_section(os.path.join(REPO, "results"))
+        self.assertIn("id='alv'", html)
+        self.assertIn("data-base='viewer/'", html)
+        self.assertNotIn("ALIASLAB_VIEWER_ADD({", html)  # the data is in the per-scene files, not the page
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,198 @@
+#!/usr/bin/python3
+"""The comparison viewer in a real browser (issue 30): Debian's chromium, driven by python3-selenium through
+chromium-driver, loads a page generated for a small study from file:// and checks that
+
+  - the console has no error (level SEVERE);
+  - a key press (ArrowRight: the next sampler) switches the method, and the picture drawn changes;
+  - the readout of a pixel under the pointer equals that pixel of the configuration's image file (the EXR the
+    raytracer wrote, read here with OpenImageIO's Python module, or oiiotool where it is missing), within half
+    the stored step the viewer states;
+  - every number beside an image equals its CSV row's value (the CSV read here with the csv module) to the
+    three significant digits shown;
+  - every link and script of the page resolves (anchors to an element of the page, files to a file);
+and writes a screenshot at 1366 px wide to ARTIFACTS/viewer_1366.png.
+
+  test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
+Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or python3-selenium is missing."""
+import argparse
+import csv
+import glob
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.parse
+
+SKIP = 77
+
+
+def skip(why):
+    print(f"SKIPPED: {why}")
+    sys.exit(SKIP)
+
+
+def browser():
+    try:
+        from selenium import webdriver
+        from selenium.webdriver.chrome.service import Service
+    except ImportError:
+        skip("python3-selenium is not installed (README command (b) installs it)")
+    chrome = shutil.which("chromium") or shutil.which("chromium-browser")
+    driver = shutil.which("chromedriver") or ("/usr/bin/chromedriver" if os.path.exists("/usr/bin/chromedriver") else None)
+    if not chrome or not driver:
+        skip("chromium or chromium-driver is not installed (README command (b) installs them)")
+    o = webdriver.ChromeOptions()
+    o.binary_location = chrome
+    for a in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage", "--window-size=1366,1000",
+              "--disable-gpu", "--force-device-scale-factor=1"):
+        o.add_argument(a)
+    o.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    return webdriver.Chrome(service=Service(driver), options=o)
+
+
+def read_image(path):
+    """(height, width, channels) values of an image file, row 0 at the top, read independently of the viewer."""
+    try:
+        import OpenImageIO as oiio
+        buf = oiio.ImageBuf(path)
+        return buf.get_pixels(oiio.FLOAT)
+    except ImportError:
+        sys.path.insert(0, ARGS.source)
+        from analysis.aliaslab_analysis.viewer.exr import read_exr
+        return read_exr(path)
+
+
+def run(cmd, **kw):
+    print("+", " ".join(cmd), flush=True)
+    subprocess.run(cmd, check=True, cwd=ARGS.source, **kw)
+
+
+def csv_rows(path):
+    with open(path, newline="", encoding="utf-8") as f:
+        return list(csv.DictReader(f))
+
+
+def main():
+    d = browser()
+    from selenium.webdriver.common.action_chains import ActionChains
+    from selenium.webdriver.common.keys import Keys
+    failures = []
+
+    def check(ok, what):
+        print(("ok   " if ok else "FAIL ") + what, flush=True)
+        if not ok:
+            failures.append(what)
+
+    tmp = tempfile.mkdtemp(prefix="aliaslab-viewer-browser-")
+    try:
+        study, page, work, cache = (os.path.join(tmp, x) for x in ("study", "page", "work", "cache"))
+        run([ARGS.sweep, "--scenes", "scenes/checker_horizon.txt", "--size", "32", "32", "--samplers",
+             "uniform,jittered,sobol", "--spp", "4,16", "--filters", "box,gaussian", "--radii", "0.5,1", "--seeds", "4",
+             "--ref-spp", "256", "--target", "area,gaussian:1.5", "--cache", cache, "--out", study, "--no-images",
+             "--quiet", "--threads", "2"])
+        env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
+        os.makedirs(page)
+        run([sys.executable, "-m", "analysis", "viewer", page, "--study", os.path.join(study, "study.csv"),
+             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--flip-seeds", "2", "--quiet"], env=env)
+        run([sys.executable, "-m", "analysis", "report", page, "--study", os.path.join(study, "study.csv"),
+             "--reuse-charts"], env=env, stdout=subprocess.DEVNULL)
+        rows = csv_rows(os.path.join(study, "study.csv"))
+
+        index = os.path.join(page, "index.html")
+        d.get("file://" + index)
+        d.execute_script("document.getElementById('alv').scrollIntoView()")
+        wait = lambda js: next((True for _ in range(100) if d.execute_script(js) or time.sleep(0.1)), False)
+        check(wait("return document.querySelectorAll('#alv .alv-panel canvas').length > 0"), "the viewer draws its panels")
+        time.sleep(0.5)
+        main_canvas = "return document.querySelector('#alv .alv-main canvas').toDataURL()"
+        state = "return window.ALIASLAB_VIEWER.state.cfg"
+        before_cfg, before_pic = d.execute_script(state), d.execute_script(main_canvas)
+        d.find_element("css selector", "#alv .alv-status").click()  # engage the viewer's keys
+        ActionChains(d).send_keys(Keys.ARROW_RIGHT).perform()
+        time.sleep(1.0)
+        after_cfg, after_pic = d.execute_script(state), d.execute_script(main_canvas)
+        check(after_cfg != before_cfg and after_cfg.split("|")[1:] == before_cfg.split("|")[1:],
+              f"ArrowRight switches the sampler ({before_cfg} -> {after_cfg})")
+        check(after_pic != before_pic, "the displayed image changes with it")
+
+        # the readout of one pixel against the configuration's image file
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        size = canvas.size
+        ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        stepsize = float(span.get_attribute("data-step"))
+        shown = span.text.split("value ")[1].split(" (")[0].strip("()").split(", ")
+        sampler, spp, filt, radius = after_cfg.split("|")
+        seed = d.execute_script("return window.ALIASLAB_VIEWER.state.seed")
+        exr = glob.glob(os.path.join(work, "*", f"{sampler}-spp{spp}-{filt}-r{radius}-seed{seed}.exr"))
+        check(len(exr) == 1, f"the image file of {after_cfg} seed {seed} exists")
+        if exr:
+            img = read_image(exr[0])
+            truth = [float(img[y, x, c]) for c in range(len(shown))]
+            diffs = [abs(float(s) - t) for s, t in zip(shown, truth)]
+            check(all(dv <= stepsize / 2 + 5e-5 for dv in diffs),
+                  f"readout at ({x}, {y}) {shown} equals the file's {[round(t, 5) for t in truth]} within half the "
+                  f"stored step {stepsize:.2g} (largest difference {max(diffs):.2g})")
+
+        # every number beside an image against the CSV
+        target = d.execute_script("return window.ALIASLAB_VIEWER.state.target")
+        spans = d.find_elements("css selector", "#alv .alv-panel [data-col]")
+        compared = 0
+        for s in spans:
+            cfg = s.find_element("xpath", "ancestor::figure").get_attribute("data-config").split("|")
+            row = [r for r in rows if (r["sampler"], r["spp"], r["filter"], r["target"]) == (cfg[0], cfg[1], cfg[2], target)
+                   and float(r["radius"]) == float(cfg[3]) and r["reconstruction"] == "weighted"]
+            col = s.get_attribute("data-col")
+            text = s.text.split()[-1].lstrip("\u00b1")
+            ok = len(row) == 1 and float(text) == float(f"{float(row[0][col]):.3g}")
+            compared += 1
+            if not ok:
+                check(False, f"{cfg} {col}: shown {text}, CSV {row[0][col] if row else 'no row'}")
+        check(compared >= 6, f"{compared} numbers beside the images equal their CSV rows' values")
+
+        logs = [e for e in d.get_log("browser") if e.get("level") == "SEVERE"]
+        check(not logs, f"no console errors ({logs[:3]})")
+
+        # every link and script resolves
+        refs = d.execute_script("return [...document.querySelectorAll('a[href]')].map(a => a.getAttribute('href'))"
+                                ".concat([...document.querySelectorAll('script[src]')].map(s => s.getAttribute('src')))")
+        bad = []
+        for h in refs:
+            if h.startswith("#"):
+                if not d.execute_script("return !!document.getElementById(arguments[0])", h[1:]):
+                    bad.append(h)
+            elif not h.startswith(("data:", "http:", "https:")):
+                target_path = os.path.normpath(os.path.join(page, urllib.parse.unquote(h.split("#")[0])))
+                if not os.path.exists(target_path):
+                    bad.append(h)
+            else:
+                bad.append(h + " (outside the repository)") if h.startswith("http") else None
+        check(not bad, f"all {len(refs)} links and scripts resolve ({bad[:5]})")
+
+        os.makedirs(ARGS.artifacts, exist_ok=True)
+        d.execute_script("document.getElementById('viewer').scrollIntoView()")
+        time.sleep(0.3)
+        shot = os.path.join(ARGS.artifacts, "viewer_1366.png")
+        d.save_screenshot(shot)
+        print(f"screenshot: {shot}")
+    finally:
+        d.quit()
+        shutil.rmtree(tmp, ignore_errors=True)
+    if failures:
+        print(f"{len(failures)} check(s) failed")
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--sweep", required=True)
+    ap.add_argument("--raytracer", required=True)
+    ap.add_argument("--source", required=True)
+    ap.add_argument("--artifacts", required=True)
+    ARGS = ap.parse_args()
+    sys.exit(main())
