@@ -32,12 +32,16 @@ Writes into DIR, each as .png and .svg:
                           hatched and out of the colour scale
   stability               undefined / negative / NaN pixel counts per method,
                           and flagged rows per method (empty panels say so)
+  blur_curve_<scene>      the error left after a Gaussian blur of sigma 0.5-4 px
+                          per sampler, beside white noise's curve (CSVs with
+                          the blur_ratio columns)
 and the tables pareto.csv (the front of every scene), flagged.csv and
 decomposition.csv. A CSV repeating a configuration is refused (exit 2).
 
 Colours and markers: palette.py. One module per chart family (axes.py: what they share); draw_all draws them all, cli.py is the command.
 """
 from .. import errors
+from .blur_curve import blur_curve
 from .convergence import convergence
 from .decomposition import decomposition
 from .heatmap import heatmaps
@@ -55,3 +59,4 @@ def draw_all(df, out_dir, filter_name=None):
     convergence(df, out_dir, filter_name)
     heatmaps(df, out_dir)
     stability(df, out_dir)
+    blur_curve(df, out_dir)  # draws nothing for a CSV without the blur_ratio columns

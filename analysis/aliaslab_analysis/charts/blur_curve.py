@@ -14,7 +14,7 @@ blur_curve(df, out_dir) draws blur_curve_<scene> (.png, .svg) and returns the pa
 import numpy as np
 import pandas as pd
 
-from .. import figures
+from .. import figures, palette
 from ..figures import plt
 
 SIGMAS = (0.5, 1.0, 2.0, 4.0)
@@ -56,7 +56,7 @@ def blur_curve(df, out_dir):
             y = np.array([row[column(s)] for s in SIGMAS], dtype=float)
             e = np.array([row[column(s) + "_se"] for s in SIGMAS], dtype=float)
             flagged = int(row.get("flagged", 0) or 0) == 1  # error not told from zero: drawn, marked, hollow
-            ax.errorbar(SIGMAS, y, yerr=2 * e, marker="o", ms=4, capsize=2, lw=1.2, ls=":" if flagged else "-",
+            ax.errorbar(SIGMAS, y, yerr=2 * e, marker="o", ms=4, color=palette.sampler_colour(row["sampler"]), capsize=2, lw=1.2, ls=":" if flagged else "-",
                         mfc="none" if flagged else None,
                         label=f"{row['sampler']} ({int(row['spp'])} spp, {row.get('filter_name', row.get('filter'))} "
                               f"r={row['radius']:g}){' (flagged)' if flagged else ''}")
@@ -64,7 +64,7 @@ def blur_curve(df, out_dir):
         ax.set_yscale("log")
         ax.set_xticks(SIGMAS, [f"{s:g}" for s in SIGMAS])
         ax.set_xlabel("Gaussian blur sigma (pixels)")
-        ax.set_ylabel("error left after the blur / error before")
+        ax.set_ylabel("error left after the blur / error before (lower: bluer error)")
         ax.set_title(f"{scene}: the blur curve (below white: blue error)", fontsize=10)
         ax.legend(fontsize=7, loc="lower left")
         ax.grid(True, which="both", alpha=0.3)
