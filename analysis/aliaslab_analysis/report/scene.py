@@ -193,6 +193,10 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ran
                        "error vs time"))
     parts.append(chart("heatmap", "Error over sampler x filter x radius, one panel per spp level; degenerate cells "
                        "(weight sums near zero) hatched and kept out of the colour scale.", "heatmap"))
+    if os.path.isfile(os.path.join(charts_dir, f"blur_curve_{s}.png")):
+        parts.append(chart("blur_curve", "The eye's low-pass: the share of each sampler's error left after a "
+                           "Gaussian blur of sigma 0.5-4 px, beside white noise's curve (sum of the kernel's squared "
+                           "weights); below it the error sits at high screen frequencies (blue).", "blur curve"))
     sheet = os.path.join(images, f"contact-{s}.png")
     if os.path.isfile(sheet):
         caption = "Contact sheet: zoomed crops of the hardest region."
