@@ -231,6 +231,15 @@ def load_study(path):
     return df, notes
 
 
+def require_finite_errors(df, path):
+    """Raises InputError when no row of a loaded study has a finite error (every one NaN, infinite or
+    beyond ABSURD): there is nothing to rank, so a report of findings cannot be made (the charts can:
+    they draw empty panels)."""
+    if not np.isfinite(df["error"].to_numpy(dtype=float)).any():
+        raise InputError(f"{path}: no row has a finite error (every one is NaN, infinite or beyond {ABSURD:g}): "
+                         "nothing to rank, so no report of findings can be made")
+
+
 def describe_target(target):
     """The target as the CSV writes it, with the pixel-area reference named: 'box:0.5 (the pixel area)'."""
     return f"{target} (the pixel-area reference)" if str(target) in ("box:0.5", "area") else str(target)

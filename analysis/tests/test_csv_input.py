@@ -14,6 +14,7 @@ import unittest
 from . import synthetic
 from ..aliaslab_analysis import study_csv
 from ..aliaslab_analysis.charts import cli as charts_cli
+from ..aliaslab_analysis.report import cli as report_cli
 from ..aliaslab_analysis.errors import InputError
 
 
@@ -87,6 +88,17 @@ class CsvInput(unittest.TestCase):
         self.assertTrue(df["mse"].isna().all())
         code, _, err = run(charts_cli.main, [path, "--out", os.path.join(self.tmp.name, "charts")])
         self.assertEqual(code, 0, err)
+        self.assertNotIn("Traceback", err)
+
+    def test_a_report_of_a_study_without_one_finite_error_is_refused_clearly(self):
+        def huge(r):
+            for c in ("mse", "mse_area", "mse_target"):
+                r[c] = 1e305
+        path = synthetic.write(os.path.join(self.tmp.name, "huge.csv"), modify=huge, scenes=["a"])
+        os.makedirs(os.path.join(self.tmp.name, "page"))
+        code, _, err = run(report_cli.main, [os.path.join(self.tmp.name, "page"), "--study", path])
+        self.assertEqual(code, 2, err)
+        self.assertIn("no row has a finite error", err)
         self.assertNotIn("Traceback", err)
 
     def test_nonfinite_samples_is_optional_and_counted(self):

@@ -73,6 +73,7 @@ def isolation_section(results, embed):
 def build_report(results, study, charts_dir=None, images=None, label=None, embed=True, draw=True):
     """Writes RESULTS/index.html (and engineering.html); returns the index path. Raises errors.InputError."""
     df, notes = study_csv.load_study(study)
+    study_csv.require_finite_errors(df, study)  # findings need at least one error to rank
     spec = spectra.load(study)
     charts_dir = charts_dir or os.path.join(results, "charts")
     images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
