@@ -188,10 +188,8 @@ def load_study(path):
     df = read_study_csv(path)
     check_unique(df, path)
     notes = absurd_values(df, path)
-    if "nonfinite_samples" not in df.columns:
+    if "nonfinite_samples" not in df.columns:  # an older sweep: unknown (NaN), like the other added columns
         df["nonfinite_samples"] = np.nan
-        notes.append("This CSV has no nonfinite_samples column (written by an older sweep): whether NaN or "
-                     "infinite samples were left out of its images is unknown.")
     else:
         dropped = df["nonfinite_samples"].fillna(0).to_numpy(dtype=float)
         if (dropped > 0).any():
