@@ -228,15 +228,17 @@ void checkSpectrumFile(const std::string& path, const std::vector<std::string>& 
       throw FileError(path, "lacks the spectra of configuration " + c + ", which its study CSV holds" + kDamaged);
 }
 
-std::set<std::string> completeSpectra(const std::string& path) {
+std::set<std::string> completeSpectra(const std::string& path, std::set<std::string>* present) {
   std::error_code ec;
   std::set<std::string> done;
   if (!std::filesystem::exists(path, ec)) return done;
   requireRegularFile(path, "a spectrum CSV is a regular file");
   const auto blocks = spectrumBlocks(path, readWhole(path));
   const std::string usual = usualBins(blocks);
-  for (const auto& [key, kinds] : blocks)
+  for (const auto& [key, kinds] : blocks) {
+    if (present) present->insert(key);
     if (kinds.size() == 2 && kinds.at("error") == usual && kinds.at("noise") == usual) done.insert(key);
+  }
   return done;
 }
 

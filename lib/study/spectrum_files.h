@@ -55,8 +55,9 @@ std::string spectrumKeyOfCsvRow(const std::vector<std::string>& csvFields);
 void checkSpectrumFile(const std::string& path, const std::vector<std::string>& configurations);
 
 /// The configurations (key fields) whose spectra the spectrum CSV `path` holds whole: both kinds over the bins most
-/// of its configurations have (a torn last line ignored; none when the file is missing). The sweep measures the
-/// others again on resume, so a kill or a full disk during a spectra write costs nothing.
-std::set<std::string> completeSpectra(const std::string& path);
+/// of its configurations have (a torn last line ignored; none when the file is missing); `present`, when given,
+/// receives every configuration with at least one line. The sweep measures the present but not whole ones again on
+/// resume, so a kill or a full disk during a spectra write costs nothing.
+std::set<std::string> completeSpectra(const std::string& path, std::set<std::string>* present = nullptr);
 
 }  // namespace aliaslab

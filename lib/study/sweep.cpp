@@ -131,20 +131,26 @@ void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& 
 // full disk during their write) are measured again; the file is put in canonical order at the end either way.
 void resumeSpectra(SweepRun& run, const std::string& stem) {
   const std::string path = spectrumCsvPath(run.csv, stem);
-  const std::set<std::string> done = completeSpectra(path);
+  std::error_code ec;
+  // No file at all is not a kill's doing (the file is created before the scene's first rows): a CSV copied or
+  // edited without its spectra. Its rows are kept; a merge of it is refused (study/spectrum_files.h).
+  if (!fs::exists(path, ec)) return;
+  // Configurations with some lines but not whole ones: a kill or a full disk in their write. (A configuration with
+  // no line at all and rows in the CSV is not a kill's doing either: the spectra are written before the rows.)
+  std::set<std::string> present;
+  const std::set<std::string> done = completeSpectra(path, &present);
   std::set<std::string> lost;
   for (const std::string& line : run.out->resumedLines()) {
     const auto f = splitCsvLine(line);
     if (f.size() != csvColumns().size() || f[csvColumn("scene")] != stem) continue;
-    if (done.count(spectrumKeyOfCsvRow(f))) continue;
+    if (done.count(spectrumKeyOfCsvRow(f)) || !present.count(spectrumKeyOfCsvRow(f))) continue;
     lost.insert(spectrumKeyOfCsvRow(f));
     run.out->forget(csvKey(f));
   }
   if (!lost.empty())
     std::fprintf(stderr, "note: %s lacks the whole spectra of %zu configuration(s) the CSV holds; measuring them again\n",
                  path.c_str(), lost.size());
-  std::error_code ec;
-  if (fs::exists(path, ec)) run.spectraWritten.insert(path);
+  run.spectraWritten.insert(path);
 }
 
 // One scene (its groups): the rows still missing, the scene built and its references, then each group.
