@@ -30,7 +30,17 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
                     "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
                     # issue 29 (Interface 3): one row per (configuration, target)
                     "target_ref_error", "blur_se", "deterministic", "blurred_mse_own", "lowfreq_error_own",
-                    "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se"]
+                    "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se",
+                    # issue 32: the blur curve (the error left after a Gaussian blur of sigma 0.5, 1, 2, 4 px)
+                    "blur_ratio_0.5", "blur_ratio_0.5_se", "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2",
+                    "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
+                    # issue 31: NaN / infinite samples left out of the images (absent: unknown)
+                    "nonfinite_samples"]
+# Key and count columns, which must be finite; values beyond ABSURD in any other numeric column are
+# beyond what float images can give (their squared differences stay below about 1e77): such a value is
+# treated as unknown (NaN) with a note, so charts and rankings leave it out instead of overflowing.
+FINITE_COLUMNS = ["width", "height", "spp", "radius", "seeds", "ref_spp"]
+ABSURD = 1e30
 TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter",
                 "mse_target_seeds"}
 
@@ -39,8 +49,13 @@ TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction",
 def read_study_csv(path):
     """Reads a sweep CSV, checking its columns and that it has data rows; returns a DataFrame with
     `time_ms` = trace_ms + reconstruct_ms added. Raises InputError."""
-    if not os.path.isfile(path):
+    if os.path.isdir(path):
+        raise InputError(f"{path}: is a folder, not a study CSV")
+    if not os.path.exists(path):
         raise InputError(f"{path}: no such file")
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: not a regular file (a FIFO or device?): a study CSV is read from a file")
+    check_lines(path)
     try:
         df = pd.read_csv(path, dtype=str, keep_default_na=False)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as e:
@@ -55,13 +70,70 @@ def read_study_csv(path):
             continue
         raw = df[c].astype(str).str.strip()
         converted = pd.to_numeric(raw, errors="coerce")
+        empty = raw == ""
+        if empty.any() and c in STUDY_COLUMNS:
+            line = int(empty.to_numpy().nonzero()[0][0]) + 2
+            raise InputError(f"{path}: line {line}: column {c} is empty (a cut or damaged row)")
         bad = converted.isna() & ~raw.str.lower().isin(["nan", "-nan", "+nan", ""])
         if bad.any():
             line = int(bad.to_numpy().nonzero()[0][0]) + 2
             raise InputError(f"{path}: line {line}: column {c}: not a number: {raw[bad].iloc[0]!r}")
         df[c] = converted
+    for c in FINITE_COLUMNS:
+        bad = ~np.isfinite(df[c].to_numpy(dtype=float)) | (df[c].to_numpy(dtype=float) < 0)
+        if bad.any():
+            line = int(bad.nonzero()[0][0]) + 2
+            raise InputError(f"{path}: line {line}: column {c}: {df[c].iloc[line - 2]!r} is not a finite number >= 0")
     df["time_ms"] = df["trace_ms"] + df["reconstruct_ms"]
     return df
+
+
+def check_lines(path):
+    """Raises InputError naming the line when the CSV's last line is cut (no newline at its end, as a
+    killed sweep leaves it) or a row has another number of fields than the header."""
+    import csv
+    import io
+    try:
+        with open(path, newline="", encoding="utf-8") as f:
+            text = f.read()
+    except UnicodeDecodeError as e:
+        raise InputError(f"{path}: not a readable CSV: {e}") from e
+    except OSError as e:
+        raise InputError(f"{path}: cannot read: {e.strerror or e}") from e
+    if not text:
+        raise InputError(f"{path}: is empty (0 bytes)")
+    rows = list(csv.reader(io.StringIO(text)))
+    if not text.endswith("\n"):
+        raise InputError(f"{path}: line {len(rows)}: cut (no newline at the end of the file): the sweep that "
+                         "wrote it was interrupted; rerun it to finish the study")
+    width = len(rows[0])
+    for i, r in enumerate(rows[1:], start=2):
+        if r and len(r) != width:
+            raise InputError(f"{path}: line {i}: has {len(r)} fields, the header {width} (a cut or damaged row)")
+
+
+def absurd_values(df, path):
+    """Sets values beyond ABSURD (or non-finite) in the measured columns to NaN and returns notes that say
+    where; leaves the key and count columns (FINITE_COLUMNS, checked by read_study_csv) alone."""
+    notes = []
+    skip = set(FINITE_COLUMNS) | {"time_ms"}
+    measured = [c for c in df.columns if c not in TEXT_COLUMNS and c not in skip
+                and pd.api.types.is_numeric_dtype(df[c])]
+    found = {}
+    for c in measured:
+        v = df[c].to_numpy(dtype=float)
+        with np.errstate(invalid="ignore"):
+            huge = np.isfinite(v) & (np.abs(v) > ABSURD)
+        if huge.any():
+            found[c] = (int(huge.sum()), int(huge.nonzero()[0][0]) + 2)
+            df.loc[huge, c] = np.nan
+    if found:
+        where = ", ".join(f"{c} ({n}, first on line {line})" for c, (n, line) in found.items())
+        notes.append(f"{path}: values beyond {ABSURD:g} (more than float images can give) are treated as "
+                     f"unknown and left out of rankings and charts: {where}.")
+    if "time_ms" in df.columns:
+        df["time_ms"] = df["trace_ms"] + df["reconstruct_ms"]
+    return notes
 
 
 def config_key(df):
@@ -118,7 +190,15 @@ def load_study(path):
     """
     df = read_study_csv(path)
     check_unique(df, path)
-    notes = []
+    notes = absurd_values(df, path)
+    if "nonfinite_samples" not in df.columns:  # an older sweep: unknown (NaN), like the other added columns
+        df["nonfinite_samples"] = np.nan
+    else:
+        dropped = df["nonfinite_samples"].fillna(0).to_numpy(dtype=float)
+        if (dropped > 0).any():
+            notes.append(f"{int((dropped > 0).sum())} row(s) left NaN or infinite samples out of their images "
+                         f"({int(dropped.sum())} samples in all, column nonfinite_samples): their errors miss "
+                         "that light.")
     df = df.rename(columns=RENAMED)
     if "prefilter" not in df.columns:
         df["prefilter"] = "none"
@@ -150,6 +230,15 @@ def load_study(path):
                      "rankings and charts.")
     study_rows.add_columns(df, notes)
     return df, notes
+
+
+def require_finite_errors(df, path):
+    """Raises InputError when no row of a loaded study has a finite error (every one NaN, infinite or
+    beyond ABSURD): there is nothing to rank, so a report of findings cannot be made (the charts can:
+    they draw empty panels)."""
+    if not np.isfinite(df["error"].to_numpy(dtype=float)).any():
+        raise InputError(f"{path}: no row has a finite error (every one is NaN, infinite or beyond {ABSURD:g}): "
+                         "nothing to rank, so no report of findings can be made")
 
 
 def describe_target(target):

@@ -25,6 +25,7 @@
 #include <sstream>
 #include <string>
 
+#include "core/files.h"
 #include "core/version.h"
 
 namespace aliaslab {
@@ -133,6 +134,8 @@ inline void refuseNonFiniteNumbers(const CLI::App& app) {
 /// a [section]): every line must be blank, a comment (# or ;) or `key = value` with `key` a long option of
 /// `app` (without the dashes; '_' may stand for '-'). Returns "" or "<file>:<line>: <problem>".
 inline std::string checkConfigFile(const CLI::App& app, const std::string& path) {
+  if (const std::string kind = aliaslab::specialFileKind(path); !kind.empty())  // a FIFO would block the reader
+    return path + ": is " + kind + ", not a regular file: a --config file is read from a regular file";
   std::ifstream in(path);
   if (!in) return path + ": cannot open the --config file";
   std::string line;

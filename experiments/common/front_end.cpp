@@ -1,8 +1,11 @@
 #include "front_end.h"
 
+#include <cstdio>
 #include <iostream>
+#include <new>
 
 #include "core/error.h"
+#include "core/files.h"
 
 namespace aliaslab {
 
@@ -29,6 +32,13 @@ int runFrontEnd(const FrontEnd& p, const std::function<int()>& body) {
   } catch (const InputError& e) {
     std::cerr << p.program << ": " << p.message(e) << "\n";
     return p.inputExit;
+  } catch (const std::bad_alloc&) {
+    const MemoryLimit limit = memoryLimit();
+    char figure[200];
+    std::snprintf(figure, sizeof figure, "%.2f GB, %s", limit.bytes / 1e9, limit.source.c_str());
+    std::cerr << p.program << ": out of memory: the run needed more than this process may use (" << figure
+              << "); give a smaller size, fewer samples per pixel or fewer threads\n";
+    return p.failureExit;
   } catch (const std::exception& e) {
     std::cerr << p.program << ": " << p.failurePrefix << p.message(e) << "\n";
     return p.failureExit;

@@ -18,6 +18,7 @@
 #include "common/cli.h"
 #include "common/front_end.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/format.h"
 #include "core/image.h"
 #include "film/visualize.h"
@@ -48,7 +49,15 @@ int main(int argc, char** argv) {
     for (const auto& [opt, path] : {std::pair<std::string, std::string>{"--output", output}, {"--flip-output", flipOutput}})
       if (!path.empty() && !isSupportedImageExtension(path))
         throw OptionError(opt, "'" + path + "': unsupported image extension (use .png, .tga or .exr)");
+    // No output may be an input (nor the other output): writing it would destroy what is compared.
+    if (!output.empty()) refuseOutputOverInput("--output", output, {a, b});
+    if (!flipOutput.empty()) refuseOutputOverInput("--flip-output", flipOutput, {a, b, output});
     const Image A = readImage(a), B = readImage(b);
+    // NaN or infinite pixels have no difference: refused rather than reported as a number (or as identical).
+    for (const auto& [path, image] : {std::pair<const std::string&, const Image&>{a, A}, {b, B}})
+      if (const size_t n = countNonFinitePixels(image))
+        throw FileError(path, std::to_string(n) + " of " + std::to_string(size_t(image.width()) * image.height()) +
+                                  " pixels are NaN or infinite: the difference is undefined");
     if (A.width() != B.width() || A.height() != B.height())
       throw FileError(b, "size " + std::to_string(B.width()) + " x " + std::to_string(B.height()) + " differs from " +
                              a + ": " + std::to_string(A.width()) + " x " + std::to_string(A.height()));

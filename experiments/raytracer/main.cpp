@@ -111,6 +111,12 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
     scene.camera.reset();
   } else if (!o.output.empty() || !o.renderSamples.empty()) {
     RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+    // A filter leaves NaN / infinite samples out of its pixels (which then look finite, often black): refused like
+    // non-finite pixels, so every filter and the unfiltered image give the same answer (docs/integrity.md).
+    if (r.nonFiniteSamples > 0)
+      throw InputError(o.input + ": " + std::to_string(r.nonFiniteSamples) + " of " +
+                       std::to_string(r.samples.samples().size()) + " samples are NaN or infinite (lights or colours "
+                       "whose products exceed float range, about 3.4e38?); no image written");
     refuseNonFinite(o.input, {{o.output.empty() ? o.renderSamples[0] : o.output, r.image}});  // (the samples' colours)
     if (!o.output.empty()) images.emplace_back(o.output, std::move(r.image));
     if (!o.renderSamples.empty()) images.emplace_back(o.renderSamples[0], renderSamplesImage(r, o));

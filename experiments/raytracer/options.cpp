@@ -238,6 +238,7 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
 
   // The scene file must be readable.
   std::error_code ec;
+  requireRegularFile(o.input, "a scene is read from a regular file (-input)");  // a FIFO would block the reader
   if (!fs::is_regular_file(o.input, ec) || ::access(o.input.c_str(), R_OK) != 0)
     throw FileError(o.input, "cannot open the scene file (-input)");
   (void)app;

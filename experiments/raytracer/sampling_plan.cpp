@@ -177,6 +177,8 @@ RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int wi
   const Progress progress = [state](int done, int total) { (*state)(done, total); };
   out.samples = importance ? plan.source->traceImportance(tracer, *plan.filter, width, height, threads, progress)
                            : plan.source->trace(tracer, width, height, threads, progress);
+  for (const FilmSample& s : out.samples.samples())
+    if (!std::isfinite(s.L[0]) || !std::isfinite(s.L[1]) || !std::isfinite(s.L[2])) ++out.nonFiniteSamples;
   if (plan.filter) {
     out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
   } else {

@@ -41,6 +41,7 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o);
 struct RenderedImage {
   Image image;
   SampleBuffer samples;
+  size_t nonFiniteSamples = 0;  ///< samples whose radiance is NaN or infinite (a filter leaves them out)
 };
 
 /// Traces and reconstructs the colour image (deterministic for any thread count).

@@ -17,6 +17,7 @@
 #include "common/cli.h"
 #include "common/front_end.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "filter/filter.h"
 #include "study/config.h"
 #include "study/reference.h"
@@ -63,7 +64,11 @@ int main(int argc, char** argv) {
     if (o.threads < 0) throw OptionError("--threads", "must be >= 0");
     if (filters.empty()) throw OptionError("--filters", "needs at least one filter");
     if (radii.empty()) throw OptionError("--radii", "needs at least one radius");
+    requireRegularFile(scenePath, "a scene is read from a regular file");
     if (!fs::is_regular_file(scenePath)) throw FileError(scenePath, "scene file not found");
+    if (!size.empty() && (size[0] <= 0 || size[1] <= 0))
+      throw OptionError("--size", "expected two positive numbers W H, found " + std::to_string(size[0]) + " " +
+                                      std::to_string(size[1]) + " (leave --size out for the scene's own size)");
     std::vector<FilterSpec> specs{{"box", 0.5}};
     for (const std::string& f : filters)
       for (double r : radii) {
@@ -71,6 +76,17 @@ int main(int argc, char** argv) {
         if (std::find(specs.begin(), specs.end(), FilterSpec{f, r}) == specs.end()) specs.push_back({f, r});
       }
     const auto scene = loadStudyScene(scenePath, size.empty() ? 0 : size[0], size.empty() ? 0 : size[1]);
+    requireMemory(referenceMemoryBytes(scene->width, scene->height, specs.size(), o), "--size",
+                  scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) + " with " +
+                      std::to_string(specs.size()) + " references");
+    // No output may be an input: the images and manifest must not replace the scene file.
+    refuseOutputOverInput("--out", (fs::path(out) / "manifest.json").string(), {scenePath});
+    for (const FilterSpec& s : specs) {
+      char radius[32];
+      std::snprintf(radius, sizeof radius, "%g", s.second);
+      refuseOutputOverInput("--out", (fs::path(out) / (scene->stem + "-" + s.first + "-r" + radius + ".exr")).string(),
+                            {scenePath});
+    }
     std::vector<std::pair<std::string, std::string>> folders{{out, "out"}};
     if (!cache.empty()) folders.emplace_back(cache, "cache");
     requireOutputFolders(folders);

@@ -105,6 +105,9 @@ int main(int argc, char** argv) {
     if (imagesOn && imagesOff) throw OptionError("--images", "give --images or --no-images, not both");
     if (imagesOn || imagesOff) c.images = imagesOn;
     c.progress = !quiet;
+    if (!size.empty() && (size[0] <= 0 || size[1] <= 0))  // (0 0 would silently mean "each scene's own size")
+      throw OptionError("size", "expected two positive numbers W H, found " + std::to_string(size[0]) + " " +
+                                    std::to_string(size[1]) + " (leave --size out for each scene's own size)");
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
     const SweepSummary s = runSweep(c);
@@ -112,6 +115,10 @@ int main(int argc, char** argv) {
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",
                   s.rowsWritten, s.rowsSkipped, s.sampleSetsTraced + s.importanceTraces,
                   static_cast<unsigned long long>(s.primaryRays), s.seconds, csvPath(c).c_str());
+    if (s.nonFiniteSamples > 0)
+      std::fprintf(stderr, "warning: %zu NaN or infinite samples (light or colour beyond float range, about 3.4e38) "
+                   "were left out of this run's images; the CSV's nonfinite_samples column counts them per row\n",
+                   s.nonFiniteSamples);
     if (!c.refsOnly && s.sampleSetsTraced + s.importanceTraces > 0) {  // where the time went (work of this run)
       const SweepPhases& p = s.phases;
       std::printf("thread-seconds: trace %.1f, splat %.1f, resolve %.1f, flip %.1f, metrics and spectra %.1f, "

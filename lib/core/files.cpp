@@ -2,6 +2,8 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -24,22 +26,107 @@ std::string temporaryPathFor(const std::string& path) {
          std::filesystem::path(path).extension().string();
 }
 
+namespace {
+// The first number in `file` (a cgroup limit), or 0 when it is missing, "max" or unreadable.
+double limitInFile(const std::string& file) {
+  std::ifstream in(file);
+  std::string word;
+  if (!(in >> word) || word.empty() || word.find_first_not_of("0123456789") != std::string::npos) return 0;
+  try { return std::stod(word); } catch (const std::exception&) { return 0; }
+}
+
+// This process's cgroup memory limit (v2: memory.max of its group; v1: memory.limit_in_bytes), 0 when none.
+double cgroupLimit() {
+  std::ifstream in("/proc/self/cgroup");
+  double least = 0;
+  auto take = [&](double v) {
+    if (v > 0 && v < 1e18 && (least == 0 || v < least)) least = v;
+  };
+  for (std::string line; std::getline(in, line);) {
+    // "0::/path" (v2) or "N:memory:/path" (v1)
+    const size_t a = line.find(':'), b = a == std::string::npos ? a : line.find(':', a + 1);
+    if (b == std::string::npos) continue;
+    const std::string controllers = line.substr(a + 1, b - a - 1), group = line.substr(b + 1);
+    if (controllers.empty()) {
+      // the group and its ancestors: the least limit applies
+      for (std::filesystem::path g(group);; g = g.parent_path()) {
+        take(limitInFile("/sys/fs/cgroup" + (g.string() == "/" ? std::string() : g.string()) + "/memory.max"));
+        if (g == g.parent_path() || g.empty()) break;
+      }
+    } else if (("," + controllers + ",").find(",memory,") != std::string::npos) {
+      take(limitInFile("/sys/fs/cgroup/memory" + group + "/memory.limit_in_bytes"));
+      take(limitInFile("/sys/fs/cgroup/memory/memory.limit_in_bytes"));
+    }
+  }
+  return least;
+}
+}  // namespace
+
+MemoryLimit memoryLimit() {
+  MemoryLimit m;
+  auto take = [&](double v, const char* source) {
+    if (v > 0 && (m.bytes == 0 || v < m.bytes)) m.bytes = v, m.source = source;
+  };
+  take(static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE)),
+       "physical memory");
+  struct rlimit r{};
+  if (::getrlimit(RLIMIT_AS, &r) == 0 && r.rlim_cur != RLIM_INFINITY)
+    take(static_cast<double>(r.rlim_cur), "the address-space limit (ulimit -v)");
+  take(cgroupLimit(), "the cgroup (container) memory limit");
+  return m;
+}
+
 void requireMemory(double bytes, const std::string& key, const std::string& what) {
-  const double physical = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
-  if (physical > 0 && bytes > physical) {
-    char text[160];
-    std::snprintf(text, sizeof text, "%s needs about %.1f GB of memory, more than this machine has (%.1f GB)",
-                  what.c_str(), bytes / 1e9, physical / 1e9);
+  const MemoryLimit limit = memoryLimit();
+  if (limit.bytes > 0 && bytes > limit.bytes) {
+    char text[320];
+    std::snprintf(text, sizeof text, "%s needs about %.2f GB of memory, more than this process may use (%.2f GB, %s)",
+                  what.c_str(), bytes / 1e9, limit.bytes / 1e9, limit.source.c_str());
     throw OptionError(key, text);
   }
 }
 
+std::string specialFileKind(const std::string& path) {
+  struct stat st{};
+  if (path.empty() || ::stat(path.c_str(), &st) != 0) return "";
+  if (S_ISREG(st.st_mode)) return "";
+  if (S_ISDIR(st.st_mode)) return "a folder";
+  if (S_ISFIFO(st.st_mode)) return "a FIFO (named pipe)";
+  if (S_ISSOCK(st.st_mode)) return "a socket";
+  if (S_ISCHR(st.st_mode) || S_ISBLK(st.st_mode)) return "a device";
+  return "not a regular file";
+}
+
+void requireRegularFile(const std::string& path, const std::string& use) {
+  const std::string kind = specialFileKind(path);
+  if (!kind.empty()) throw FileError(path, "is " + kind + ", not a regular file: " + use);
+}
+
 std::string lastSystemError() { return std::strerror(errno); }
+
+std::string writeFully(int fd, const std::string& text) {
+  for (size_t done = 0; done < text.size();) {
+    errno = 0;
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return lastSystemError();
+    if (n == 0) return "the write made no progress (file system full?)";
+    done += static_cast<size_t>(n);
+  }
+  return "";
+}
 
 OutputTarget outputTarget(const std::string& path) {
   namespace fs = std::filesystem;
   OutputTarget t{path, false};
   std::error_code ec;
+  // A device, FIFO or socket (links followed by the kernel): written through under the name given, which also
+  // works for /dev/stdout when it is a pipe (its link names "pipe:[...]", no path).
+  struct stat info{};
+  if (::stat(path.c_str(), &info) == 0 && !S_ISREG(info.st_mode) && !S_ISDIR(info.st_mode)) {
+    t.special = true;
+    return t;
+  }
   // Follow a chain of links (a bounded number, as the kernel does) to the file a write would reach.
   fs::path p(path);
   for (int hops = 0; hops < 40 && fs::is_symlink(fs::symlink_status(p, ec)); ++hops) {
@@ -99,21 +186,19 @@ size_t removeStaleTemporaries(const std::string& dir) {
 
 void writeTextFile(const std::string& path, const std::string& text) {
   const OutputTarget target = outputTarget(path);
-  // Writes all of `text` to fd; false with errno set on failure.
+  std::string why;
+  // Writes all of `text` to fd; false with `why` set on failure.
   auto writeAllTo = [&](int fd) {
-    for (size_t done = 0; done < text.size();) {
-      const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) return false;
-      done += static_cast<size_t>(n);
-    }
-    return true;
+    why = writeFully(fd, text);
+    return why.empty();
   };
   if (target.special) {  // a device or FIFO: write through, no temporary
-    const int fd = ::open(target.path.c_str(), O_WRONLY | O_CLOEXEC);
+    // O_NONBLOCK: a FIFO nobody reads fails at once (ENXIO) instead of blocking; then writes block as usual.
+    const int fd = ::open(target.path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0 && errno == ENXIO) throw FileError(path, "cannot open for writing: no process reads this FIFO");
     if (fd < 0) throw FileError(path, "cannot open for writing: " + lastSystemError());
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
     const bool ok = writeAllTo(fd);
-    const std::string why = lastSystemError();
     ::close(fd);
     if (!ok) throw FileError(path, "write failed: " + why);
     return;
@@ -122,8 +207,8 @@ void writeTextFile(const std::string& path, const std::string& text) {
   std::error_code ec;
   const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw FileError(path, "cannot open for writing: " + lastSystemError());
-  bool ok = writeAllTo(fd) && ::fsync(fd) == 0;
-  std::string why = ok ? "" : lastSystemError();
+  bool ok = writeAllTo(fd);
+  if (ok && ::fsync(fd) != 0) ok = false, why = lastSystemError();
   if (::close(fd) != 0 && ok) ok = false, why = lastSystemError();
   if (!ok) {
     std::filesystem::remove(tmp, ec);

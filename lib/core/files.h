@@ -40,8 +40,29 @@ void refuseOutputOverInput(const std::string& key, const std::string& output,
 size_t removeStaleTemporaries(const std::string& dir);
 
 /// Fails before allocating: throws OptionError(key) when `bytes` (an estimate of what `what` needs) exceeds
-/// the machine's physical memory, with the figure in the message (instead of std::bad_alloc after a long wait).
+/// the memory this process may use (memoryLimit), with both figures and the limit's source in the message
+/// (instead of std::bad_alloc after a long wait).
 void requireMemory(double bytes, const std::string& key, const std::string& what);
+
+/// The memory this process may use: the least of physical memory, the address-space limit (RLIMIT_AS) and the
+/// cgroup's limit (v2 memory.max, v1 memory.limit_in_bytes), in bytes, and which of them it is.
+struct MemoryLimit {
+  double bytes = 0;    ///< 0 when nothing is known
+  std::string source;  ///< "physical memory", "the address-space limit (ulimit -v)", "the cgroup memory limit"
+};
+MemoryLimit memoryLimit();
+
+/// What `path` is when it exists and is not a regular file: "a folder", "a FIFO", "a device", "a socket";
+/// "" for a regular file (links followed) or a missing path. Never opens the file (a FIFO would block).
+std::string specialFileKind(const std::string& path);
+
+/// Throws FileError(path, "is a FIFO, not a regular file: <use>") when `path` exists and is not a regular file
+/// (specialFileKind), before anything opens it. `use` says what the file was wanted for.
+void requireRegularFile(const std::string& path, const std::string& use);
+
+/// Writes all of `text` to `fd` (retrying short writes and EINTR); "" on success, else the system's reason
+/// ("No space left on device"; never a stale errno: a write that makes no progress says so).
+std::string writeFully(int fd, const std::string& text);
 
 /// "<strerror(errno)>", e.g. "No space left on device", for messages after a failed system call.
 std::string lastSystemError();

@@ -71,6 +71,8 @@ void writeImage(const std::string& path, const Image& image) {
   const OutputTarget where = outputTarget(path);
   if (where.special)
     throw FileError(path, "not a regular file (a device, FIFO or socket): images are written to regular files only");
+  if (const std::string kind = specialFileKind(where.path); kind == "a folder")
+    throw FileError(path, "is a folder: an image cannot replace it");
   const std::filesystem::path target(where.path);
   const std::filesystem::path tmp = temporaryPathFor(where.path);
   auto out = OIIO::ImageOutput::create(path);
@@ -89,12 +91,14 @@ void writeImage(const std::string& path, const Image& image) {
   }
   std::filesystem::rename(tmp, target, ec);
   if (ec) {
+    const std::string why = ec.message();  // (before remove() reuses ec)
     std::filesystem::remove(tmp, ec);
-    throw FileError(path, "cannot move the finished image into place: " + ec.message());
+    throw FileError(path, "cannot move the finished image into place: " + why);
   }
 }
 
 Image readImage(const std::string& path) {
+  requireRegularFile(path, "an image is read from a regular file");  // a FIFO would block the reader
   auto in = OIIO::ImageInput::open(path);
   if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();

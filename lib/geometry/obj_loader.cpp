@@ -13,6 +13,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "geometry/primitives.h"
 
 namespace aliaslab {
@@ -74,6 +75,7 @@ std::vector<std::string_view> splitTokens(std::string_view s) {
 }  // namespace
 
 std::unique_ptr<Group> loadObj(const std::string& path, const Material* material) {
+  requireRegularFile(path, "an OBJ file is read from a regular file");  // (a FIFO would block the reader)
   std::ifstream in(path);
   if (!in) throw FileError(path, "cannot open OBJ file");
 

@@ -21,6 +21,12 @@ void dft2(const Image& image, const Image* subtract, int c, std::vector<Complex>
   constexpr int kColumns = 8;
   const int w = image.width(), h = image.height();
   thread_local Eigen::FFT<double> fft;  // keeps its plans (twiddles) per length between calls
+  // A 1-point DFT is the identity (Eigen's FFT has no plan for length 1 and crashes): an image 1 pixel wide or
+  // high transforms along its other side only.
+  const auto fwd = [&](Complex* to, const Complex* from, int n) {
+    if (n == 1) to[0] = from[0];
+    else fft.fwd(to, from, n);
+  };
   thread_local std::vector<Complex> line, block, blockOut;
   out.resize(static_cast<size_t>(w) * h);
   line.resize(w), block.resize(static_cast<size_t>(kColumns) * h), blockOut.resize(static_cast<size_t>(kColumns) * h);
@@ -31,13 +37,13 @@ void dft2(const Image& image, const Image* subtract, int c, std::vector<Complex>
       const size_t i = 3 * (static_cast<size_t>(y) * w + x) + c;
       line[x] = Complex(static_cast<double>(a[i]) - (b ? static_cast<double>(b[i]) : 0.0), 0.0);
     }
-    fft.fwd(out.data() + static_cast<size_t>(y) * w, line.data(), w);
+    fwd(out.data() + static_cast<size_t>(y) * w, line.data(), w);
   }
   for (int u0 = 0; u0 < w; u0 += kColumns) {
     const int m = std::min(kColumns, w - u0);
     for (int y = 0; y < h; ++y)
       for (int k = 0; k < m; ++k) block[static_cast<size_t>(k) * h + y] = out[static_cast<size_t>(y) * w + u0 + k];
-    for (int k = 0; k < m; ++k) fft.fwd(blockOut.data() + static_cast<size_t>(k) * h, block.data() + static_cast<size_t>(k) * h, h);
+    for (int k = 0; k < m; ++k) fwd(blockOut.data() + static_cast<size_t>(k) * h, block.data() + static_cast<size_t>(k) * h, h);
     for (int v = 0; v < h; ++v)
       for (int k = 0; k < m; ++k) out[static_cast<size_t>(v) * w + u0 + k] = blockOut[static_cast<size_t>(k) * h + v];
   }

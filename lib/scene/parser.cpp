@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "scene/parser_fields.h"
 #include "scene/parser_impl.h"
 #include "scene/scene.h"
@@ -148,6 +149,7 @@ Scene parseSceneText(const std::string& text, const std::string& name, const std
 }
 
 Scene parseScene(const std::string& path) {
+  requireRegularFile(path, "a scene is read from a regular file");  // (a FIFO would block the reader)
   std::ifstream in(path, std::ios::binary);
   if (!in || std::filesystem::is_directory(path)) throw FileError(path, "cannot open the scene file");
   std::ostringstream text;

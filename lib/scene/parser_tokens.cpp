@@ -19,7 +19,9 @@ TokenStream::TokenStream(const std::string& text, std::string file) : file_(std:
     word.clear();
   };
   bool comment = false;
-  for (char ch : text) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    // Line breaks: "\n", "\r\n" and a lone "\r" (old Mac files), so a CR-only file is not one long comment.
+    const char ch = text[i] == '\r' && (i + 1 == text.size() || text[i + 1] != '\n') ? '\n' : text[i];
     if (ch == '\n') {
       flush();
       comment = false;

@@ -42,6 +42,7 @@ std::vector<std::string> expandSceneList(const std::vector<std::string>& scenes)
   std::vector<std::string> out;
   for (const std::string& s : scenes) {
     std::error_code ec;
+    if (s.empty()) throw OptionError("scenes", "an empty name in the list: give scene files or folders");
     if (fs::is_directory(s, ec)) {
       std::vector<std::string> found;
       for (const auto& e : fs::directory_iterator(s, ec))

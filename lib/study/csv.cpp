@@ -29,7 +29,8 @@ const std::vector<std::string>& csvColumns() {
       "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
       "prefilter", "flip", "target_ref_error", "blur_se", "deterministic", "mse_target_seeds", "blurred_mse_own",
       "lowfreq_error_own", "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se", "blur_ratio_0.5", "blur_ratio_0.5_se",
-      "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2", "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se"};
+      "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2", "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
+      "nonfinite_samples"};
   return cols;
 }
 
@@ -102,6 +103,7 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.lowfreqErrorOwn) << ',' << real(r.lowfreqErrorOwnSe) << ',' << real(r.cpuMs)
     << ',' << real(r.cpuMsSe);
   for (size_t k = 0; k < r.blurRatio.size(); ++k) s << ',' << real(r.blurRatio[k]) << ',' << real(r.blurRatioSe[k]);
+  s << ',' << r.nonFiniteSamples;
   return s.str();
 }
 
@@ -191,7 +193,8 @@ void canonicaliseCsv(const std::string& path) { writeCsvFile(path, sortCsvRows(r
 
 CsvAppender::CsvAppender(const std::string& path) : path_(path) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a CSV file");
+  requireRegularFile(path, "a study CSV is a regular file (it is read, resumed and appended to); give another "
+                           "{csv} or {out}");
   bool exists = fs::exists(path, ec) && fs::file_size(path, ec) > 0;
   if (exists) {
     // Check that this is a study CSV before changing anything: a file that is not one is never modified.
@@ -202,6 +205,13 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
     const std::string header = csvHeader() + '\n';
     const bool studyHeader = first == std::string::npos ? header.compare(0, text.size(), text) == 0
                                                         : text.compare(0, first, csvHeader()) == 0;
+    const std::string firstLine = text.substr(0, first);
+    if (!studyHeader && csvHeader().compare(0, firstLine.size() + 1, firstLine + ",") == 0)
+      throw FileError(path, "written by an older sweep (its header lacks the column(s) after '" +
+                                firstLine.substr(firstLine.rfind(',') + 1) + "': " +
+                                csvHeader().substr(firstLine.size() + 1) +
+                                "); it cannot be resumed by this sweep and is left unchanged: give another {csv} or "
+                                "{out} for a new study");
     if (!studyHeader)
       throw FileError(path, "not a study CSV (its first line is not the study header); left unchanged: give "
                             "another {csv} or {out}");
@@ -231,8 +241,7 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
   if (fd_ < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());
   if (!exists) {
     const std::string h = csvHeader() + '\n';
-    if (::write(fd_, h.data(), h.size()) != static_cast<ssize_t>(h.size()))
-      throw FileError(path, "write failed: " + lastSystemError());
+    if (const std::string why = writeFully(fd_, h); !why.empty()) throw FileError(path, "write failed: " + why);
   }
 }
 
@@ -245,8 +254,7 @@ void CsvAppender::append(const CsvRow& row) { append(std::vector<CsvRow>{row}); 
 void CsvAppender::append(const std::vector<CsvRow>& rows) {
   std::string lines;
   for (const CsvRow& row : rows) lines += formatCsvRow(row) + '\n';
-  if (::write(fd_, lines.data(), lines.size()) != static_cast<ssize_t>(lines.size()))
-    throw FileError(path_, "write failed: " + lastSystemError());
+  if (const std::string why = writeFully(fd_, lines); !why.empty()) throw FileError(path_, "write failed: " + why);
   ::fdatasync(fd_);
   for (const CsvRow& row : rows) keys_.insert(csvKey(row));
 }

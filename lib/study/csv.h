@@ -11,7 +11,7 @@
 //   target_ref_error,blur_se,deterministic,mse_target_seeds,
 //   blurred_mse_own,lowfreq_error_own,lowfreq_error_own_se,cpu_ms,cpu_ms_se,
 //   blur_ratio_0.5,blur_ratio_0.5_se,blur_ratio_1,blur_ratio_1_se,blur_ratio_2,blur_ratio_2_se,
-//   blur_ratio_4,blur_ratio_4_se
+//   blur_ratio_4,blur_ratio_4_se,nonfinite_samples
 // Against the configuration's own reference G (the same on every target row of a configuration): mse, aliasing,
 // noise, psnr, ref_error (mean Var G), their *_se; mse_area against the pixel-area reference; blurred_mse_own,
 // lowfreq_error_own(_se). Against the row's target T: mse_target, blur, cross, their *_se, target_ref_error
@@ -30,6 +30,9 @@
 // its own reconstruction (its share of the shared splat pass), inner threads included, mean over the seeds;
 // cpu_ms_se: their sd over the seeds / sqrt K. Unlike the wall times trace_ms and reconstruct_ms, a competing
 // load does not inflate it; core/stopwatch.h CpuStopwatch.)
+// nonfinite_samples: samples of the K images whose radiance was NaN or infinite and were left out of them (a light
+// or colour beyond float range); 0 in a sound study, docs/integrity.md. An older CSV without the column cannot
+// be resumed (CsvAppender names the missing columns); the analysis reads it as unknown.
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
@@ -81,6 +84,7 @@ struct CsvRow {
   double blurredMseOwn = 0, lowfreqErrorOwn = 0, lowfreqErrorOwnSe = 0;  ///< against the own reference G
   double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
   std::array<double, 4> blurRatio{}, blurRatioSe{};  ///< the blur curve at sigma 0.5, 1, 2, 4 (measure/spectrum.h)
+  long long nonFiniteSamples = 0;  ///< NaN / infinite samples left out of the K images (summed over seeds)
 };
 
 /// The header line (no newline).
@@ -113,6 +117,9 @@ class CsvAppender {
   CsvAppender& operator=(const CsvAppender&) = delete;
 
   bool has(const std::string& key) const { return keys_.count(key) > 0; }
+  /// Treats the row `key` as missing (it is measured and appended again; canonical order keeps one copy): the
+  /// sweep's resume for a configuration whose spectra were lost (study/spectrum_files.h completeSpectra).
+  void forget(const std::string& key) { keys_.erase(key); }
   /// The rows the file held when it was opened.
   const std::vector<std::string>& resumedLines() const { return lines_; }
   /// Writes the row with one write() and fsync. Throws FileError.

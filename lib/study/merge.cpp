@@ -52,6 +52,7 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows)
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a shard CSV");
   if (!fs::exists(path, ec)) throw FileError(path, "no such shard CSV");
+  requireRegularFile(path, "a shard CSV is read from a regular file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, "cannot open for reading");
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -68,6 +69,10 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows)
     const std::string line = text.substr(start, nl - start);
     start = nl + 1;
     if (lineNo == 1) {
+      if (line != csvHeader() && csvHeader().compare(0, line.size() + 1, line + ",") == 0)
+        throw ParseError(path, 1, "written by an older sweep (its header lacks the column(s) " +
+                                      csvHeader().substr(line.size() + 1) +
+                                      "); shards of one study are made by one sweep: rerun this shard");
       if (line != csvHeader()) throw ParseError(path, 1, "not a study CSV (unexpected header)");
       continue;
     }
@@ -94,7 +99,8 @@ std::string measuredValues(const std::vector<std::string>& f) {
 }
 }  // namespace
 
-void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs) {
+void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs,
+                   const std::function<void()>& beforeWrite) {
   static const size_t kScene = csvColumn("scene"), kSampler = csvColumn("sampler"), kSpp = csvColumn("spp"),
                       kFilter = csvColumn("filter"), kRadius = csvColumn("radius"), kRecon = csvColumn("reconstruction"),
                       kTarget = csvColumn("target");
@@ -156,13 +162,14 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
                                                         : severalGroups ? "the study has more groups than shards"
                                                                         : "a higher-numbered shard has rows") +
                                 ", so every shard must have rows: this shard was emptied or never ran; rerun it");
+  if (beforeWrite) beforeWrite();
   writeCsvFile(out, sortCsvRows(std::move(all)));
 }
 
 void mergeStudy(const std::string& out, const std::vector<std::string>& inputs, const std::string& command) {
   checkShardSet(inputs);
   const CsvLock lock(out, command);
-  mergeCsvFiles(out, inputs);
+  mergeCsvFiles(out, inputs, [&] { checkShardSpectra(inputs); });  // every shard whole before anything is written
   mergeSpectrumFiles(out, inputs);  // the shards' spectra (spectra/<scene>.<shard>.csv) into the merged CSV's
   // Contact sheets of the whole study when the shards wrote images beside it.
   const fs::path images = fs::path(out).parent_path() / "images";

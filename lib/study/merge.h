@@ -9,6 +9,7 @@
 // Errors: OptionError keyed "merge" for the set of inputs, FileError and
 // ParseError for the files themselves.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,10 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows 
 /// threads aside) are an error naming both files and lines; `out` equal to an input is refused. A header-only
 /// shard (study.shard-i-of-N.csv) is accepted only when the study has fewer groups than shards (every shard
 /// with rows holds one group and no higher-numbered shard has rows).
-void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs);
+/// `beforeWrite`, when given, runs after every input is checked and before `out` is written (mergeStudy checks
+/// the shards' spectra there, so a damaged shard leaves nothing written).
+void mergeCsvFiles(const std::string& out, const std::vector<std::string>& inputs,
+                   const std::function<void()>& beforeWrite = {});
 
 /// Merges the shard CSVs `inputs` into `out` (see the top of this file); `command` names the job in the lock
 /// file (e.g. "sweep --merge", shown to a second run that finds the lock held).

@@ -16,6 +16,7 @@
 #include "core/hash.h"
 #include "core/format.h"
 #include "core/progress.h"
+#include "film/film.h"
 #include "filter/filter.h"
 #include "measure/metrics.h"
 #include "render/render.h"
@@ -48,6 +49,14 @@ std::string jsonNumber(double v) { return formatNumber(v, "%.9g"); }
 int effectiveBatch(const ReferenceOptions& o) { return std::min(o.batchSpp, o.spp / 2); }
 
 }  // namespace
+
+double referenceMemoryBytes(int width, int height, size_t specs, const ReferenceOptions& o) {
+  const double pixels = double(width) * height;
+  const double batches = 2.0 * std::max(1, effectiveBatch(o)) * sizeof(FilmSample);  // two halves trace at once
+  const double accumulators = 2.0 * double(specs + 1) * 4 * sizeof(double);
+  const double images = double(specs) * 4 * 3 * sizeof(float);  // mean, half-difference, the two halves
+  return pixels * (batches + accumulators + images);
+}
 
 void validateReferenceOptions(const ReferenceOptions& o) {
   if (o.spp < 2 || o.spp % 2) throw OptionError("ref-spp", "must be an even number >= 2, found " + std::to_string(o.spp));
@@ -122,6 +131,10 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
     ref.stats = ra.stats;
     ref.stats += rb.stats;
     ref.key = referenceKey(scene, ref.describe, o);
+    if (ref.stats.nonFiniteSamples > 0)  // left out of the sums, so the pixels may look finite (often black)
+      throw InputError(scene.path + ": the reference (" + ref.describe + ") met " +
+                       std::to_string(ref.stats.nonFiniteSamples) + " NaN or infinite samples (lights or colours "
+                       "whose products exceed float range, about 3.4e38?); nothing can be measured against it");
     if (const size_t bad = countNonFinitePixels(ref.image))
       throw InputError(scene.path + ": the reference (" + ref.describe + ") has " + std::to_string(bad) +
                        " NaN or infinite pixels (lights or colours whose products exceed float range, about "

@@ -84,6 +84,11 @@ struct ReferenceSet {
 /// precondition (cachedReferences through it, when anything is missing).
 void validateReferenceOptions(const ReferenceOptions& options);
 
+/// An estimate of the bytes one reference pass over `specs` filters needs at width x height (two batches of samples
+/// in flight, the two halves' accumulators, and per reference its mean, half-difference and halves' images), for
+/// requireMemory (core/files.h) before any allocation.
+double referenceMemoryBytes(int width, int height, size_t specs, const ReferenceOptions& options);
+
 /// The cache key of one reference.
 std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& options);
 

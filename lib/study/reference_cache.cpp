@@ -40,6 +40,14 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
   set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
   set.images.resize(specs.size());
 
+  // A folder, FIFO or device where an entry's file should be is refused before anything reads or renders (a FIFO
+  // would block the reader; a folder cannot be replaced).
+  for (const FilterSpec& spec : specs) {
+    const std::string key = referenceKey(scene, makeFilter(spec.first, static_cast<float>(spec.second))->describe(), o);
+    for (const char* ext : {".exr", ".diff.exr", ".json"})
+      requireRegularFile((fs::path(cacheDir) / (key + ext)).string(),
+                         "the reference cache keeps an entry there; remove it or give another cache folder");
+  }
   // Load what the cache holds: one task per entry (each reads two files and writes only its own slot).
   std::vector<char> cached(specs.size(), 0);
   parallelFor(int(specs.size()), o.threads, [&](int i) {

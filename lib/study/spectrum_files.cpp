@@ -9,11 +9,13 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
+#include "study/csv.h"
 
 namespace aliaslab {
 
@@ -27,6 +29,7 @@ std::string real(double v) { return formatNumber(v, "%.9g"); }
 
 /// Complete lines of a spectrum CSV (header checked; a torn last line dropped).
 std::vector<std::string> readSpectrumLines(const std::string& path, bool& any) {
+  requireRegularFile(path, "a spectrum CSV is a regular file");
   std::ifstream in(path, std::ios::binary);
   std::ostringstream ss;
   if (in) ss << in.rdbuf();
@@ -76,11 +79,12 @@ void appendSpectrumCsv(const std::string& path,
           out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + real(RadialSpectrum::frequency(b)) + ',' +
                  real(s->power(b)) + ',' + real(s->energy[b]) + '\n';
   }
-  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  if (fd < 0) throw FileError(path, "cannot open for appending");
-  const bool ok = ::write(fd, out.data(), out.size()) == static_cast<ssize_t>(out.size());
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  if (fd < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());
+  std::string why = writeFully(fd, out);
+  if (why.empty() && ::fdatasync(fd) != 0) why = lastSystemError();
   ::close(fd);
-  if (!ok) throw FileError(path, "write failed");
+  if (!why.empty()) throw FileError(path, "write failed: " + why);
 }
 
 void canonicaliseSpectrumCsv(const std::string& path) {
@@ -139,8 +143,122 @@ std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scen
   return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
 }
 
+std::string spectrumKeyOfCsvRow(const std::vector<std::string>& f) {
+  static const size_t cols[] = {csvColumn("scene"),  csvColumn("sampler"),        csvColumn("spp"),
+                                csvColumn("filter"), csvColumn("radius"),         csvColumn("reconstruction"),
+                                csvColumn("prefilter")};
+  std::string key;
+  for (size_t c : cols) key += (key.empty() ? "" : ",") + f[c];
+  return key;
+}
+
+namespace {
+const std::string kDamaged = ": the spectra are damaged or were never finished; rerun the sweep command that made "
+                             "them (it measures the missing spectra again)";
+
+// Per configuration (its key fields), per kind, its bins ("0;1;...;") of the complete lines of `text` (a torn last
+// line ignored). Throws FileError on a line that is not a spectrum line.
+std::map<std::string, std::map<std::string, std::string>> spectrumBlocks(const std::string& path, const std::string& text) {
+  std::map<std::string, std::map<std::string, std::string>> bins;
+  size_t start = 0;
+  int lineNo = 0;
+  for (size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
+    const std::string line = text.substr(start, nl - start);
+    if (++lineNo == 1) {
+      if (line != spectrumCsvHeader()) throw FileError(path, "line 1: not a spectrum CSV (unexpected header)");
+      continue;
+    }
+    if (line.empty()) continue;
+    std::vector<std::string> f;
+    for (size_t a = 0;;) {
+      const size_t comma = line.find(',', a);
+      f.push_back(line.substr(a, comma == std::string::npos ? std::string::npos : comma - a));
+      if (comma == std::string::npos) break;
+      a = comma + 1;
+    }
+    if (f.size() != 12 || (f[7] != "error" && f[7] != "noise"))
+      throw FileError(path, "line " + std::to_string(lineNo) + ": not a spectrum line (" + std::to_string(f.size()) +
+                                " fields, expected 12 with kind error or noise)" + kDamaged);
+    std::string key = f[0];
+    for (int i = 1; i < 7; ++i) key += ',' + f[i];
+    bins[key][f[7]] += f[8] + ';';
+  }
+  return bins;
+}
+
+// The bins most configurations of `blocks` have (every block of a scene has the same: one image size).
+std::string usualBins(const std::map<std::string, std::map<std::string, std::string>>& blocks) {
+  std::map<std::string, int> votes;
+  for (const auto& [key, kinds] : blocks)
+    for (const auto& [kind, b] : kinds) ++votes[b];
+  std::string best;
+  int most = 0;
+  for (const auto& [b, n] : votes)
+    if (n > most) best = b, most = n;
+  return best;
+}
+
+std::string readWhole(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw FileError(path, "cannot open for reading: " + lastSystemError());
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+}  // namespace
+
+void checkSpectrumFile(const std::string& path, const std::vector<std::string>& configurations) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw FileError(path, "missing: its study CSV holds rows of this scene" + kDamaged);
+  requireRegularFile(path, "a spectrum CSV is a regular file");
+  const std::string text = readWhole(path);
+  if (text.empty()) throw FileError(path, "is empty (0 bytes)" + kDamaged);
+  if (text.back() != '\n') throw FileError(path, "cut last line (no newline at the end)" + kDamaged);
+  const auto blocks = spectrumBlocks(path, text);
+  const std::string usual = usualBins(blocks);
+  for (const auto& [key, kinds] : blocks)
+    for (const char* kind : {"error", "noise"}) {
+      const auto it = kinds.find(kind);
+      if (it == kinds.end()) throw FileError(path, "configuration " + key + " has no " + kind + " spectrum" + kDamaged);
+      if (it->second != usual)
+        throw FileError(path, "configuration " + key + " has another set of " + kind +
+                                  " bins than the file's other spectra (a cut or damaged block)" + kDamaged);
+    }
+  for (const std::string& c : configurations)
+    if (!blocks.count(c))
+      throw FileError(path, "lacks the spectra of configuration " + c + ", which its study CSV holds" + kDamaged);
+}
+
+std::set<std::string> completeSpectra(const std::string& path, std::set<std::string>* present) {
+  std::error_code ec;
+  std::set<std::string> done;
+  if (!std::filesystem::exists(path, ec)) return done;
+  requireRegularFile(path, "a spectrum CSV is a regular file");
+  const auto blocks = spectrumBlocks(path, readWhole(path));
+  const std::string usual = usualBins(blocks);
+  for (const auto& [key, kinds] : blocks) {
+    if (present) present->insert(key);
+    if (kinds.size() == 2 && kinds.at("error") == usual && kinds.at("noise") == usual) done.insert(key);
+  }
+  return done;
+}
+
+void checkShardSpectra(const std::vector<std::string>& inputs) {
+  for (const std::string& input : inputs) {
+    std::map<std::string, std::vector<std::string>> configs;  // scene -> configurations of the CSV
+    for (const std::string& l : readCsvLines(input)) {
+      const auto f = splitCsvLine(l);
+      if (f.size() != csvColumns().size()) continue;
+      auto& v = configs[f[csvColumn("scene")]];
+      const std::string key = spectrumKeyOfCsvRow(f);
+      if (v.empty() || v.back() != key) v.push_back(key);
+    }
+    for (const auto& [scene, keys] : configs) checkSpectrumFile(spectrumCsvPath(input, scene), keys);
+  }
+}
+
 std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs) {
   namespace fs = std::filesystem;
+  checkShardSpectra(inputs);  // every shard's spectra whole and complete for its rows, before anything is written
   std::map<std::string, std::vector<std::string>> byScene;  // scene -> lines of every shard
   for (const std::string& input : inputs) {
     const fs::path dir = fs::path(input).parent_path() / "spectra";

@@ -10,6 +10,7 @@
 // file as one uninterrupted run. The files live at spectrumCsvPath; merging
 // shards joins them per scene (mergeSpectrumFiles). Errors are FileError.
 #pragma once
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,8 +36,28 @@ const std::string& spectrumCsvHeader();
 /// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one.
 std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene);
 /// The spectra of the shard CSVs `inputs` (each shard's spectrumCsvPath files) joined per scene into
-/// spectrumCsvPath(out, scene), in canonical order (study/merge.h). Inputs without spectra add nothing.
-/// Returns the files written.
+/// spectrumCsvPath(out, scene), in canonical order (study/merge.h). Each shard's spectra must be complete for
+/// the configurations of its CSV (checkSpectrumFile), or FileError naming the file and what is wrong, before
+/// anything is written. Returns the files written.
 std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::vector<std::string>& inputs);
+
+/// Checks the spectra of every shard CSV of `inputs` (checkSpectrumFile for each scene of its rows). FileError.
+void checkShardSpectra(const std::vector<std::string>& inputs);
+
+/// The spectrum key fields of a configuration as its study CSV row gives them:
+/// "scene,sampler,spp,filter,radius,reconstruction,prefilter" (the first fields of its spectrum lines).
+std::string spectrumKeyOfCsvRow(const std::vector<std::string>& csvFields);
+
+/// Checks that the spectrum CSV `path` is whole and holds every configuration of `configurations` (spectrum key
+/// fields, spectrumKeyOfCsvRow): present, a regular file, not empty, the spectrum header, no cut last line,
+/// 12 fields a line, kind error or noise, and for every configuration both kinds over the same bins as every
+/// other configuration of the file. Throws FileError (with the line where one applies) otherwise.
+void checkSpectrumFile(const std::string& path, const std::vector<std::string>& configurations);
+
+/// The configurations (key fields) whose spectra the spectrum CSV `path` holds whole: both kinds over the bins most
+/// of its configurations have (a torn last line ignored; none when the file is missing); `present`, when given,
+/// receives every configuration with at least one line. The sweep measures the present but not whole ones again on
+/// resume, so a kill or a full disk during a spectra write costs nothing.
+std::set<std::string> completeSpectra(const std::string& path, std::set<std::string>* present = nullptr);
 
 }  // namespace aliaslab

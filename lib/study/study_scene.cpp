@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/files.h"
 #include "core/hash.h"
 
 namespace aliaslab {
@@ -43,8 +44,12 @@ std::string describeTraceOptions(const TraceOptions& o) {
 }
 
 RenderLine readRenderLine(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw FileError(path, "cannot open for reading");
+  requireRegularFile(path, "a scene is read from a regular file");
+  std::string bytes = readFileBytes(path);
+  // Line breaks as the scene parser reads them: "\n", "\r\n" or a lone "\r".
+  for (size_t i = 0; i < bytes.size(); ++i)
+    if (bytes[i] == '\r' && (i + 1 == bytes.size() || bytes[i + 1] != '\n')) bytes[i] = '\n';
+  std::istringstream in(bytes);
   RenderLine r;
   std::string text;
   for (int lineNo = 1; std::getline(in, text); ++lineNo) {

@@ -116,12 +116,41 @@ void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& 
   phases.finish += finish.work, phases.waiting += finish.idle;
   std::vector<std::vector<CsvRow>> csvRows;
   size_t written = 0;
-  for (PendingRow& p : rows) written += p.rows.size(), csvRows.push_back(std::move(p.rows));
+  for (PendingRow& p : rows) {
+    if (!p.rows.empty()) run.sum.nonFiniteSamples += static_cast<size_t>(p.rows.front().nonFiniteSamples);
+    written += p.rows.size(), csvRows.push_back(std::move(p.rows));
+  }
   phases.io += run.writer.submit([&config = run.config, csvRows = std::move(csvRows), spectra = std::move(spectra),
                                   out = run.out.get(), &written = run.spectraWritten] {
     writeRows(config, csvRows, spectra, *out, written);
   });
   run.sum.rowsWritten += written;
+}
+
+// A resumed scene's spectra: configurations whose rows the CSV holds but whose spectra are not whole (a kill or a
+// full disk during their write) are measured again; the file is put in canonical order at the end either way.
+void resumeSpectra(SweepRun& run, const std::string& stem) {
+  const std::string path = spectrumCsvPath(run.csv, stem);
+  std::error_code ec;
+  // No file at all is not a kill's doing (the file is created before the scene's first rows): a CSV copied or
+  // edited without its spectra. Its rows are kept; a merge of it is refused (study/spectrum_files.h).
+  if (!fs::exists(path, ec)) return;
+  // Configurations with some lines but not whole ones: a kill or a full disk in their write. (A configuration with
+  // no line at all and rows in the CSV is not a kill's doing either: the spectra are written before the rows.)
+  std::set<std::string> present;
+  const std::set<std::string> done = completeSpectra(path, &present);
+  std::set<std::string> lost;
+  for (const std::string& line : run.out->resumedLines()) {
+    const auto f = splitCsvLine(line);
+    if (f.size() != csvColumns().size() || f[csvColumn("scene")] != stem) continue;
+    if (done.count(spectrumKeyOfCsvRow(f)) || !present.count(spectrumKeyOfCsvRow(f))) continue;
+    lost.insert(spectrumKeyOfCsvRow(f));
+    run.out->forget(csvKey(f));
+  }
+  if (!lost.empty())
+    std::fprintf(stderr, "note: %s lacks the whole spectra of %zu configuration(s) the CSV holds; measuring them again\n",
+                 path.c_str(), lost.size());
+  run.spectraWritten.insert(path);
 }
 
 // One scene (its groups): the rows still missing, the scene built and its references, then each group.
@@ -137,6 +166,7 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   for (const Target& t : run.plan.targets)
     if (std::find(specs.begin(), specs.end(), t.spec) == specs.end()) specs.push_back(t.spec);
   run.sum.phases.io += run.writer.wait();  // `out`'s keys are read by planRows and added to by the writer
+  if (run.out) resumeSpectra(run, stem);
   auto pending = planRows(config, run.plan.targets, stem, size, groups, run.out.get(), specs, run.sum.rowsSkipped);
   bool any = config.refsOnly;
   for (const auto& p : pending) any = any || !p.empty();

@@ -86,6 +86,7 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
   base.nanPixels = static_cast<long long>(p.stats.nanPixels);
   base.negativePixels = static_cast<long long>(p.stats.negativePixels);
   base.undefinedPixels = static_cast<long long>(p.stats.undefinedPixels);
+  base.nonFiniteSamples = static_cast<long long>(p.stats.nonFiniteSamples);
   base.traceMs = p.traceMs, base.reconstructMs = p.reconMs;
   cpuMeanAndSe(p.cpuMs, base.cpuMs, base.cpuMsSe);
   sm = result.spectrum;

@@ -30,6 +30,7 @@ struct SweepSummary {
   size_t importanceTraces = 0;  ///< traceImportanceSamples calls
   uint64_t primaryRays = 0;     ///< primary rays traced for sample sets (references excluded)
   size_t rowsWritten = 0, rowsSkipped = 0;
+  size_t nonFiniteSamples = 0;  ///< NaN / infinite samples left out of this run's images (CSV nonfinite_samples)
   size_t configurations = 0;    ///< rows this shard is responsible for
   bool images = false;          ///< whether images were written
   double seconds = 0;

@@ -13,6 +13,7 @@
 #include "render/sample_source.h"
 #include "sampling/sampler.h"
 #include "study/csv.h"
+#include "study/spectrum_files.h"
 #include "study/study_scene.h"
 #include "study/sweep_memory.h"
 
@@ -118,9 +119,15 @@ StudyPlan validateStudy(const StudyConfig& c) {
   // per reference: its mean and half-difference images and a pass's 4 sums (the filters, the area and the targets)
   const double references =
       double(studyFilters(c).size() + c.targets.size() + 1) * (6 * sizeof(float) + 4 * sizeof(double));
+  const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
   for (const std::string& path : expandScenePaths(c.scenes)) {
+    requireRegularFile(path, "a scene is read from a regular file");
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     refuseOutputOverInput("csv", csvPath(c), {path});
+    // nor the scene's spectra file or reference manifest (the other files a run writes by scene name)
+    refuseOutputOverInput("csv", spectrumCsvPath(csvPath(c), fs::path(path).stem().string()), {path});
+    refuseOutputOverInput("out", (fs::path(c.out) / "references" / (fs::path(path).stem().string() + ".json")).string(),
+                          {path});
     const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
     // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
     // the references.
@@ -128,12 +135,17 @@ StudyPlan validateStudy(const StudyConfig& c) {
     const double pixels = double(size.width) * size.height;
     requireMemory(double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup, weightedRows,
                                           c.seeds)) +
-                      pixels * references,
+                      std::max(pixels * references,
+                               referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
                   "size",
                   fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
                       std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp");
   }
 
+  // Outputs that must be regular files (a FIFO would block, a folder cannot be appended to): refused up front.
+  if (!c.refsOnly)
+    requireRegularFile(csvPath(c), "a study CSV is a regular file (it is read, resumed and appended to); give "
+                                   "another {csv} or {out}");
   // Output folders: all or none (a failed check removes the folders made before it).
   requireOutputFolders({{c.out, "out"}, {fs::path(csvPath(c)).parent_path().string(), "csv"}, {c.cache, "cache"}});
   return plan;
@@ -171,6 +183,24 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
                                                    std::to_string(i + 1) + "); this run asks for " + wanted[k] +
                                                    sameStudyAdvice());
   }
+  // The targets are study-wide too: every configuration has one row per target, so another list would add a
+  // second set of rows to the same configurations (and change which target is primary).
+  std::vector<std::string> held, asked;
+  for (const Target& t : parseTargets(c.targets)) asked.push_back(t.label);
+  for (const std::string& l : lines) {
+    const auto f = splitCsvLine(l);
+    if (f.size() == csvColumns().size() && std::find(held.begin(), held.end(), field(f, "target")) == held.end())
+      held.push_back(field(f, "target"));
+  }
+  auto sorted = [](std::vector<std::string> v) { return std::sort(v.begin(), v.end()), v; };
+  auto joined = [](const std::vector<std::string>& v) {
+    std::string s;
+    for (const std::string& x : v) s += (s.empty() ? "" : ",") + x;
+    return s;
+  };
+  if (!held.empty() && sorted(held) != sorted(asked))
+    throw OptionError("target", csv + " holds a study made with the targets " + joined(sorted(held)) +
+                                    "; this run asks for " + joined(sorted(asked)) + sameStudyAdvice());
 }
 
 void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,

@@ -19,7 +19,11 @@
 #include "support/run_process.h"
 #include "support/scratch_dir.h"
 #include "core/error.h"
+#include "core/image.h"
 #include "scene/scene.h"
+
+#include <sys/stat.h>
+#include <cmath>
 
 namespace fs = std::filesystem;
 using namespace aliaslab;
@@ -82,6 +86,16 @@ const fs::path& scratch() {
     fs::create_directories(d / "gen");
     std::ofstream(d / "gen" / "deep_groups.txt") << nestedScene(100000, false);
     std::ofstream(d / "gen" / "deep_transforms.txt") << nestedScene(100000, true);
+    // issue 31: images for imgdiff (one with a NaN pixel), FIFOs where regular files are expected
+    aliaslab::Image a(4, 4), b(4, 4);
+    for (int y = 0; y < 4; ++y)
+      for (int x = 0; x < 4; ++x) a.set(x, y, aliaslab::Color::Constant(0.25f * x)), b.set(x, y, aliaslab::Color::Constant(0.5f));
+    aliaslab::writeImage((d / "gen" / "a.exr").string(), a);
+    aliaslab::writeImage((d / "gen" / "b.exr").string(), b);
+    a.set(1, 2, aliaslab::Color(NAN, 0.f, 0.f));
+    aliaslab::writeImage((d / "gen" / "nan.exr").string(), a);
+    for (const char* fifo : {"fifo.txt", "fifo.csv", "fifo.exr"}) ::mkfifo((d / "gen" / fifo).c_str(), 0644);
+    std::ofstream(d / "gen" / "manifest.json") << nestedScene(0, false);  // a scene where reference writes its manifest
     return d;
   }();
   return dir;

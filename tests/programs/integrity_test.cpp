@@ -188,6 +188,18 @@ TEST(Integrity, MergeRefusesEveryDamagedShardNamingFileAndLine) {
   // An empty highest shard of a study with fewer groups than shards is legitimate.
   write("s.shard-0-of-2.csv", csvHeader() + "\n" + good.substr(l2, good.find('\n', l2) - l2 + 1));
   write("s.shard-1-of-2.csv", csvHeader() + "\n");
+  {  // with that row's spectra (a merge checks them: tests/programs/spectra_integrity_test.cpp)
+    const auto g = splitCsvLine(good.substr(l2, good.find('\n', l2) - l2));
+    std::string prefix;
+    for (const char* c : {"scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"})
+      prefix += g[csvColumn(c)] + ',';
+    std::istringstream all(readText((d / "o" / "spectra" / "sphere_triangle.csv").string()));
+    std::string text, l;
+    for (bool header = true; std::getline(all, l); header = false)
+      if (header || l.rfind(prefix, 0) == 0) text += l + '\n';
+    fs::create_directories(d / "spectra");
+    write("spectra/sphere_triangle.s.shard-0-of-2.csv", text);
+  }
   const auto ok = runProcess({kSweep, "--merge", "merged.csv", "s.shard-0-of-2.csv", "s.shard-1-of-2.csv"},
                              d.string(), (d / "logs").string());
   EXPECT_EQ(ok.exitCode, 0) << ok.err;
@@ -288,7 +300,8 @@ TEST(Integrity, ARerunWithOtherStudyOptionsDoesNotAppendASecondStudy) {
   };
   for (const Other& o : others) {
     std::vector<std::string> argv{kSweep, "--scenes", kScene, "--samplers", "random", "--spp", "4", "--filters", "box",
-                                  "--radii", "1", "--cache", "cache", "--quiet", "--no-images", "--out", "o"};
+                                  "--radii", "1", "--cache", "cache", "--quiet", "--no-images", "--out", "o",
+                                  "--target", "area"};
     argv.insert(argv.end(), o.args.begin(), o.args.end());
     if (o.option.find("ref-spp") == std::string::npos) argv.insert(argv.end(), {"--ref-spp", "32"});
     argv.insert(argv.end(), {"--size", "8", "8"});
@@ -300,7 +313,7 @@ TEST(Integrity, ARerunWithOtherStudyOptionsDoesNotAppendASecondStudy) {
   // The size of a scene is part of the study too.
   std::vector<std::string> argv{kSweep, "--scenes", kScene, "--samplers", "random", "--spp", "4", "--filters", "box",
                                 "--radii", "1", "--cache", "cache", "--quiet", "--no-images", "--out", "o",
-                                "--seeds", "3", "--ref-spp", "32", "--size", "6", "6"};
+                                "--seeds", "3", "--ref-spp", "32", "--size", "6", "6", "--target", "area"};
   const auto s = runProcess(argv, d.string(), (d / "logs").string());
   EXPECT_EQ(s.exitCode, 2) << s.err;
   EXPECT_NE(s.err.find("--size: o/study.csv holds scene sphere_triangle at 8 x 8"), std::string::npos) << s.err;

@@ -114,7 +114,7 @@ TEST(FloatRange, NoImageWithNaNOrInfinitePixelsIsWritten) {
     argv.insert(argv.end(), out.begin(), out.end());
     const auto r = runProcess(argv, d.string(), (d / "logs").string());
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_NE(r.err.find("s.txt: 4 of 64 pixels"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("s.txt: 4 of 64 samples"), std::string::npos) << r.err;  // 1 spp: a sample a pixel
     EXPECT_NE(r.err.find("NaN or infinite"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(d / out[1])) << out[1];
   }

@@ -210,6 +210,7 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     """Writes RESULTS/index.html (and engineering.html, and docs/*.html: the definitions rendered); returns the
     index path. Raises errors.InputError."""
     df, notes = study_csv.load_study(study)
+    study_csv.require_finite_errors(df, study)  # findings need at least one error to rank
     charts_dir = charts_dir or os.path.join(results, "charts")
     images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
     s = Study(df, notes)

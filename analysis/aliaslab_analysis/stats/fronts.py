@@ -130,8 +130,11 @@ def summary_points(ranked, summary, target, method):
     agg = r.groupby(key, dropna=False).agg(cost=("cost", "mean"), n=("cost", "size"),
                                           var=("cost_se", lambda x: float(np.sum(np.asarray(x, float) ** 2))))
     agg["cost_se"] = np.sqrt(agg["var"]) / agg["n"]
-    pts = summary[summary["target"].astype(str) == target].merge(agg.reset_index()[key + ["cost", "cost_se"]],
-                                                                 on=key, how="left")
+    pts = summary[summary["target"].astype(str) == target]
+    if not len(pts):  # (no finite error to rank: an empty frame's key columns may not merge with agg's)
+        pts = pts.assign(cost=[], cost_se=[])
+    else:
+        pts = pts.merge(agg.reset_index()[key + ["cost", "cost_se"]], on=key, how="left")
     if not len(pts):
         pts["front"] = []
         return pts

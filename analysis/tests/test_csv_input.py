@@ -1,0 +1,143 @@
+"""The analysis scripts' checks of a study CSV (issue 31; study_csv.read_study_csv / load_study).
+
+A cut last line, a row with another number of fields, an empty required value or a non-finite size
+is refused (exit 2, a message naming the file and line, no traceback); values beyond what float
+images can give (huge but finite errors, which made matplotlib overflow) are noted and left out;
+the nonfinite_samples column is optional (older CSVs: unknown) and a non-zero count is noted.
+"""
+import contextlib
+import io
+import os
+import tempfile
+import unittest
+
+from . import synthetic
+from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.charts import cli as charts_cli
+from ..aliaslab_analysis.report import cli as report_cli
+from ..aliaslab_analysis.errors import InputError
+
+
+def run(main, args):
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(args) or 0
+        except SystemExit as e:
+            code = e.code
+    return code, out.getvalue(), err.getvalue()
+
+
+class CsvInput(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.csv = synthetic.write(os.path.join(self.tmp.name, "s.csv"), scenes=["a"])
+        with open(self.csv, newline="") as f:
+            self.text = f.read()
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def write(self, text, name="bad.csv"):
+        path = os.path.join(self.tmp.name, name)
+        with open(path, "w", newline="") as f:
+            f.write(text)
+        return path
+
+    def refused(self, path, *parts):
+        with self.assertRaises(InputError) as e:
+            study_csv.load_study(path)
+        for p in parts:
+            self.assertIn(p, str(e.exception))
+        code, _, err = run(charts_cli.main, [path, "--out", os.path.join(self.tmp.name, "charts")])
+        self.assertEqual(code, 2, err)
+        self.assertNotIn("Traceback", err)
+        self.assertIn(os.path.basename(path), err)
+
+    def test_a_cut_last_line_is_refused_naming_it(self):
+        lines = self.text.count("\n")
+        path = self.write(self.text[:-30])
+        self.refused(path, f"line {lines}", "cut (no newline at the end")
+
+    def test_a_row_with_fewer_fields_is_refused(self):
+        rows = self.text.split("\r\n")
+        rows[3] = ",".join(rows[3].split(",")[:-4])
+        self.refused(self.write("\r\n".join(rows)), "line 4", "fields")
+
+    def test_an_empty_required_value_is_refused(self):
+        rows = self.text.split("\r\n")
+        f = rows[2].split(",")
+        f[10] = ""  # mse
+        rows[2] = ",".join(f)
+        self.refused(self.write("\r\n".join(rows)), "line 3", "column mse is empty")
+
+    def test_a_non_finite_size_is_refused(self):
+        rows = self.text.split("\r\n")
+        f = rows[1].split(",")
+        f[4] = "inf"  # spp
+        rows[1] = ",".join(f)
+        self.refused(self.write("\r\n".join(rows)), "line 2", "column spp")
+
+    def test_huge_finite_errors_are_noted_and_drawn_without_overflow(self):
+        def huge(r):
+            for c in ("mse", "mse_area", "mse_target", "noise", "aliasing", "mse_se", "mse_target_se", "blur"):
+                r[c] = float(r[c]) * 1e300 if r[c] not in ("", None) else r[c]
+        path = synthetic.write(os.path.join(self.tmp.name, "huge.csv"), modify=huge, scenes=["a"])
+        df, notes = study_csv.load_study(path)
+        self.assertTrue(any("beyond 1e+30" in n and "mse" in n for n in notes), notes)
+        self.assertTrue(df["mse"].isna().all())
+        code, _, err = run(charts_cli.main, [path, "--out", os.path.join(self.tmp.name, "charts")])
+        self.assertEqual(code, 0, err)
+        self.assertNotIn("Traceback", err)
+
+    def test_a_report_of_a_study_without_one_finite_error_is_refused_clearly(self):
+        def huge(r):
+            for c in ("mse", "mse_area", "mse_target"):
+                r[c] = 1e305
+        path = synthetic.write(os.path.join(self.tmp.name, "huge.csv"), modify=huge, scenes=["a"])
+        os.makedirs(os.path.join(self.tmp.name, "page"))
+        code, _, err = run(report_cli.main, [os.path.join(self.tmp.name, "page"), "--study", path])
+        self.assertEqual(code, 2, err)
+        self.assertIn("no row has a finite error", err)
+        self.assertNotIn("Traceback", err)
+
+    def test_nonfinite_samples_is_optional_and_counted(self):
+        df, notes = study_csv.load_study(self.csv)  # the synthetic CSV has no such column: unknown
+        self.assertTrue(df["nonfinite_samples"].isna().all())
+        self.assertFalse(any("nonfinite_samples" in n for n in notes), notes)
+        count = [0]
+
+        def dropped(r):
+            count[0] += 1
+            r["nonfinite_samples"] = 5 if count[0] == 2 else 0
+        path = os.path.join(self.tmp.name, "nf.csv")
+        import csv as csvmod
+        rows = list(csvmod.DictReader(io.StringIO(self.text)))
+        with open(path, "w", newline="") as f:
+            w = csvmod.DictWriter(f, fieldnames=list(rows[0].keys()) + ["nonfinite_samples"])
+            w.writeheader()
+            for r in rows:
+                dropped(r)
+                w.writerow(r)
+        df, notes = study_csv.load_study(path)
+        self.assertEqual(int(df["nonfinite_samples"].sum()), 5)
+        self.assertTrue(any("1 row(s) left NaN or infinite samples" in n for n in notes), notes)
+
+    def test_the_committed_presented_study_still_loads(self):
+        path = os.path.join(os.path.dirname(__file__), "..", "..", "results", "presented", "study.csv")
+        if not os.path.exists(path):
+            self.skipTest("no results/presented/study.csv")
+        df, notes = study_csv.load_study(path)
+        self.assertEqual(len(df), 14040)
+        self.assertTrue(df["nonfinite_samples"].isna().all())  # unknown: the column came later
+
+    def test_a_fifo_is_refused_without_blocking(self):
+        path = os.path.join(self.tmp.name, "fifo.csv")
+        os.mkfifo(path)
+        with self.assertRaises(InputError) as e:
+            study_csv.load_study(path)
+        self.assertIn("not a regular file", str(e.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()
