@@ -13,7 +13,6 @@ packages=(
   libeigen3-dev libopenimageio-dev openimageio-tools libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pandas python3-matplotlib python3-markdown
-  chromium chromium-driver python3-selenium
   parallel clang libclang-rt-14-dev
   munge slurmctld slurmd slurm-client
   chromium chromium-driver python3-selenium python3-openimageio python3-pil
