@@ -180,7 +180,7 @@ def build(results, study, df, plan, work, cache, out):
     """Writes OUT/teaching.html (and its PNGs); returns its path."""
     rows, target = facts.primary_rows(df)
     g = facts.grid_scene(rows)
-    parts = ["<h2 id='teaching'>Why jittered beats a grid, and what filters do: a teaching strand</h2>"
+    parts = ["<h2 id='teaching'>Where a grid aliases, and what filters do: a teaching strand</h2>"
              "<p>Built from this study's own images and numbers; every number below is computed from the CSV.</p>"]
     if g:
         parts.append(grid_part(rows, target, g, study, df, plan, work, cache, out))
