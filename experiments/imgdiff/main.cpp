@@ -52,6 +52,16 @@ int main(int argc, char** argv) {
     // No output may be an input (nor the other output): writing it would destroy what is compared.
     if (!output.empty()) refuseOutputOverInput("--output", output, {a, b});
     if (!flipOutput.empty()) refuseOutputOverInput("--flip-output", flipOutput, {a, b, output});
+    // Fails before reading when the images cannot fit: per pixel, each image's decoded channels and its Image,
+    // the difference images of --output, the FLIP map and FLIP's working planes (about 48 floats a pixel for
+    // both images together, measure/flip.h): an upper estimate, not a measurement.
+    for (const auto& [key, path] : {std::pair<std::string, std::string>{"A", a}, {"B", b}}) {
+      const ImageHeader h = readImageHeader(path);
+      const double perPixel = 2.0 * (h.channels * sizeof(float) + sizeof(Color)) + 3.0 * sizeof(Color) +
+                              49.0 * sizeof(float);
+      requireMemory(double(h.width) * h.height * perPixel, key,
+                    "comparing two " + std::to_string(h.width) + " x " + std::to_string(h.height) + " images");
+    }
     const Image A = readImage(a), B = readImage(b);
     // NaN or infinite pixels have no difference: refused rather than reported as a number (or as identical).
     for (const auto& [path, image] : {std::pair<const std::string&, const Image&>{a, A}, {b, B}})

@@ -97,6 +97,14 @@ void writeImage(const std::string& path, const Image& image) {
   }
 }
 
+ImageHeader readImageHeader(const std::string& path) {
+  requireRegularFile(path, "an image is read from a regular file");
+  auto in = OIIO::ImageInput::open(path);
+  if (!in) throw FileError(path, "cannot read image: " + OIIO::geterror());
+  const OIIO::ImageSpec& spec = in->spec();
+  return {spec.width, spec.height, spec.nchannels};
+}
+
 Image readImage(const std::string& path) {
   requireRegularFile(path, "an image is read from a regular file");  // a FIFO would block the reader
   auto in = OIIO::ImageInput::open(path);

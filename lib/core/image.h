@@ -44,6 +44,13 @@ void writeImage(const std::string& path, const Image& image);
 /// Reads any format OpenImageIO knows (first three channels). Throws FileError.
 Image readImage(const std::string& path);
 
+/// The size and channel count in an image file's header, read without decoding its pixels (to estimate the
+/// memory a program will need before it reads them). Throws FileError.
+struct ImageHeader {
+  int width = 0, height = 0, channels = 0;
+};
+ImageHeader readImageHeader(const std::string& path);
+
 /// Number of pixels with a NaN or infinite channel. Front ends refuse to write such an image silently
 /// (raytracer, the references of sweep and reference): values beyond float range are not a picture.
 size_t countNonFinitePixels(const Image& image);

@@ -3,7 +3,8 @@
 // degenerate sizes work, a --target change and an older CSV are refused on resume, special files in the
 // reference cache are refused without blocking (and a folder there never gives a stale "Success"),
 // overflowing light is refused by the references and counted by the CSV, CR-only scene files are read,
-// and the memory estimates hold against an address-space limit (ulimit -v) in sweep and reference.
+// and the memory estimates hold against an address-space limit (ulimit -v) in sweep, reference, raytracer and
+// imgdiff.
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -169,7 +170,13 @@ TEST(IntegrityLimits, MemoryIsEstimatedAgainstTheAddressSpaceLimit) {
       {"sweep", kBin + "/sweep --scenes " + kScene + " --size 4096 4096 --spp 64 --seeds 2 --samplers random "
                                                      "--filters box --target area --out o --cache c --quiet"},
       {"reference", kBin + "/reference --scene " + kScene + " --size 8192 8192 --spp 64 --filters box --radii 1 --out r"},
-      {"raytracer", kBin + "/raytracer -input " + kScene + " -size 4096 4096 --sampler random --spp 8 -output r.png"}};
+      {"raytracer", kBin + "/raytracer -input " + kScene + " -size 4096 4096 --sampler random --spp 8 -output r.png"},
+      // a PPM whose header says 30000 x 30000 and holds no pixels: imgdiff must refuse from the header alone
+      {"imgdiff", kBin + "/imgdiff big.ppm big.ppm"}};
+  {
+    std::ofstream ppm(d / "big.ppm", std::ios::binary);
+    ppm << "P6\n30000 30000\n255\n";
+  }
   for (const auto& [program, command] : runs) {
     const ProcessResult r = runProcess({"/bin/sh", "-c", limit + command}, d.string(), (d / "logs").string());
     EXPECT_NE(r.exitCode, 0) << program;

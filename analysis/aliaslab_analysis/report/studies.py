@@ -31,6 +31,9 @@ def summary(csv):
         return ""
     if "target" not in df.columns:
         df["target"] = "box:0.5"
+    df = df.dropna(subset=[c for c in COLUMNS if c in df.columns])  # a cut last line: described from the rest
+    if df.empty or any(c not in df.columns for c in COLUMNS):
+        return ""
     side = df[["width", "height"]].max(axis=1)
     f = dict(size=int(side.max()), spp=sorted(int(x) for x in df["spp"].unique()),
              ref_spp=sorted(int(x) for x in df["ref_spp"].unique()))
