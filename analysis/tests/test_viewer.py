@@ -7,16 +7,21 @@ teaching strand's rules on a small synthetic table."""
 import csv
 import json
 import os
+import shutil
 import statistics
+import subprocess
+import tempfile
 import unittest
 
 import numpy as np
 import pandas as pd
 
 from ..aliaslab_analysis.teaching import facts
-from ..aliaslab_analysis.viewer import export, plan, section
+from ..aliaslab_analysis.viewer import export, flip, plan, section
+from ..aliaslab_analysis.viewer.exr import read_exr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")
 VIEWER = os.path.join(REPO, "results", "viewer")
 STUDY = os.path.join(REPO, "results", "presented", "study.csv")
 
@@ -26,7 +31,10 @@ def load_js(path):
         text = f.read()
     head = "ALIASLAB_VIEWER_ADD("
     assert text.startswith(head) and text.rstrip().endswith(");"), path
-    return json.loads(text[len(head):text.rstrip().rindex(")")])
+    d = json.loads(text[len(head):text.rstrip().rindex(")")])
+    for c in d["configs"]:  # the rows as the viewer reads them: arrays in the order of rowColumns
+        c["rows"] = {t: dict(zip(d["rowColumns"], v, strict=True)) for t, v in c["rows"].items()}
+    return d
 
 
 def csv_rows():
@@ -84,9 +92,21 @@ class CommittedViewerData(unittest.TestCase):
                     self.assertAlmostEqual(float(v.max()), e["hi"], places=9)
             self.assertTrue(0 <= d["crop"]["x"] <= d["width"] - n and 0 <= d["crop"]["y"] <= d["height"] - n)
 
+    def test_flip_maps_stored_for_every_configuration(self):
+        for scene, d in self.scenes.items():
+            n = d["crop"]["size"]
+            for c in d["configs"]:
+                self.assertEqual(set(c["flip"]), {d["primary"]}, (scene, c["id"]))
+                e = d["images"][c["flip"][d["primary"]]]
+                self.assertEqual((e["bits"], e["lo"], e["hi"], e["c"]), (8, 0.0, 1.0, 1))
+                v = export.decode(e)
+                self.assertEqual(v.shape, (n, n, 1))
+                self.assertTrue(0.0 <= v.min() and v.max() <= 1.0)
+
     def test_size_budget(self):
-        total = sum(v["bytes"] for v in self.index["scenes"].values())
-        self.assertLess(total, 3_000_000, "the viewer data should stay well under the page's 5 MB budget")
+        total = sum(os.path.getsize(os.path.join(VIEWER, f)) for f in os.listdir(VIEWER))
+        self.assertLess(total, 1_600_000, "the viewer data (with the teaching strand) within its share of the "
+                        "page's 5 MB budget")
 
 
 class Encoding(unittest.TestCase):
@@ -98,6 +118,33 @@ class Encoding(unittest.TestCase):
                 e = export.png_entry(a, bits)
                 step = (a.max() - a.min()) / ((1 << bits) - 1)
                 self.assertLessEqual(float(np.abs(export.decode(e) - a).max()), step / 2 + 1e-12, (bits, c))
+
+    def test_fixed_scale_clips_and_states_it(self):
+        a = np.array([[-0.1, 0.0, 0.5, 1.2]]).reshape(1, 4, 1)
+        e = export.png_entry(a, 8, (0.0, 1.0))
+        self.assertEqual((e["lo"], e["hi"]), (0.0, 1.0))
+        self.assertEqual(export.decode(e).ravel().tolist(), [0.0, 0.0, 128 / 255, 1.0])
+
+    @unittest.skipUnless(os.access(IMGDIFF, os.X_OK) and shutil.which("oiiotool"), "needs build/bin/imgdiff, oiiotool")
+    def test_flip_map_decoded_equals_imgdiffs_within_the_step(self):
+        """The exported FLIP map (flip.flip_maps, the viewer's 8-bit entry, decoded) against imgdiff's own map read
+        from its EXR, on a 40 x 24 image (narrower than imgdiff's 200-pixel colour bar); the map's mean equals the
+        flip imgdiff prints."""
+        with tempfile.TemporaryDirectory() as tmp:
+            a, b, m = (os.path.join(tmp, x) for x in ("a.exr", "b.exr", "m.exr"))
+            subprocess.run(["oiiotool", "--pattern", "checker:width=4:height=4", "40x24", "3", "-d", "float", "-o", a],
+                           check=True)
+            subprocess.run(["oiiotool", "--pattern", "noise:type=uniform:min=0.2:max=0.8", "40x24", "3", "-d", "float",
+                            "-o", b], check=True)
+            run = subprocess.run([IMGDIFF, a, b, "--flip-output", m], check=True, capture_output=True, text=True)
+            printed = float(next(x.split()[1] for x in run.stdout.splitlines() if x.startswith("flip ")))
+            truth = read_exr(m)[:24, :40, 0]
+            mine = flip.flip_maps(IMGDIFF, [(a, b, os.path.join(tmp, "a.flip.exr"))], (40, 24))[0]
+            self.assertEqual(mine.shape, (24, 40))
+            self.assertAlmostEqual(float(mine.mean()), printed, places=5)
+            self.assertGreater(float(truth.max() - truth.min()), 0.1)  # not a constant map
+            v = export.decode(export.png_entry(mine[..., None], 8, (0.0, 1.0)))[..., 0]
+            self.assertLessEqual(float(np.abs(v - truth).max()), 0.5 / 255 + 1e-7)
 
     def test_channels(self):
         grey = np.repeat(np.arange(12.0).reshape(3, 4, 1), 3, axis=2)

@@ -10,7 +10,10 @@ chromium-driver, loads a page generated for a small study from file:// and check
   - every number beside an image equals its CSV row's value (the CSV read here with the csv module) to the
     three significant digits shown;
   - every link and script of the page resolves (anchors to an element of the page, files to a file);
-and writes a screenshot at 1366 px wide to ARTIFACTS/viewer_1366.png.
+  - the key 5 switches to the FLIP map: the picture changes, the colour bar is the FLIP ramp (coloured, not grey)
+    labelled FLIP 0..1, and the FLIP readout of a pixel equals imgdiff's map (the EXR kept in the work folder)
+    within half the 8-bit step;
+and writes screenshots at 1366 px wide to ARTIFACTS/viewer_1366.png and viewer_flip_1366.png.
 
   test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
 Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or python3-selenium is missing."""
@@ -177,6 +180,40 @@ def main():
         d.execute_script("document.getElementById('viewer').scrollIntoView()")
         time.sleep(0.3)
         shot = os.path.join(ARGS.artifacts, "viewer_1366.png")
+        d.save_screenshot(shot)
+        print(f"screenshot: {shot}")
+
+        # the FLIP map mode: key 5
+        before_pic = d.execute_script(main_canvas)
+        d.find_element("css selector", "#alv .alv-status").click()
+        ActionChains(d).send_keys("5").perform()
+        time.sleep(1.0)
+        check(d.execute_script("return window.ALIASLAB_VIEWER.state.mode") == "flip", "the key 5 shows the FLIP map")
+        check(d.execute_script(main_canvas) != before_pic, "the displayed picture changes to the FLIP map")
+        label = d.find_element("css selector", "#alv .alv-bar-label").text
+        bar = d.execute_script("const c = document.querySelector('#alv .alv-bar').getContext('2d');"
+                               "return [...c.getImageData(192, 6, 1, 1).data].slice(0, 3)")
+        check("FLIP" in label and "0" in label and "1" in label and len(set(bar)) > 1,
+              f"the FLIP colour bar is shown, coloured {bar}, labelled '{label[:60]}...'")
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        shown_flip = span.get_attribute("data-flip")
+        cfg = d.execute_script(state).split("|")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        maps = glob.glob(os.path.join(work, "*", f"{cfg[0]}-spp{cfg[1]}-{cfg[2]}-r{cfg[3]}-seed0.flip-"
+                                      f"{target.replace(':', '-')}.exr"))
+        check(shown_flip is not None and len(maps) == 1, f"a FLIP readout ({shown_flip}) and imgdiff's map {maps}")
+        if shown_flip is not None and maps:
+            truth = float(read_image(maps[0])[y, x, 0])
+            check(abs(float(shown_flip) - truth) <= 0.5 / 255 + 1e-6,
+                  f"FLIP readout at ({x}, {y}) {float(shown_flip):.5f} equals imgdiff's map {truth:.5f} within half "
+                  f"the 8-bit step")
+        check(not [e for e in d.get_log("browser") if e.get("level") == "SEVERE"], "no console errors in FLIP mode")
+        d.execute_script("document.getElementById('viewer').scrollIntoView()")
+        time.sleep(0.3)
+        shot = os.path.join(ARGS.artifacts, "viewer_flip_1366.png")
         d.save_screenshot(shot)
         print(f"screenshot: {shot}")
     finally:

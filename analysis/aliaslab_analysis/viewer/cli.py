@@ -2,10 +2,11 @@
 folder and exports the viewer's data beside the page (export.py).
 
   /usr/bin/python3 -m analysis viewer results --study results/presented/study.csv \\
-      --raytracer build/bin/raytracer [--work results/cache/viewer] [--jobs 2]
+      --raytracer build/bin/raytracer [--imgdiff build/bin/imgdiff] [--work results/cache/viewer] [--jobs 2]
 
 writes RESULTS/viewer/<scene>.js (one per scene, loaded by the page when that scene is opened) and
-RESULTS/viewer/index.json (what was chosen and how); `report` then shows the viewer when RESULTS/viewer exists."""
+RESULTS/viewer/index.json (what was chosen and how); the FLIP maps (imgdiff) are kept in the work folder too;
+`report` then shows the viewer when RESULTS/viewer exists."""
 import argparse
 import json
 import os
@@ -13,6 +14,7 @@ import os
 from .. import errors, figures, study_csv
 from ..teaching import build as teaching
 from . import export, render
+from .flip import imgdiff_beside
 from .plan import Plan
 
 
@@ -29,13 +31,14 @@ def main(argv=None, prog=None):
     ap.add_argument("results", help="folder of the page; the data goes to RESULTS/viewer")
     ap.add_argument("--study", required=True, help="study CSV (its references/ manifests beside it)")
     ap.add_argument("--raytracer", default="build/bin/raytracer", help="the raytracer program (default %(default)s)")
+    ap.add_argument("--imgdiff", help="the imgdiff program computing the FLIP maps (default: beside --raytracer)")
     ap.add_argument("--cache", help="reference cache folder holding the manifests' keys (default: the manifests' "
                     "own paths)")
     ap.add_argument("--work", default=os.path.join("results", "cache", "viewer"),
                     help="folder of the rendered EXR images, kept between runs (default %(default)s)")
     ap.add_argument("--jobs", type=int, default=2, help="raytracer processes at once (default %(default)s)")
     ap.add_argument("--scenes", help="comma list of scenes (default: every scene of the study)")
-    ap.add_argument("--flip-seeds", type=int, default=4, help="seeds rendered for the flip-book (default %(default)s)")
+    ap.add_argument("--flip-seeds", type=int, default=2, help="seeds rendered for the flip-book (default %(default)s)")
     ap.add_argument("--no-render", action="store_true", help="export from the images already rendered (a "
                     "configuration's missing flip-book seeds are left out; seed 0 is required)")
     ap.add_argument("--render-only", action="store_true", help="render the images, export nothing")
@@ -74,7 +77,7 @@ def main(argv=None, prog=None):
         if args.render_only:
             return 0
         out = export.export_study(args.results, args.study, df, plan, scenes, args.work, args.cache,
-                                  quiet=args.quiet)
+                                  quiet=args.quiet, imgdiff=args.imgdiff or imgdiff_beside(args.raytracer))
         teaching.build(args.results, args.study, df, plan, args.work, args.cache, out)
     except errors.InputError as e:
         errors.fail(str(e))

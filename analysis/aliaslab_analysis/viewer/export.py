@@ -5,14 +5,15 @@ ALIASLAB_VIEWER_ADD(scene data) with:
 
   crop      {x, y, size, how}: the window where the methods differ most (plan.crop_window over set A's seed-0
             images at the lowest spp: the largest summed variance across methods)
-  images    id -> {w, h, c, bits, lo, hi, src[, src2]}: PNG data URIs holding one image's values (one channel
+  images    id -> {w, h, c, bits, lo, hi, src[, src2]} (ids short numbers; equal entries stored once): PNG data URIs holding one image's values (one channel
             when R = G = B, as in the grey scenes, else three), value = lo + q (hi - lo) / (2^bits - 1) with q the
             stored integer: 8 bits for a method's image and the references, 16 bits for the targets' crops (the
             error is taken against them) (png_entry);
             lo, hi the image's own minimum and maximum, so the step is stated per image
   configs   per configuration: sampler, spp, filter, radius, the seeds rendered, its image ids (crop per seed;
-            the whole image of seed 0 only for the grid and jittered at the lowest spp with set A's filter: the
-            size budget), its own reference and its CSV rows, one per target (the CSV's values in ROW_COLUMNS)
+            the whole image of seed 0 only for the grid (uniform) at the lowest spp with set A's filter: the
+            size budget), its own reference and its CSV rows, one per target: the CSV's values of the columns
+            rowColumns (ROW_COLUMNS present in the CSV), in that order; flip: {primary target: the FLIP map's id}
   targets   the target images (crop and whole); refs: each filter x radius's own reference G
   scales    the signed error's colour scale per (spp, target): the 99th percentile of |I_0 - T| (the mean over
             the channels) over set A's methods at that spp in the crop
@@ -29,16 +30,18 @@ from PIL import Image
 
 from .. import errors, figures
 from .exr import read_exr, read_exrs
+from .flip import flip_maps, map_path
 from .plan import crop_window, image_stem
 
 ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
                "cpu_ms")  # the CSV columns shown beside an image
-WHOLE = ("uniform", "jittered")  # the samplers whose whole image is stored (the size budget)
+WHOLE = ("uniform",)  # the samplers whose whole image is stored (the size budget: the grid, where it aliases)
+FLIP_TARGETS = 1  # FLIP maps against the primary target only (imgdiff's time, about 0.5 s a map, and the size)
 TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_target (float images, double sums)
 
 
 def crop_size(width, height):
-    return int(max(8, min(32, min(width, height) // 2)))
+    return int(max(8, min(24, min(width, height) // 2)))
 
 
 def encode(q, mode):
@@ -47,13 +50,15 @@ def encode(q, mode):
     return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
 
 
-def png_entry(values, bits):
+def png_entry(values, bits, scale=None):
     """An image entry {w, h, c, bits, lo, hi, src[, src2]} of an (h, w, c) array (c = 1 grey or 3 colour)
-    quantised to `bits` between its own minimum and maximum: 8 bits in a grey or RGB PNG; 16 bits grey in one RGB
+    quantised to `bits` between its own minimum and maximum (or the fixed (lo, hi) `scale`, values clipped to it):
+    8 bits in a grey or RGB PNG; 16 bits grey in one RGB
     PNG (red the high byte, green the low byte), colour in two RGB PNGs (src the high bytes, src2 the low)."""
     v = np.nan_to_num(np.asarray(values, dtype=np.float64), nan=0.0, posinf=0.0, neginf=0.0)
     h, w, c = v.shape
-    lo, hi = float(v.min()), float(v.max())
+    lo, hi = (float(v.min()), float(v.max())) if scale is None else (float(scale[0]), float(scale[1]))
+    v = np.clip(v, lo, hi)
     top = (1 << bits) - 1
     q = np.zeros(v.shape, dtype=np.int64) if hi <= lo else np.rint((v - lo) / (hi - lo) * top).astype(np.int64)
     e = {"w": int(w), "h": int(h), "c": int(c), "bits": bits, "lo": lo, "hi": hi}
@@ -104,7 +109,7 @@ def row_values(r):
 
 
 class SceneExport:
-    def __init__(self, study, df, plan, scene, work, cache):
+    def __init__(self, study, df, plan, scene, work, cache, imgdiff=None):
         self.scene, self.plan = scene, plan
         self.sd = df[(df["scene"] == scene) & (df["reconstruction"].astype(str) == "weighted")
                      & (df["prefilter"].astype(str).isin(["none", ""]))]
@@ -115,10 +120,12 @@ class SceneExport:
             self.manifest = json.load(f)
         self.mdir, self.cache = os.path.dirname(mpath), cache
         self.targets = [str(t) for t in dict.fromkeys(self.sd["target"].astype(str))]
-        self.images, self.checked, self.worst = {}, 0, 0.0
+        self.images, self.checked, self.worst, self.imgdiff, self.same = {}, 0, 0.0, imgdiff, {}
+        self.describe = {}
+        self.row_columns = [c for c in ROW_COLUMNS if c in self.sd.columns]
 
     def whole(self, c):
-        """Whether the whole image of a configuration is stored (the size budget): the grid and jittered at the
+        """Whether the whole image of a configuration is stored (the size budget): the grid (uniform) at the
         lowest spp with set A's filter (the references' whole images are not stored; the primary target's is)."""
         return "A" in c["sets"] and c["spp"] == self.plan.levels[0] and c["sampler"] in WHOLE
 
@@ -126,22 +133,49 @@ class SceneExport:
         return any(e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9 for e in self.manifest["filters"])
 
     def reference(self, filt, radius):
+        path = self.reference_path(filt, radius)
+        img = channels(read_exr(path))
+        diff = read_exr(path[:-4] + ".diff.exr")
+        return img, float(np.mean(diff ** 2)), self.describe[(filt, radius)]
+
+    def reference_path(self, filt, radius):
         for e in self.manifest["filters"]:
             if e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9:
-                if self.cache:
-                    path = os.path.join(self.cache, e["key"] + ".exr")
-                else:
-                    path = os.path.normpath(os.path.join(self.mdir, e["image"]))
-                img = channels(read_exr(path))
-                diff = read_exr(path[:-4] + ".diff.exr")
-                return img, float(np.mean(diff ** 2)), e.get("describe", f"{filt} r={radius:g}")
+                self.describe[(filt, radius)] = e.get("describe", f"{filt} r={radius:g}")
+                return os.path.join(self.cache, e["key"] + ".exr") if self.cache else \
+                    os.path.normpath(os.path.join(self.mdir, e["image"]))
         errors.fail(f"{self.scene}: no reference {filt} r={radius:g} in its manifest")
 
-    def add(self, key, values, bits, region):
+    def add(self, key, values, bits, region, scale=None):
+        """Stores an image entry; an entry equal to one already stored (a deterministic sampler's seeds) is
+        stored once: the id returned is the first one's."""
         x, y, n = self.crop
         part = values[y:y + n, x:x + n] if region == "crop" else values
-        self.images[key] = png_entry(part, bits)
-        return key
+        e = png_entry(part, bits, scale)
+        same = json.dumps(e, sort_keys=True)
+        if same not in self.same:  # a short id (the size budget); `key` says what it is in this comment only
+            self.same[same] = str(len(self.images))
+            self.images[self.same[same]] = e
+        return self.same[same]
+
+    def flip_crops(self, configs):
+        """{config index: {target: image id}}: the FLIP map of each configuration's seed-0 image against the
+        primary target (FLIP_TARGETS; imgdiff over the whole image, the crop stored, 8 bits over the fixed scale
+        FLIP 0..1)."""
+        if not self.imgdiff:
+            return {}
+        pairs, where = [], []
+        for i, c in enumerate(configs):
+            image = os.path.join(self.work, image_stem(c, 0) + ".exr")
+            for t in self.targets[:FLIP_TARGETS]:
+                f, r = t.split(":")
+                pairs.append((image, self.reference_path(f, float(r)), map_path(image, t)))
+                where.append((i, t))
+        out = {}
+        for (i, t), m in zip(where, flip_maps(self.imgdiff, pairs, (self.width, self.height))):
+            base = image_stem(configs[i], 0)
+            out.setdefault(i, {})[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0))
+        return out
 
     def run(self):
         plan = self.plan
@@ -170,13 +204,14 @@ class SceneExport:
         cx, cy = crop_window(np.array([a.mean(axis=2) for a in stack]), n)
         self.crop = (cx, cy, n)
         out_configs, refs = [], {}
-        scales = {}
-        for c in configs:
+        scales, flips = {}, self.flip_crops(configs)
+        for i, c in enumerate(configs):
             rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
                            & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
             per_target, per_seed = {}, {}
             for _, r in rows.iterrows():
-                per_target[str(r["target"])] = row_values(r)
+                vals = row_values(r)
+                per_target[str(r["target"])] = [vals[k] for k in self.row_columns]
                 per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
             base = image_stem(c, 0)[:-len("-seed0")]
             for k in c["seeds"]:
@@ -201,7 +236,7 @@ class SceneExport:
             out_configs.append({"id": f"{c['sampler']}|{c['spp']}|{c['filter']}|{c['radius']:g}",
                                 "sampler": c["sampler"], "spp": c["spp"], "filter": c["filter"],
                                 "radius": c["radius"], "sets": c["sets"], "seeds": c["seeds"], "crop": crops,
-                                "whole": whole, "ref": ref_key, "rows": per_target})
+                                "whole": whole, "ref": ref_key, "rows": per_target, "flip": flips.get(i, {})})
             if "A" in c["sets"]:
                 e0 = seeds[(image_stem(c, 0), 0)][cy:cy + n, cx:cx + n]
                 for t in self.targets:  # the error shown: the mean over the channels of I - T
@@ -217,7 +252,11 @@ class SceneExport:
                                 f"(seed 0, {plan.levels[0]} spp)"},
                 "wholeHow": f"{', '.join(WHOLE)} at {plan.levels[0]} spp, {plan.filter} r={plan.radius:g}",
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
-                "refs": refs, "targetImages": targets, "scales": scale,
+                "refs": refs, "targetImages": targets, "rowColumns": self.row_columns, "scales": scale,
+                "flipHow": "per-pixel LDR-FLIP of the seed-0 image against the primary target (imgdiff "
+                           "--flip-output, the "
+                           "flip column's map; its mean over the whole image and the seeds is the CSV's flip), "
+                           "crop only, 8 bits over 0..1",
                 "scaleHow": "99th percentile of |I - T| over the crop of every sampler of set A at that spp (seed 0)",
                 "plan": plan.describe(), "not_rendered": self.missing, "verified": {"images": len(seeds), "comparisons": self.checked,
                                                       "max_relative_difference": self.worst},
@@ -231,13 +270,13 @@ def write_js(path, data):
     os.replace(tmp, path)
 
 
-def export_study(results, study, df, plan, scenes, work, cache=None, quiet=False):
+def export_study(results, study, df, plan, scenes, work, cache=None, quiet=False, imgdiff=None):
     out = os.path.join(results, "viewer")
     errors.prepare_out(out, "RESULTS/viewer")
     index = {"study": os.path.relpath(os.path.abspath(study), os.path.abspath(results)).replace(os.sep, "/"),
              "plan": plan.describe(), "scenes": {}}
     for scene in scenes:
-        data = SceneExport(study, df, plan, scene, work, cache).run()
+        data = SceneExport(study, df, plan, scene, work, cache, imgdiff).run()
         path = os.path.join(out, figures.slug(scene) + ".js")
         write_js(path, data)
         index["scenes"][scene] = {"file": os.path.basename(path), "bytes": os.path.getsize(path),

@@ -3,9 +3,9 @@ to commit), chosen from the study CSV alone:
 
   A  every sampler at every spp with one good filter: the (filter, radius) with the lowest median over targets of
      the median mse_target at the middle spp level (computed over every scene and sampler; deterministic rows out),
-     seed 0, and at the lowest spp seeds 0..3 (the flip-book; --flip-seeds);
+     seed 0, and at the lowest spp seeds 0 and 1 (the flip-book; --flip-seeds);
   B  every filter x radius with one sampler (jittered when the study has it) at the middle spp, seed 0;
-  C  the teaching trio (uniform, jittered, sobol: those present) at the lowest spp with the box r = 0.5, seeds 0..3.
+  C  the teaching trio (uniform, jittered, sobol: those present) at the lowest spp with the box r = 0.5, seeds 0 and 1.
 
 A configuration is (scene, sampler, spp, filter, radius) in weighted reconstruction without pre-filtering; the
 rows of other modes are not shown."""
@@ -47,7 +47,7 @@ class Plan:
     """The configurations of one study shown by the viewer: configs[scene] = list of dicts
     {sampler, spp, filter, radius, seeds (list of seed numbers rendered), sets (which of A, B, C)}."""
 
-    def __init__(self, df, flip_seeds=4):
+    def __init__(self, df, flip_seeds=2):
         rows = shown_rows(df)
         self.filter, self.radius = good_filter(df)
         self.levels = levels(rows)

@@ -11,10 +11,17 @@
   const data = {}, decoded = {}, $ = (sel) => root.querySelector(sel);
   const S = {scene: null, cfg: null, target: null, mode: "image", seed: 0, region: "crop", zoom: 0, ox: 0, oy: 0,
              pins: [], playing: null, engaged: false, hover: null};
-  const MODES = [["image", "image"], ["ref", "own reference G"], ["target", "target T"], ["error", "signed error I \u2212 T"]];
+  const MODES = [["image", "image"], ["ref", "own reference G"], ["target", "target T"],
+                 ["error", "signed error I \u2212 T"],
+                 ["flip", "FLIP map vs T"]];
   const DIMS = ["sampler", "spp", "filter", "radius"], VIEW = 384;
   window.ALIASLAB_VIEWER = {state: S, data: data};
-  window.ALIASLAB_VIEWER_ADD = function (d) { data[d.scene] = d; if (S.pending === d.scene) open(d.scene); };
+  window.ALIASLAB_VIEWER_ADD = function (d) {  // rows come as arrays in the order of d.rowColumns
+    for (const c of d.configs)
+      for (const t in c.rows) c.rows[t] = Object.fromEntries(d.rowColumns.map((k, i) => [k, c.rows[t][i]]));
+    data[d.scene] = d;
+    if (S.pending === d.scene) open(d.scene);
+  };
 
   const fmt = (v) => v === null || v === undefined ? "n/a"
     : typeof v === "number" ? (Number.isInteger(v) ? String(v) : Number(v).toPrecision(3)) : String(v);
@@ -154,12 +161,22 @@
     return [255 + (r - 255) * a, 255 + (g - 255) * a, 255 + (b - 255) * a];
   }
 
+  function magma(t) {  // t in [0, 1]: black, purple, orange, pale yellow (a magma-like ramp for FLIP)
+    const stops = [[0, 0, 4], [81, 18, 124], [183, 55, 121], [252, 137, 97], [252, 253, 191]];
+    t = Math.max(0, Math.min(1, t)) * (stops.length - 1);
+    const i = Math.min(stops.length - 2, Math.floor(t)), f = t - i;
+    return [0, 1, 2].map((k) => stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f);
+  }
+
   async function panelData(c) {
     const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
     if (!id || !t) return {missing: true, seed: seed};  // whole images: a few only (the size budget)
     if (S.mode === "ref" && !r) return {missing: true, seed: seed};
+    const f = S.region === "crop" && c.flip ? c.flip[S.target] : null;  // FLIP maps: seed 0, crop only
+    if (S.mode === "flip" && !f) return {missing: true, seed: seed};
     const img = await values(id);
-    return {img: img, tgt: await values(t), ref: r ? await values(r) : null, seed: seed};
+    return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: f ? await values(f) : null,
+            seed: seed};
   }
 
   async function draw() {
@@ -184,7 +201,7 @@
     const crop = d.crop;
     $(".alv-status").textContent = (S.region === "crop" ? `crop ${crop.size} x ${crop.size} at (${crop.x}, ${crop.y}): ${crop.how}`
       : `whole image ${d.width} x ${d.height}, seed 0`) + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
-      "t target, 1-4 show, space next seed, a play, c crop/whole, p pin, x clear pins, + - zoom, 0 reset; drag to pan, wheel to zoom.";
+      "t target, 1-5 show, space next seed, a play, c crop/whole, p pin, x clear pins, + - zoom, 0 reset; drag to pan, wheel to zoom.";
     if (S.hover) readout(S.hover[0], S.hover[1]);
   }
 
@@ -194,7 +211,9 @@
     if (p.missing) {
       const ctx = cv.getContext("2d");
       ctx.fillStyle = "#ddd"; ctx.fillRect(0, 0, VIEW, VIEW); ctx.fillStyle = "#333"; ctx.font = "14px sans-serif";
-      ctx.fillText(S.mode === "ref" ? "whole references not stored" : "whole image not stored for this one", 20, VIEW / 2 - 10);
+      ctx.fillText(S.mode === "ref" ? "whole references not stored" : S.mode === "flip"
+        ? (S.region === "crop" ? `FLIP maps against ${D().primary} only` : "FLIP maps: the crop only")
+        : "whole image not stored for this one", 20, VIEW / 2 - 10);
       ctx.fillText("(size budget): see the crop, or the", 20, VIEW / 2 + 10);
       ctx.fillText(D().wholeHow || "", 20, VIEW / 2 + 30);
       fig.appendChild(cv);
@@ -207,6 +226,7 @@
     for (let i = 0; i < p.img.w * p.img.h; ++i) {
       let rgb;
       if (S.mode === "error") rgb = diverging((mean(p.img, i) - mean(p.tgt, i)) / scale);
+      else if (S.mode === "flip") rgb = magma(at(p.flip, i, 0));
       else { const im = S.mode === "image" ? p.img : S.mode === "ref" ? p.ref : p.tgt; rgb = [0, 1, 2].map((ch) => g(at(im, i, ch))); }
       out.data.set([rgb[0], rgb[1], rgb[2], 255], 4 * i);
     }
@@ -222,7 +242,8 @@
     const row = c.rows[S.target] || {};
     const cap = el("figcaption");
     cap.appendChild(el("b", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
-    cap.appendChild(el("span", {class: "alv-seed"}, ` seed ${p.seed}` + (p.seed !== S.seed ? " (only seed 0 rendered)" : "")));
+    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? " (only seed 0 rendered)" : "";
+    cap.appendChild(el("span", {class: "alv-seed"}, ` seed ${S.mode === "flip" ? 0 : p.seed}` + seedNote));
     const dl = el("div", {class: "alv-values"});
     const item = (col, label, extra) => {
       if (!(col in row)) return;
@@ -279,10 +300,13 @@
       const i = y * p.img.w + x, gx = S.region === "crop" ? x + d.crop.x : x, gy = S.region === "crop" ? y + d.crop.y : y;
       const vals = [0, 1, 2].slice(0, p.img.c).map((ch) => at(p.img, i, ch));
       out.textContent = "";
-      out.appendChild(el("span", {"data-x": gx, "data-y": gy, "data-value": vals.join(","), "data-step": String(p.img.step)},
+      const attrs = {"data-x": gx, "data-y": gy, "data-value": vals.join(","), "data-step": String(p.img.step)};
+      if (p.flip) attrs["data-flip"] = String(at(p.flip, i, 0));
+      out.appendChild(el("span", attrs,
         `pixel (${gx}, ${gy}): value ${shownValue(p.img, i)} (\u00b1${(p.img.step / 2).toPrecision(2)} stored), target ` +
         `${shownValue(p.tgt, i)}, error ${(mean(p.img, i) - mean(p.tgt, i)).toFixed(4)}` + (p.img.c > 1 ? " (mean of R, G, B)" : "") +
-        (p.ref ? `, own reference ${shownValue(p.ref, i)}` : "")));
+        (p.ref ? `, own reference ${shownValue(p.ref, i)}` : "") +
+        (p.flip ? `, FLIP (seed 0) ${at(p.flip, i, 0).toFixed(3)}` : "")));
     }
   }
 
@@ -290,12 +314,15 @@
     const cv = $(".alv-bar"), ctx = cv.getContext("2d"), w = cv.width;
     for (let i = 0; i < w; ++i) {
       const t = i / (w - 1);
-      const rgb = S.mode === "error" ? diverging(2 * t - 1) : [255 * t, 255 * t, 255 * t];
+      const rgb = S.mode === "error" ? diverging(2 * t - 1) : S.mode === "flip" ? magma(t)
+        : [255 * t, 255 * t, 255 * t];
       ctx.fillStyle = `rgb(${rgb.map(Math.round).join(",")})`; ctx.fillRect(i, 0, 1, cv.height);
     }
     $(".alv-bar-label").textContent = S.mode === "error"
       ? `signed error I \u2212 T against ${S.target}: blue ${fmt(-scale)} (too dark), white 0, red +${fmt(scale)} (too bright); ` +
         `scale: ${D().scaleHow} (${cur().spp} spp), larger errors saturate`
+      : S.mode === "flip" ? `FLIP against ${S.target}: black 0 (no visible difference) to pale yellow 1 (largest); ` +
+        (D().flipHow || "")
       : "value: black 0, white 1 (values outside [0, 1] saturate; the readout gives them)";
   }
 
@@ -313,6 +340,7 @@
       "0": () => { S.zoom = 0; draw(); },
       "1": () => { S.mode = "image"; draw(); }, "2": () => { S.mode = "ref"; draw(); },
       "3": () => { S.mode = "target"; draw(); }, "4": () => { S.mode = "error"; draw(); },
+      "5": () => { S.mode = "flip"; draw(); },
     };
     if (acts[k]) { ev.preventDefault(); acts[k](); }
   });
