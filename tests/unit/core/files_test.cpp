@@ -100,6 +100,11 @@ TEST(Files, WriteFullyGivesTheSystemsReasonNeverAStaleOne) {
 }
 
 TEST(Files, TheMemoryLimitIsTheAddressSpaceLimitWhenThatIsLower) {
+#if defined(__SANITIZE_ADDRESS__)
+  // AddressSanitizer reserves terabytes of shadow address space at start-up, so no program starts under an
+  // address-space limit (ulimit -v) in the sanitizer build; the release suite runs this test.
+  GTEST_SKIP() << "an address-space limit cannot be set under AddressSanitizer";
+#endif
   const pid_t child = ::fork();
   ASSERT_GE(child, 0);
   if (child == 0) {  // in a child: the limit stays there
