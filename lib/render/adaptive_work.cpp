@@ -98,7 +98,8 @@ SampleBuffer Work::gather() const {
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;
       FilmSample* to = out.pixel(i, j);
-      for (const Round& r : rounds_) to = std::copy(r.samples.begin() + r.start[p], r.samples.begin() + r.start[p + 1], to);
+      for (const Round& r : rounds_)
+        to = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], to);
     }
   });
   out.setAreaWeighted(true);
