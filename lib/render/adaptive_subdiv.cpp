@@ -35,9 +35,10 @@ double spreadIn(const Work& w, const Cell& c) {
   const double y0 = static_cast<double>(c.p / w.width()) + c.r.cy * side;
   Color lo = Color::Constant(INFINITY), hi = Color::Constant(-INFINITY);
   int in = 0;
-  for (const FilmSample& s : w.samples(c.p))
+  w.forSamples(c.p, [&](const FilmSample& s) {
     if (s.x >= x0 && s.x < x0 + side && s.y >= y0 && s.y < y0 + side && s.L.allFinite())
       lo = lo.min(s.L), hi = hi.max(s.L), ++in;
+  });
   return in >= 2 ? static_cast<double>((hi - lo).maxCoeff()) : 0.0;
 }
 
@@ -75,7 +76,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
     });
     // a split costs 16 decision samples and the fresh samples its children keep (4 each, matching their
     // alpha = 1/2: as many fresh as decision samples), less the parent's own
-    std::vector<std::vector<Request>> requests(w.pixels());
+    std::vector<std::pair<long long, Request>> requests;
     for (const Cell& c : split) {
       const long long cost = 16 + 4 * kChildFresh - keep(c);
       if (free < cost) {
@@ -87,7 +88,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
       for (int k = 0; k < 4; ++k) {
         const Request child{c.r.level + 1, 2 * c.r.cx + (k & 1), 2 * c.r.cy + (k >> 1), 4,
                             static_cast<float>(mass * alphaBelow / 4)};
-        requests[c.p].push_back(child);
+        requests.push_back({c.p, child});
         next.push_back({c.p, child, mass, alphaBelow});
       }
     }
@@ -112,10 +113,11 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   for (size_t k = 0; k < rest.size() && given < free; ++k) ++n[rest[k].second], ++given;
   for (size_t k = 0; given > free && k < n.size(); ++k)  // rounding of the shares: never past the budget
     if (n[k] > keep(leaves[k])) --n[k], --given;
-  std::vector<std::vector<Request>> requests(w.pixels());
+  std::vector<std::pair<long long, Request>> requests;
+  requests.reserve(leaves.size());
   for (size_t k = 0; k < leaves.size(); ++k) {
     const Cell& c = leaves[k];
-    requests[c.p].push_back({c.r.level, c.r.cx, c.r.cy, n[k], static_cast<float>(c.mass * (1 - c.alpha) / n[k])});
+    requests.push_back({c.p, {c.r.level, c.r.cx, c.r.cy, n[k], static_cast<float>(c.mass * (1 - c.alpha) / n[k])}});
   }
   w.trace(requests);
 }

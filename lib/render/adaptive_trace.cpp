@@ -102,13 +102,14 @@ void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
   if (n0 == a.spp()) return;
   std::vector<double> sd(w.pixels(), 0.0);
   for (long long p = 0; p < w.pixels(); ++p) {
-    const auto& s = w.samples(p);
-    const double n = static_cast<double>(s.size());
+    const double n = static_cast<double>(w.count(p));
     double mean[3] = {0, 0, 0}, var = 0;
-    for (const FilmSample& f : s)
+    w.forSamples(p, [&](const FilmSample& f) {
       for (int c = 0; c < 3; ++c) mean[c] += f.L[c] / n;
-    for (const FilmSample& f : s)
+    });
+    w.forSamples(p, [&](const FilmSample& f) {
       for (int c = 0; c < 3; ++c) var += (f.L[c] - mean[c]) * (f.L[c] - mean[c]);
+    });
     sd[p] = n > 1 && std::isfinite(var) ? std::sqrt(var / 3 / (n - 1)) : 0.0;
   }
   sd = dilate(sd, W, H);
@@ -150,16 +151,7 @@ SampleBuffer traceAdaptive(const Tracer& tracer, const AdaptiveSampler& sampler,
     case AdaptiveMethod::Error: runError(w, sampler, width, height); break;
     case AdaptiveMethod::Subdivision: adaptiveimpl::runSubdivision(w, sampler); break;
   }
-  std::vector<int> counts(w.pixels());
-  for (long long p = 0; p < w.pixels(); ++p) counts[p] = w.count(p);
-  SampleBuffer out(width, height, counts);
-  for (int j = 0; j < height; ++j)
-    for (int i = 0; i < width; ++i) {
-      const auto& s = w.samples(static_cast<long long>(j) * width + i);
-      std::copy(s.begin(), s.end(), out.pixel(i, j));
-    }
-  out.setAreaWeighted(true);
-  return out;
+  return w.gather();
 }
 
 }  // namespace aliaslab

@@ -13,43 +13,52 @@ namespace aliaslab::adaptiveimpl {
 
 Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height, int threads, const Progress& progress)
     : tracer_(tracer), a_(a), W_(width), H_(height), threads_(threads), progress_(progress),
-      N_(static_cast<long long>(width) * height), B_(N_ * a.spp()), px_(N_), hash_(N_) {
+      N_(static_cast<long long>(width) * height), B_(N_ * a.spp()), count_(N_, 0), hash_(N_) {
   for (long long p = 0; p < N_; ++p) hash_[p] = hashWords(a.seed(), 0x72616e6bULL, static_cast<uint64_t>(p));
-  for (auto& v : px_) v.reserve(a.spp());  // one allocation per pixel for the flat share
 }
 
-void Work::trace(const std::vector<std::vector<Request>>& requests) {
+void Work::trace(const std::vector<std::pair<long long, Request>>& requests) {
+  // The round's layout: requests grouped by pixel (a counting sort keeping each pixel's order), and the
+  // samples of pixel p at [start[p], start[p + 1]) of one flat buffer.
+  Round round;
+  round.start.assign(static_cast<size_t>(N_) + 1, 0);
+  std::vector<size_t> first(static_cast<size_t>(N_) + 1, 0);
+  for (const auto& [p, r] : requests) ++first[p + 1], round.start[p + 1] += static_cast<size_t>(std::max(0, r.n));
+  for (long long p = 0; p < N_; ++p) first[p + 1] += first[p], round.start[p + 1] += round.start[p];
+  std::vector<Request> cells(requests.size());
+  {
+    std::vector<size_t> at(first.begin(), first.end() - 1);
+    for (const auto& [p, r] : requests) cells[at[p]++] = r;
+  }
+  const long long total = static_cast<long long>(round.start[N_]);
   // Before the parallel part: for every count n requested, the samplers of its parts (by part count and the
   // index of the part among equal counts, which goes into the seed so two parts of one count in a cell are
   // independent), as a plan indexed by n that the workers only read.
   std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
   std::vector<std::vector<const Sampler*>> plan;
-  long long total = 0;
-  for (const auto& list : requests)
-    for (const Request& r : list) {
-      if (r.n <= 0) continue;
-      total += r.n;
-      if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
-      if (!plan[r.n].empty()) continue;
-      std::map<int, int> seen;
-      for (int part : parts(r.n)) {
-        const std::pair<int, int> key{part, seen[part]++};
-        auto& s = samplers[key];
-        if (!s) s = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
-        plan[r.n].push_back(s.get());
-      }
+  for (const Request& r : cells) {
+    if (r.n <= 0) continue;
+    if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
+    if (!plan[r.n].empty()) continue;
+    std::map<int, int> seen;
+    for (int part : parts(r.n)) {
+      const std::pair<int, int> key{part, seen[part]++};
+      auto& s = samplers[key];
+      if (!s) s = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
+      plan[r.n].push_back(s.get());
     }
+  }
+  round.samples = SampleBuffer::Storage(static_cast<size_t>(total));
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
     const float topY = std::nextafter(static_cast<float>(j + 1), 0.f);
     for (int i = 0; i < W_; ++i) {
-      const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
       const size_t p = static_cast<size_t>(j) * W_ + i;
-      std::vector<FilmSample>& out = px_[p];
-      size_t adding = 0;
-      for (const Request& r : requests[p]) adding += static_cast<size_t>(std::max(0, r.n));
-      if (out.size() + adding > out.capacity()) out.reserve(out.size() + adding);  // once per pixel and round
-      for (const Request& r : requests[p]) {
+      if (first[p] == first[p + 1]) continue;
+      const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
+      FilmSample* out = round.samples.data() + round.start[p];
+      for (size_t c = first[p]; c < first[p + 1]; ++c) {
+        const Request& r = cells[c];
         if (r.n <= 0) continue;
         const double side = 1.0 / static_cast<double>(1 << r.level);
         for (const Sampler* sampler : plan[r.n]) {
@@ -60,12 +69,14 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
             s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
             s.weight = r.weight;
             s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-            out.push_back(s);
+            *out++ = s;
           }
         }
       }
     }
   });
+  for (long long p = 0; p < N_; ++p) count_[p] += static_cast<int>(round.start[p + 1] - round.start[p]);
+  rounds_.push_back(std::move(round));
   spent_ += total, ++round_;
   if (progress_) {
     const double f = static_cast<double>(spent_) / static_cast<double>(std::max(1LL, B_));
@@ -74,10 +85,25 @@ void Work::trace(const std::vector<std::vector<Request>>& requests) {
 }
 
 void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share) {
-  std::vector<std::vector<Request>> requests(N_);
+  std::vector<std::pair<long long, Request>> requests;
+  requests.reserve(static_cast<size_t>(N_));
   for (long long p = 0; p < N_; ++p)
-    if (add[p] > 0) requests[p].push_back({0, 0, 0, add[p], static_cast<float>(share[p] / add[p])});
+    if (add[p] > 0) requests.push_back({p, {0, 0, 0, add[p], static_cast<float>(share[p] / add[p])}});
   trace(requests);
+}
+
+SampleBuffer Work::gather() const {
+  SampleBuffer out(W_, H_, count_);
+  parallelFor(H_, threads_, [&](int j) {
+    for (int i = 0; i < W_; ++i) {
+      const size_t p = static_cast<size_t>(j) * W_ + i;
+      FilmSample* to = out.pixel(i, j);
+      for (const Round& r : rounds_)
+        to = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], to);
+    }
+  });
+  out.setAreaWeighted(true);
+  return out;
 }
 
 bool Work::fullQuality(int n) const {
@@ -124,8 +150,9 @@ std::vector<int> Work::evenly(long long amount, const std::vector<double>& prior
 void Work::pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const {
   lo.assign(N_, Color::Constant(INFINITY)), hi.assign(N_, Color::Constant(-INFINITY));
   for (long long p = 0; p < N_; ++p)
-    for (const FilmSample& s : px_[p])
+    forSamples(p, [&](const FilmSample& s) {
       if (s.L.allFinite()) lo[p] = lo[p].min(s.L), hi[p] = hi[p].max(s.L);
+    });
 }
 
 }  // namespace aliaslab::adaptiveimpl

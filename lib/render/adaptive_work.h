@@ -1,11 +1,15 @@
 // Private to render/ (adaptive_trace.cpp, adaptive_work.cpp): the state the adaptive methods share, every
 // pixel's samples so far and the budget, and the rounds that trace more of them (Work::trace). The methods
-// read the samples through the inline accessors; each round is one call.
+// read the samples through the inline accessors; each round is one call. Storage: each round's samples go
+// into one flat buffer laid out pixel after pixel by that round's counts (prefix sums, known before the round
+// is traced), so no per-pixel heap blocks; gather() copies the rounds into the final SampleBuffer once, each
+// pixel's samples in round order (the order the methods add them in).
 #pragma once
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "render/adaptive.h"
@@ -26,13 +30,18 @@ class Work {
 
   long long pixels() const { return N_; }
   long long left() const { return B_ - spent_; }
-  int count(long long p) const { return static_cast<int>(px_[p].size()); }
-  const std::vector<FilmSample>& samples(long long p) const { return px_[p]; }
+  int count(long long p) const { return count_[p]; }
+  /// Calls f(const FilmSample&) on every sample of pixel p so far, in the order traced.
+  template <class F>
+  void forSamples(long long p, F&& f) const {
+    for (const Round& r : rounds_)
+      for (size_t k = r.start[p]; k < r.start[p + 1]; ++k) f(r.samples[k]);
+  }
   int width() const { return W_; }
   uint64_t hash(long long p) const { return hash_[p]; }
 
-  /// Traces one round: requests[p] lists the cells of pixel p to sample (in order).
-  void trace(const std::vector<std::vector<Request>>& requests);
+  /// Traces one round: the cells to sample as (pixel, cell) pairs; each pixel's cells in the order listed.
+  void trace(const std::vector<std::pair<long long, Request>>& requests);
 
   /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p].
   void tracePixels(const std::vector<int>& add, const std::vector<double>& share);
@@ -55,6 +64,9 @@ class Work {
   /// Per pixel, per channel, the least and greatest radiance of its samples.
   void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
 
+  /// Every pixel's samples, in round order, as one variable-count buffer (area-weighted).
+  SampleBuffer gather() const;
+
  private:
   /// v as a float inside [i, top] with top = the float below i + 1 (rounding of i + u could give i + 1).
   static float inside(double v, int i, float top) { return std::clamp(static_cast<float>(v), static_cast<float>(i), top); }
@@ -65,7 +77,12 @@ class Work {
   Progress progress_;
   long long N_, B_, spent_ = 0;
   uint64_t round_ = 0;
-  std::vector<std::vector<FilmSample>> px_;
+  struct Round {
+    std::vector<size_t> start;     ///< N + 1 prefix sums: pixel p's samples are [start[p], start[p + 1])
+    SampleBuffer::Storage samples;  ///< written in the round's parallel loop before any read
+  };
+  std::vector<Round> rounds_;
+  std::vector<int> count_;  ///< samples per pixel over all rounds
   std::vector<uint64_t> hash_;
   mutable std::map<int, bool> quality_;  ///< count -> the base sampler has no warning() at it
 
