@@ -1,7 +1,9 @@
 // motion: aliasing in motion (docs/science.md, "Motion"; lib/study/motion_study.h). For one scene, F frames of
 // a camera moving by dx,dy pixels per frame, every sampler x spp x filter:radius rendered with K seeds in every
 // frame, against per-frame references; writes one CSV row per configuration (shimmer, flickers, blur, noise,
-// the still image's mse_target). Bad options exit 2 before any work; progress goes to stderr.
+// the still image's mse_target). Bad options exit 2 before any work; progress goes to stderr. The quick
+// one-scene form of `sweep --frames F --motion dx,dy` (study/sweep_motion.h), which adds the same measures to
+// the study CSV for every scene, target and reconstruction mode; both use measure/motion.h.
 //
 //   motion --scene scenes/motion/grating.txt --filters box:0.5,gaussian:1,gaussian:1.5,gaussian:2
 //          --frames 8 --motion 0.25,0 --output results/motion/grating.csv

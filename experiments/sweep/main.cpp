@@ -7,12 +7,14 @@
 //   sweep --preset full                        (the full reference study, results/study_full;
 //                                               run it sharded: experiments/run_full_study.sh)
 //   sweep ... --target area,gaussian:1.5       (the targets the error is decomposed against; first = primary)
+//   sweep ... --frames 8 --motion 0.25,0       (aliasing in motion: 8 frames of a camera moving 0.25 px per frame)
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
 //   sweep --merge out.csv shard0.csv shard1.csv ...   (join shards, canonical order)
 // Rerunning the same command resumes. Exit codes: 0 done, 2 bad input, 1 failure.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "common/cli.h"
@@ -20,6 +22,7 @@
 #include "core/error.h"
 #include "study/config.h"
 #include "study/merge.h"
+#include "study/motion_study.h"
 #include "study/presets.h"
 #include "study/sweep.h"
 
@@ -36,7 +39,8 @@ const FrontEnd kSweep{"sweep",
                        {"ref-sampler", "--ref-sampler"}, {"size", "--size"},        {"max-size", "--max-size"},
                        {"long-side", "--long-side"}, {"target", "--target"},         {"out", "--out"},
                        {"csv", "--csv"},             {"cache", "--cache"},           {"threads", "--threads"},
-                       {"shard", "--shard"},         {"merge", "--merge"},           {"grid", "-grid"}}};
+                       {"shard", "--shard"},         {"merge", "--merge"},           {"grid", "-grid"},
+                       {"frames", "--frames"},       {"motion", "--motion"}}};
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -46,7 +50,7 @@ int main(int argc, char** argv) {
 
   CLI::App app{"sweep: measure aliasing, noise and time over samplers x filters x radii (aliaslab)"};
   setupCommandLine(app, "sweep");
-  std::string preset, shard;
+  std::string preset, shard, motion;
   std::vector<int> size;
   std::vector<std::string> merge;
   app.set_config("--config", "", "read options from a TOML/INI file (keys = long option names)");
@@ -82,6 +86,11 @@ int main(int argc, char** argv) {
                  "written box:0.5) or filter:radius, e.g. gaussian:1.5 or lanczos:3; each is another reference "
                  "rendered and cached with the others (definitions: docs/science.md)")
       ->delimiter(',')->capture_default_str();
+  app.add_option("--frames", c.frames,
+                 "F frames of a moving camera per configuration and seed (1: a still study; F > 1 adds the CSV's "
+                 "motion columns: shimmer and flicker, docs/science.md \"Motion\")")
+      ->capture_default_str();
+  app.add_option("--motion", motion, "dx,dy: the camera's motion in pixels per frame (with --frames; default 0.25,0)");
   app.add_option("--out", c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
   app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
   app.add_option("--cache", c.cache, "reference cache folder")->capture_default_str();
@@ -110,6 +119,7 @@ int main(int argc, char** argv) {
                                     std::to_string(size[1]) + " (leave --size out for each scene's own size)");
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
+    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion);
     const SweepSummary s = runSweep(c);
     if (!c.refsOnly)
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",
@@ -124,6 +134,7 @@ int main(int argc, char** argv) {
       std::printf("thread-seconds: trace %.1f, splat %.1f, resolve %.1f, flip %.1f, metrics and spectra %.1f, "
                   "set-up %.1f, finish %.1f, idle %.1f; main thread: references %.1f s, output %.1f s\n",
                   p.trace, p.splat, p.resolve, p.flip, p.metrics, p.setup, p.finish, p.waiting, p.references, p.io);
+      if (c.frames > 1) std::printf("frames: %.1f s of the frames pass (%d frames per seed)\n", p.motion, c.frames);
     }
     if (c.refsOnly)
       std::printf("references ready in %s (%.1f s)\n", c.cache.c_str(), s.seconds);

@@ -64,6 +64,10 @@ struct StudyConfig {
   int refBatch = 16;        ///< reference samples per pixel per streamed batch
   bool refsOnly = false;    ///< render and cache the references, then stop (before sharded runs)
   bool progress = true;     ///< progress bar / lines on stderr
+  /// Motion (study/sweep_motion.h): F frames of a camera moving (dx, dy) pixels per frame; F = 1 is a still study
+  /// (the CSV without motion columns), F > 1 adds the motion measures to every row.
+  int frames = 1;
+  double motionDx = 0.25, motionDy = 0;
 };
 
 /// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns

@@ -34,13 +34,29 @@ const std::vector<std::string>& csvColumns() {
   return cols;
 }
 
-const std::string& csvHeader() {
-  static const std::string header = [] {
+const std::vector<std::string>& csvMotionColumns() {
+  static const std::vector<std::string> cols = {
+      "frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se", "flicker_new",
+      "flicker_new_se", "shimmer_filter", "shimmer_filter_se"};
+  return cols;
+}
+
+const std::string& csvHeader(bool motion) {
+  static const std::string still = [] {
     std::string h;
     for (const std::string& c : csvColumns()) h += (h.empty() ? "" : ",") + c;
     return h;
   }();
-  return header;
+  static const std::string moving = [] {
+    std::string h = still;
+    for (const std::string& c : csvMotionColumns()) h += "," + c;
+    return h;
+  }();
+  return motion ? moving : still;
+}
+
+bool isStudyRow(const std::vector<std::string>& f) {
+  return f.size() == csvColumns().size() || f.size() == csvColumns().size() + csvMotionColumns().size();
 }
 
 size_t csvColumn(const std::string& name) {
@@ -79,7 +95,10 @@ std::string joinKey(const std::vector<std::string>& f) {
   static const size_t prefilter = csvColumn("prefilter");
   std::string key;
   for (int c : cols) key += f[c] + '\x1f';
-  return key + f[prefilter] + '\x1f';
+  key += f[prefilter] + '\x1f';
+  if (f.size() > csvColumns().size())  // motion: frames, motion_dx, motion_dy
+    for (size_t c = csvColumns().size(); c < csvColumns().size() + 3; ++c) key += f[c] + '\x1f';
+  return key;
 }
 
 double num(const std::string& s) {
@@ -104,6 +123,11 @@ std::string formatCsvRow(const CsvRow& r) {
     << ',' << real(r.cpuMsSe);
   for (size_t k = 0; k < r.blurRatio.size(); ++k) s << ',' << real(r.blurRatio[k]) << ',' << real(r.blurRatioSe[k]);
   s << ',' << r.nonFiniteSamples;
+  if (const auto& m = r.motion)
+    s << ',' << m->frames << ',' << real(m->dx) << ',' << real(m->dy) << ',' << real(m->shimmer) << ','
+      << real(m->shimmerSe) << ',' << real(m->flickerSame) << ',' << real(m->flickerSameSe) << ','
+      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->shimmerFilter) << ','
+      << real(m->shimmerFilterSe);
   return s.str();
 }
 
@@ -128,13 +152,13 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 }
 
 std::string csvKey(const std::vector<std::string>& fields) {
-  if (fields.size() != csvColumns().size()) return {};
+  if (!isStudyRow(fields)) return {};
   return joinKey(fields);
 }
 
 std::string csvKey(const CsvRow& row) { return csvKey(splitCsvLine(formatCsvRow(row))); }
 
-std::vector<std::string> readCsvLines(const std::string& path) {
+std::vector<std::string> readCsvLines(const std::string& path, bool* motion) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw FileError(path, "cannot open for reading");
   std::ostringstream ss;
@@ -146,7 +170,8 @@ std::vector<std::string> readCsvLines(const std::string& path) {
   for (size_t nl; (nl = text.find('\n', start)) != std::string::npos; start = nl + 1) {
     const std::string line = text.substr(start, nl - start);
     if (header) {
-      if (line != csvHeader()) throw FileError(path, "not a study CSV (unexpected header)");
+      if (line != csvHeader() && line != csvHeader(true)) throw FileError(path, "not a study CSV (unexpected header)");
+      if (motion) *motion = line == csvHeader(true);
       header = false;
     } else if (!line.empty()) {
       lines.push_back(line);
@@ -166,11 +191,14 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
   static const size_t kPrefilter = csvColumn("prefilter");
   auto order = [](const Item& a) {
     const auto& f = a.f;
+    const size_t m = csvColumns().size();  // motion rows: frames, motion_dx, motion_dy last
+    const bool moving = f.size() > m;
     return std::make_tuple(f[kScene], f[kSampler], num(f[kSpp]), f[kPrefilter], f[kFilter], num(f[kRadius]),
                            f[kRecon], num(f[kWidth]), num(f[kHeight]), num(f[kSeeds]), num(f[kRefSpp]), f[kParams],
-                           f[kTarget]);
+                           f[kTarget], moving ? num(f[m]) : 1.0, moving ? num(f[m + 1]) : 0.0,
+                           moving ? num(f[m + 2]) : 0.0);
   };
-  std::erase_if(items, [](const Item& i) { return i.f.size() != csvColumns().size(); });
+  std::erase_if(items, [](const Item& i) { return !isStudyRow(i.f); });
   std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) { return order(a) < order(b); });
   std::vector<std::string> out;
   std::string previous;
@@ -183,15 +211,19 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
   return out;
 }
 
-void writeCsvFile(const std::string& path, const std::vector<std::string>& lines) {
-  std::string text = csvHeader() + '\n';
+void writeCsvFile(const std::string& path, const std::vector<std::string>& lines, bool motion) {
+  std::string text = csvHeader(motion) + '\n';
   for (const std::string& l : lines) text += l + '\n';
   writeTextFile(path, text);
 }
 
-void canonicaliseCsv(const std::string& path) { writeCsvFile(path, sortCsvRows(readCsvLines(path))); }
+void canonicaliseCsv(const std::string& path) {
+  bool motion = false;
+  std::vector<std::string> lines = readCsvLines(path, &motion);
+  writeCsvFile(path, sortCsvRows(std::move(lines)), motion);
+}
 
-CsvAppender::CsvAppender(const std::string& path) : path_(path) {
+CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
   std::error_code ec;
   requireRegularFile(path, "a study CSV is a regular file (it is read, resumed and appended to); give another "
                            "{csv} or {out}");
@@ -202,10 +234,14 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
     if (!in) throw FileError(path, "cannot open for reading");
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     const size_t first = text.find('\n');
-    const std::string header = csvHeader() + '\n';
+    const std::string header = csvHeader(motion) + '\n';
     const bool studyHeader = first == std::string::npos ? header.compare(0, text.size(), text) == 0
-                                                        : text.compare(0, first, csvHeader()) == 0;
+                                                        : text.compare(0, first, csvHeader(motion)) == 0;
     const std::string firstLine = text.substr(0, first);
+    if (!studyHeader && firstLine == csvHeader(!motion))
+      throw FileError(path, std::string("holds a ") + (motion ? "still study (one frame)" : "study with frames") +
+                                "; this run is " + (motion ? "one with frames" : "a still one") +
+                                ", and one CSV holds one kind: left unchanged: give another {csv} or {out}");
     if (!studyHeader && csvHeader().compare(0, firstLine.size() + 1, firstLine + ",") == 0)
       throw FileError(path, "written by an older sweep (its header lacks the column(s) after '" +
                                 firstLine.substr(firstLine.rfind(',') + 1) + "': " +
@@ -223,9 +259,10 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
       const size_t end = text.find('\n', start);
       const std::string line = text.substr(start, end - start);
       const size_t n = splitCsvLine(line).size();
-      if (!line.empty() && n != csvColumns().size())
+      const size_t expected = csvColumns().size() + (motion ? csvMotionColumns().size() : 0);
+      if (!line.empty() && n != expected)
         throw ParseError(path, lineNo, "not a study row (" + std::to_string(n) + " fields, expected " +
-                                           std::to_string(csvColumns().size()) + "); the CSV is left unchanged");
+                                           std::to_string(expected) + "); the CSV is left unchanged");
       start = end + 1;
     }
     // Resume: keep complete lines, cut a torn last line (or a torn header).
@@ -240,7 +277,7 @@ CsvAppender::CsvAppender(const std::string& path) : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
   if (fd_ < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());
   if (!exists) {
-    const std::string h = csvHeader() + '\n';
+    const std::string h = csvHeader(motion) + '\n';
     if (const std::string why = writeFully(fd_, h); !why.empty()) throw FileError(path, "write failed: " + why);
   }
 }

@@ -33,10 +33,16 @@
 // nonfinite_samples: samples of the K images whose radiance was NaN or infinite and were left out of them (a light
 // or colour beyond float range); 0 in a sound study, docs/integrity.md. An older CSV without the column cannot
 // be resumed (CsvAppender names the missing columns); the analysis reads it as unknown.
+// Motion (a study with frames F > 1, study/sweep_motion.h; docs/science.md "Motion"): the CSV gains, after every
+// column above, csvMotionColumns(): frames,motion_dx,motion_dy (key columns), shimmer,shimmer_se,flicker_same,
+// flicker_same_se,flicker_new,flicker_new_se against the row's target T_t, and shimmer_filter,shimmer_filter_se
+// against the configuration's own references G_t (the same on every target row). The still columns above are
+// then those of frame 0. A still study (F = 1) writes exactly the columns above; one CSV holds one kind.
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
 // A row's key is its identifying columns (scene ... reconstruction, seeds,
-// ref_spp, target, prefilter): a rerun skips configurations whose rows (one per target) are all in the file.
+// ref_spp, target, prefilter; with motion also frames, motion_dx, motion_dy): a rerun skips configurations whose
+// rows (one per target) are all in the file.
 // CsvAppender opens an existing file for resumption: it checks the header and rows first (a file that is
 // not a study CSV is never modified),
 // truncates a trailing partial line (a killed run), and appends each new row
@@ -46,11 +52,20 @@
 // resumed, sharded or interrupted run ends with the same file.
 #pragma once
 #include <array>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 namespace aliaslab {
+
+/// The motion columns of a row (studies with F > 1 frames).
+struct MotionColumns {
+  int frames = 0;
+  double dx = 0, dy = 0;  ///< camera motion in pixels per frame
+  double shimmer = 0, shimmerSe = 0, flickerSame = 0, flickerSameSe = 0, flickerNew = 0, flickerNewSe = 0;
+  double shimmerFilter = 0, shimmerFilterSe = 0;
+};
 
 struct CsvRow {
   std::string scene;
@@ -85,12 +100,17 @@ struct CsvRow {
   double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
   std::array<double, 4> blurRatio{}, blurRatioSe{};  ///< the blur curve at sigma 0.5, 1, 2, 4 (measure/spectrum.h)
   long long nonFiniteSamples = 0;  ///< NaN / infinite samples left out of the K images (summed over seeds)
+  std::optional<MotionColumns> motion;  ///< set in a study with frames (F > 1): the motion columns follow
 };
 
-/// The header line (no newline).
-const std::string& csvHeader();
-/// Column names in order.
+/// The header line (no newline); with `motion`, the motion columns after the still ones.
+const std::string& csvHeader(bool motion = false);
+/// Column names in order (the still study's).
 const std::vector<std::string>& csvColumns();
+/// The motion columns, which follow csvColumns() in a study with frames.
+const std::vector<std::string>& csvMotionColumns();
+/// Whether `fields` is a study row: the still columns, or the still and the motion columns.
+bool isStudyRow(const std::vector<std::string>& fields);
 /// Index of the column `name` in csvColumns(); throws std::out_of_range when there is none.
 size_t csvColumn(const std::string& name);
 /// Indices of the timing columns (trace_ms, reconstruct_ms, cpu_ms, cpu_ms_se), which may differ between runs.
@@ -111,7 +131,8 @@ class CsvAppender {
  public:
   /// Opens (creating with the header if missing or empty). Throws FileError
   /// when the file cannot be opened or has another header.
-  explicit CsvAppender(const std::string& path);
+  /// `motion`: the study has frames (the motion header); a file with the other header is refused.
+  explicit CsvAppender(const std::string& path, bool motion = false);
   ~CsvAppender();
   CsvAppender(const CsvAppender&) = delete;
   CsvAppender& operator=(const CsvAppender&) = delete;
@@ -134,14 +155,14 @@ class CsvAppender {
   std::vector<std::string> lines_;
 };
 
-/// Reads a CSV's data lines (header checked, partial last line dropped).
-std::vector<std::string> readCsvLines(const std::string& path);
+/// Reads a CSV's data lines (header checked, partial last line dropped); `motion` (if given) tells which header.
+std::vector<std::string> readCsvLines(const std::string& path, bool* motion = nullptr);
 
 /// Sorts lines into canonical order and drops exact-key duplicates (first kept).
 std::vector<std::string> sortCsvRows(std::vector<std::string> lines);
 
 /// Writes header + lines to `path` atomically (temporary file, then rename).
-void writeCsvFile(const std::string& path, const std::vector<std::string>& lines);
+void writeCsvFile(const std::string& path, const std::vector<std::string>& lines, bool motion = false);
 
 /// Rewrites a CSV in canonical order.
 void canonicaliseCsv(const std::string& path);

@@ -2,9 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <map>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <optional>
 #include <regex>
 #include <set>
 
@@ -48,7 +49,8 @@ void checkShardSet(const std::vector<std::string>& inputs) {
   }
 }
 
-std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows) {
+std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows, bool* motionOut) {
+  bool motion = false;
   std::error_code ec;
   if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a shard CSV");
   if (!fs::exists(path, ec)) throw FileError(path, "no such shard CSV");
@@ -73,17 +75,20 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows)
         throw ParseError(path, 1, "written by an older sweep (its header lacks the column(s) " +
                                       csvHeader().substr(line.size() + 1) +
                                       "); shards of one study are made by one sweep: rerun this shard");
-      if (line != csvHeader()) throw ParseError(path, 1, "not a study CSV (unexpected header)");
+      motion = line == csvHeader(true);  // a study with frames (study/csv.h)
+      if (line != csvHeader() && !motion) throw ParseError(path, 1, "not a study CSV (unexpected header)");
       continue;
     }
     if (line.empty()) continue;
     const size_t n = splitCsvLine(line).size();
-    if (n != csvColumns().size())
-      throw ParseError(path, lineNo, "has " + std::to_string(n) + " fields, expected " +
-                                         std::to_string(csvColumns().size()) + " (a damaged row)");
+    const size_t expected = csvColumns().size() + (motion ? csvMotionColumns().size() : 0);
+    if (n != expected)
+      throw ParseError(path, lineNo, "has " + std::to_string(n) + " fields, expected " + std::to_string(expected) +
+                                         " (a damaged row)");
     lines.push_back(line);
   }
   if (lines.empty() && !allowNoRows) throw FileError(path, "holds no rows (header only): a shard of a study has at least one row");
+  if (motionOut) *motionOut = motion;
   return lines;
 }
 
@@ -93,7 +98,8 @@ std::string measuredValues(const std::vector<std::string>& f) {
   std::string v;
   const auto timing = csvTimingColumns();
   for (size_t i = 0; i < f.size(); ++i)
-    if (std::find(timing.begin(), timing.end(), i) == timing.end() && csvColumns()[i] != "threads")
+    if (std::find(timing.begin(), timing.end(), i) == timing.end() &&
+        (i >= csvColumns().size() || csvColumns()[i] != "threads"))
       v += f[i] + '\x1f';
   return v;
 }
@@ -119,11 +125,16 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
   std::vector<std::pair<int, std::string>> empty;  // (shard index, file)
   int highestWithRows = -1;
   bool severalGroups = false;
+  std::optional<bool> motion;  // every shard the same kind: still, or with frames
   for (const std::string& in : inputs) {
     std::smatch m;
     const std::string file = fs::path(in).filename().string();
     const bool named = std::regex_search(file, m, shardName);
-    const auto lines = readShardCsv(in, named);
+    bool moving = false;
+    const auto lines = readShardCsv(in, named, &moving);
+    if (motion && *motion != moving)
+      throw FileError(in, "mixes a study with frames and a still one among the shards: merge the shards of one study");
+    motion = moving;
     if (lines.empty()) {
       empty.emplace_back(std::stoi(m[1].str()), in);
       continue;
@@ -163,7 +174,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
                                                                         : "a higher-numbered shard has rows") +
                                 ", so every shard must have rows: this shard was emptied or never ran; rerun it");
   if (beforeWrite) beforeWrite();
-  writeCsvFile(out, sortCsvRows(std::move(all)));
+  writeCsvFile(out, sortCsvRows(std::move(all)), motion.value_or(false));
 }
 
 void mergeStudy(const std::string& out, const std::vector<std::string>& inputs, const std::string& command) {

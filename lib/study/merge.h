@@ -22,8 +22,8 @@ void checkShardSet(const std::vector<std::string>& inputs);
 
 /// Reads a shard for merging, strictly: a folder, an empty file, a header-only file (unless allowNoRows), a cut
 /// last line or a row with the wrong number of fields is an error naming the file (and line). Throws FileError /
-/// ParseError.
-std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows = false);
+/// ParseError. `motion` (if given): whether the shard is of a study with frames (study/csv.h).
+std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows = false, bool* motion = nullptr);
 
 /// Merges shard CSVs into `out` in canonical order (rows with the same key and the same results are kept
 /// once). Every input is read with readShardCsv; two rows with the same key but different results (timing and

@@ -17,18 +17,35 @@ namespace {
 
 const FilterSpec kArea{"box", 0.5};
 
-/// Points the scene's tracer at frame t's camera; the content hash (the references' cache key) gains the offset.
-void setFrame(StudyScene& s, const Camera& base, uint64_t baseHash, int t, const MotionStudyConfig& c) {
-  const Vec2 offset = frameScreenOffset(t, c.dx, c.dy, s.width, s.height);
+std::string number(double v) { return formatNumber(v, "%.9g"); }
+
+}  // namespace
+
+void setMotionFrame(StudyScene& s, const Camera& base, uint64_t baseHash, int t, double dx, double dy) {
+  const Vec2 offset = frameScreenOffset(t, dx, dy, s.width, s.height);
   s.scene.camera = makeShiftedCamera(base, offset);
   char exact[96];  // %a: every bit of the offset, so no two offsets share a key
   std::snprintf(exact, sizeof exact, "motion offset %a %a", double(offset.x()), double(offset.y()));
   s.contentHash = offset.isZero(0.f) ? baseHash : hashBytes(exact, baseHash);
 }
 
-std::string number(double v) { return formatNumber(v, "%.9g"); }
-
-}  // namespace
+std::pair<double, double> parseMotion(const std::string& text) {
+  const size_t comma = text.find(',');
+  double v[2] = {NAN, NAN};
+  if (comma != std::string::npos && text.find(',', comma + 1) == std::string::npos) {
+    const std::string parts[2] = {text.substr(0, comma), text.substr(comma + 1)};
+    for (int i = 0; i < 2; ++i) try {
+        size_t used = 0;
+        v[i] = std::stod(parts[i], &used);
+        if (used != parts[i].size() || parts[i].empty()) v[i] = NAN;
+      } catch (const std::exception&) {
+      }
+  }
+  if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || std::abs(v[0]) > 1e4 || std::abs(v[1]) > 1e4)
+    throw OptionError("motion", "expected dx,dy: two finite numbers of pixels per frame (at most 1e4), e.g. "
+                                "0.25,0; found '" + text + "'");
+  return {v[0], v[1]};
+}
 
 FilterSpec parseFilterSpec(const std::string& text) {
   const size_t colon = text.find(':');
@@ -75,7 +92,7 @@ std::vector<MotionRow> runMotionStudy(const MotionStudyConfig& c, std::ostream& 
   specs.push_back(kArea);
   std::vector<ReferenceSet> refs;
   for (int t = 0; t < F; ++t) {
-    setFrame(*s, *base, baseHash, t, c);
+    setMotionFrame(*s, *base, baseHash, t, c.dx, c.dy);
     if (c.progress) log << "motion: references of frame " << t + 1 << "/" << F << "\n" << std::flush;
     ReferenceOptions o = c.reference;
     o.progress = o.progress && c.progress;
@@ -97,7 +114,7 @@ std::vector<MotionRow> runMotionStudy(const MotionStudyConfig& c, std::ostream& 
       for (int k = 0; k < K; ++k) {
         const auto source = makeSampleSource(sampler, spp, static_cast<uint64_t>(k));
         for (int t = 0; t < F; ++t) {
-          setFrame(*s, *base, baseHash, t, c);
+          setMotionFrame(*s, *base, baseHash, t, c.dx, c.dy);
           const SampleBuffer samples = source->trace(*s->tracer, W, H, c.threads);
           for (size_t j = 0; j < filters.size(); ++j)
             images[j][k][t] = reconstruct(samples, *filters[j], ReconMode::WeightedAverage, c.threads).image;

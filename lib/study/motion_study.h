@@ -13,10 +13,12 @@
 #pragma once
 #include <iosfwd>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "measure/motion.h"
 #include "study/reference.h"
+#include "study/study_scene.h"
 
 namespace aliaslab {
 
@@ -45,6 +47,14 @@ struct MotionRow {
   double mseTarget = 0, mseTargetSe = 0;  ///< frame 0 (the still image) against T_0
   double dx = 0, dy = 0;
 };
+
+/// Points `scene`'s tracer at frame t of a camera moving (dx, dy) pixels per frame: its camera becomes `base`
+/// shifted by frameScreenOffset (base must outlive that use), and its content hash (the references' cache key)
+/// `baseHash` with the offset added when it is not zero (frame 0 shares the still study's cache entries).
+void setMotionFrame(StudyScene& scene, const Camera& base, uint64_t baseHash, int t, double dx, double dy);
+
+/// "dx,dy" (two finite numbers of pixels per frame, at most 1e4 each) -> (dx, dy); OptionError("motion") otherwise.
+std::pair<double, double> parseMotion(const std::string& text);
 
 /// "name:radius" -> (name, radius), e.g. "gaussian:1.5"; OptionError("filter") for anything else or an
 /// unknown filter name.

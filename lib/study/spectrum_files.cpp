@@ -247,7 +247,7 @@ void checkShardSpectra(const std::vector<std::string>& inputs) {
     std::map<std::string, std::vector<std::string>> configs;  // scene -> configurations of the CSV
     for (const std::string& l : readCsvLines(input)) {
       const auto f = splitCsvLine(l);
-      if (f.size() != csvColumns().size()) continue;
+      if (!isStudyRow(f)) continue;
       auto& v = configs[f[csvColumn("scene")]];
       const std::string key = spectrumKeyOfCsvRow(f);
       if (v.empty() || v.back() != key) v.push_back(key);

@@ -19,6 +19,7 @@
 #include "study/lock.h"
 #include "study/spectrum_files.h"
 #include "study/sweep_group.h"
+#include "study/sweep_motion.h"
 #include "study/sweep_rows.h"
 #include "study/sweep_scene.h"
 #include "study/validate.h"
@@ -34,7 +35,7 @@ namespace {
 std::unique_ptr<CsvAppender> openCsv(const StudyConfig& config, const std::string& csv) {
   std::unique_ptr<CsvAppender> out;
   if (!config.refsOnly) {
-    out = std::make_unique<CsvAppender>(csv);
+    out = std::make_unique<CsvAppender>(csv, config.frames > 1);
     checkSameStudy(csv, out->resumedLines(), config);
   }
   for (const std::string& dir : {config.out, config.cache})
@@ -78,8 +79,8 @@ std::vector<SampleSetGroup> planShard(const StudyConfig& config, const StudyPlan
 }
 
 // One group: its rows' accumulators, its seeds (study/sweep_group.h), its rows finished, then handed to the writer.
-void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& group, std::vector<PendingRow>& rows,
-                  const RowReferences& refs) {
+void runGroupRows(SweepRun& run, StudyScene& scene, const SampleSetGroup& group, std::vector<PendingRow>& rows,
+                  const RowReferences& refs, const MotionReferences& motion) {
   if (rows.empty()) {
     run.progress.advance(run.config.seeds);
     return;
@@ -103,6 +104,11 @@ void runGroupRows(SweepRun& run, const StudyScene& scene, const SampleSetGroup& 
                          run.sum, spent};
   const uint64_t rays0 = tracer.counters().total().primary;
   runGroup(ctx, [&](double u) { run.progress.advance(u); });
+  if (run.config.frames > 1) {  // the frames: every seed's F frames into each row's motion columns
+    const Stopwatch frames;
+    measureGroupMotion(run.config, scene, tracer, group, rows, motion, run.plan.targets, run.threads);
+    phases.motion += frames.seconds();
+  }
   run.sum.primaryRays += tracer.counters().total().primary - rays0;
 
   // Results and images one task per row, then the CSV lines in row order on the writer's thread.
@@ -142,7 +148,7 @@ void resumeSpectra(SweepRun& run, const std::string& stem) {
   std::set<std::string> lost;
   for (const std::string& line : run.out->resumedLines()) {
     const auto f = splitCsvLine(line);
-    if (f.size() != csvColumns().size() || f[csvColumn("scene")] != stem) continue;
+    if (!isStudyRow(f) || f[csvColumn("scene")] != stem) continue;
     if (done.count(spectrumKeyOfCsvRow(f)) || !present.count(spectrumKeyOfCsvRow(f))) continue;
     lost.insert(spectrumKeyOfCsvRow(f));
     run.out->forget(csvKey(f));
@@ -177,10 +183,16 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   // The scene's acceleration structure and tracer: built once, here.
   const auto scene = loadStudyScene(path, config.width, config.height, config.maxSize, config.longSide);
   const ReferenceSet refs = sceneReferences(config, *scene, specs, referenceOptions(config), run.sum.images);
+  // With frames: every later frame's references too (study/sweep_motion.h).
+  const std::vector<ReferenceSet> later = config.frames > 1 ? frameReferences(config, *scene, specs,
+                                                                              referenceOptions(config))
+                                                            : std::vector<ReferenceSet>();
+  MotionReferences motion{{&refs}, &specs};
+  for (const ReferenceSet& r : later) motion.perFrame.push_back(&r);
   run.sum.phases.references += clock.seconds();
   if (config.refsOnly) return;
   const RowReferences rowRefs(refs, specs, run.plan.targets);
-  for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs);
+  for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs, motion);
 }
 
 // The groups of `groups` from `first` that share its scene (groups come scene by scene).

@@ -106,6 +106,7 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
     r.blurRatio = st.blurRatio, r.blurRatioSe = st.blurRatioSe;
     r.flip = p.flipSums[j] / seeds;
     r.flagged = r.mseTarget < 2.0 * r.mseTargetSe ? 1 : 0;
+    if (!p.motion.empty()) r.motion = p.motion[j];
     p.rows.push_back(std::move(r));
   }
   if (images)

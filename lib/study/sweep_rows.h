@@ -41,6 +41,7 @@ struct PendingRow {
   std::vector<const FlipReference*> flipTargets;  ///< per target: what its flip column compares against
   std::vector<double> flipSums;  ///< per target: sum over the seeds of meanFlip(I_k, T), in seed order
   std::vector<CsvRow> rows;      ///< finishRow: the missing target rows, in target order
+  std::vector<MotionColumns> motion;  ///< per target: the motion columns (frames > 1, study/sweep_motion.h)
 };
 
 /// What an adaptive sampler actually spent in a group (mean over seeds of the mean spp, max over seeds),

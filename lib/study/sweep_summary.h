@@ -22,6 +22,7 @@ struct SweepPhases {
   double setup = 0, trace = 0, splat = 0, resolve = 0, metrics = 0, flip = 0, finish = 0, waiting = 0;
   double references = 0, io = 0;  ///< wall seconds on the main thread (io: waiting for the writer, canonical order)
   double writer = 0;               ///< seconds the writer thread spent on CSV/spectrum lines, overlapped with work
+  double motion = 0;               ///< wall seconds of the frames pass (frames > 1, study/sweep_motion.h)
 };
 
 struct SweepSummary {

@@ -78,6 +78,11 @@ StudyPlan validateStudy(const StudyConfig& c) {
   // The reference options: one check (study/reference.h), the same as the reference front end's.
   rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
   if (c.threads < 0) throw OptionError("threads", "must be >= 0");
+  if (c.frames < 1 || c.frames > 1000)
+    throw OptionError("frames", "must be in 1..1000 (1: a still study), found " + std::to_string(c.frames));
+  if (!std::isfinite(c.motionDx) || !std::isfinite(c.motionDy) || std::abs(c.motionDx) > 1e4 ||
+      std::abs(c.motionDy) > 1e4)
+    throw OptionError("motion", "dx and dy must be finite numbers of pixels per frame (at most 1e4)");
   if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
     throw OptionError("size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("max-size", "must be >= 0");
@@ -175,13 +180,20 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
   const std::string wanted[] = {std::to_string(c.seeds), std::to_string(c.refSpp)};
   for (size_t i = 0; i < lines.size(); ++i) {
     const auto f = splitCsvLine(lines[i]);
-    if (f.size() != csvColumns().size()) continue;
+    if (!isStudyRow(f)) continue;
     for (size_t k = 0; k < std::size(studyWide); ++k)
       if (field(f, studyWide[k].first) != wanted[k])
         throw OptionError(studyWide[k].second, csv + " holds a study made with " + studyWide[k].first + " " +
                                                    field(f, studyWide[k].first) + " (data row " +
                                                    std::to_string(i + 1) + "); this run asks for " + wanted[k] +
                                                    sameStudyAdvice());
+    // Frames and motion are study-wide too (the CsvAppender refuses a still CSV for a study with frames).
+    const size_t m = csvColumns().size();
+    if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatNumber(c.motionDx, "%.9g") ||
+                         f[m + 2] != formatNumber(c.motionDy, "%.9g")))
+      throw OptionError(f[m] != std::to_string(c.frames) ? "frames" : "motion",
+                        csv + " holds a study made with " + f[m] + " frames and motion " + f[m + 1] + "," +
+                            f[m + 2] + " (data row " + std::to_string(i + 1) + ")" + sameStudyAdvice());
   }
   // The targets are study-wide too: every configuration has one row per target, so another list would add a
   // second set of rows to the same configurations (and change which target is primary).
@@ -189,7 +201,7 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
   for (const Target& t : parseTargets(c.targets)) asked.push_back(t.label);
   for (const std::string& l : lines) {
     const auto f = splitCsvLine(l);
-    if (f.size() == csvColumns().size() && std::find(held.begin(), held.end(), field(f, "target")) == held.end())
+    if (isStudyRow(f) && std::find(held.begin(), held.end(), field(f, "target")) == held.end())
       held.push_back(field(f, "target"));
   }
   auto sorted = [](std::vector<std::string> v) { return std::sort(v.begin(), v.end()), v; };
@@ -207,7 +219,7 @@ void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& 
                         int width, int height) {
   for (size_t i = 0; i < lines.size(); ++i) {
     const auto f = splitCsvLine(lines[i]);
-    if (f.size() != csvColumns().size() || field(f, "scene") != stem) continue;
+    if (!isStudyRow(f) || field(f, "scene") != stem) continue;
     if (field(f, "width") != std::to_string(width) || field(f, "height") != std::to_string(height))
       throw OptionError("size", csv + " holds scene " + stem + " at " + field(f, "width") + " x " +
                                       field(f, "height") + " (data row " + std::to_string(i + 1) +

@@ -1,0 +1,100 @@
+// Frames in the sweep (study/sweep_motion.h).
+#include "study/sweep_motion.h"
+
+#include <algorithm>
+#include <memory>
+
+#include "film/film.h"
+#include "measure/motion.h"
+#include "render/sample_source.h"
+#include "study/motion_study.h"
+
+namespace aliaslab {
+
+namespace {
+
+// Moves the scene's camera frame by frame and puts the still camera and hash back when it goes.
+class FrameCamera {
+ public:
+  FrameCamera(StudyScene& s, const StudyConfig& c)
+      : s_(s), c_(c), base_(std::move(s.scene.camera)), hash_(s.contentHash) {}
+  ~FrameCamera() { s_.scene.camera = std::move(base_), s_.contentHash = hash_; }
+  FrameCamera(const FrameCamera&) = delete;
+  FrameCamera& operator=(const FrameCamera&) = delete;
+  void set(int t) { setMotionFrame(s_, *base_, hash_, t, c_.motionDx, c_.motionDy); }
+
+ private:
+  StudyScene& s_;
+  const StudyConfig& c_;
+  std::unique_ptr<Camera> base_;
+  uint64_t hash_;
+};
+
+size_t indexOf(const std::vector<FilterSpec>& specs, const FilterSpec& spec) {
+  return size_t(std::find(specs.begin(), specs.end(), spec) - specs.begin());
+}
+
+// Frame t's estimate of the reference of `spec`.
+RefEstimate estimate(const MotionReferences& refs, int t, const FilterSpec& spec) {
+  const ReferenceImage& r = refs.perFrame[t]->images.at(indexOf(*refs.specs, spec));
+  return {&r.image, &r.halfDiff, spec.second};
+}
+
+}  // namespace
+
+std::vector<ReferenceSet> frameReferences(const StudyConfig& c, StudyScene& scene, const std::vector<FilterSpec>& specs,
+                                          const ReferenceOptions& options) {
+  FrameCamera camera(scene, c);
+  std::vector<ReferenceSet> sets;
+  for (int t = 1; t < c.frames; ++t) {
+    camera.set(t);
+    sets.push_back(cachedReferences(scene, specs, options, c.cache));
+  }
+  return sets;
+}
+
+void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& tracer, const SampleSetGroup& group,
+                        std::vector<PendingRow>& rows, const MotionReferences& refs,
+                        const std::vector<Target>& targets, int threads) {
+  const int F = c.frames, K = c.seeds;
+  FrameCamera camera(scene, c);
+  // images[r][k][t]: row r, seed k, frame t
+  std::vector<std::vector<std::vector<Image>>> images(rows.size(),
+                                                      std::vector<std::vector<Image>>(K, std::vector<Image>(F)));
+  for (int k = 0; k < K; ++k) {
+    const auto source = makeSampleSource(group.sampler, group.spp, static_cast<uint64_t>(k));
+    for (int t = 0; t < F; ++t) {
+      camera.set(t);
+      const bool shared = std::any_of(rows.begin(), rows.end(),
+                                      [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
+      const SampleBuffer samples = shared ? source->trace(tracer, scene.width, scene.height, threads) : SampleBuffer();
+      for (size_t r = 0; r < rows.size(); ++r) {
+        const Filter& filter = *rows[r].filter.filter;
+        if (rows[r].mode == ReconMode::ImportanceSampled) {
+          const SampleBuffer own = source->traceImportance(tracer, filter, scene.width, scene.height, threads);
+          images[r][k][t] = reconstruct(own, filter, rows[r].mode, threads).image;
+        } else {
+          images[r][k][t] = reconstruct(samples, filter, rows[r].mode, threads).image;
+        }
+      }
+    }
+  }
+  for (size_t r = 0; r < rows.size(); ++r) {
+    PendingRow& p = rows[r];
+    const FilterSpec own = p.mode == ReconMode::Supersample ? kAreaSpec : p.filter.spec;
+    std::vector<RefEstimate> g;
+    for (int t = 0; t < F; ++t) g.push_back(estimate(refs, t, own));
+    const MotionMetrics mine = computeMotionMetrics(images[r], g);
+    p.motion.clear();
+    for (const Target& target : targets) {
+      std::vector<RefEstimate> T;
+      for (int t = 0; t < F; ++t) T.push_back(estimate(refs, t, target.spec));
+      const MotionMetrics m = computeMotionMetrics(images[r], T);
+      p.motion.push_back({F, c.motionDx, c.motionDy, m.shimmer, m.shimmerSe, m.flickerSameSeed, m.flickerSameSeedSe,
+                          m.flickerNewSeed, m.flickerNewSeedSe, mine.shimmer, mine.shimmerSe});
+    }
+    images[r].clear();
+  }
+}
+
+}  // namespace aliaslab
