@@ -17,6 +17,7 @@ from . import docs_html, navigation, studies
 from .elements import figure, image_src, write_page
 from .findings import findings, method_name, tie_rules
 from .markdown import markdown_tables
+from .motion import motion_section
 from .scene import scene_notes, scene_section
 from ..viewer.section import viewer_section
 from .summary_chart import summary_chart
@@ -198,6 +199,7 @@ SECTIONS = [
     findings_section,
     lambda c: targets_section(c.s, c.science),
     summary_section,
+    motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
     stability_section,

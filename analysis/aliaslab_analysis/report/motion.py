@@ -1,0 +1,172 @@
+"""The motion section of the report (issue 33 item 4; definitions docs/science.md "Motion"). For a study CSV made
+with frames (sweep --frames F > 1: the motion columns of lib/study/csv.h), against the primary target:
+  - per scene a chart: shimmer against blur, shimmer_filter against blur and shimmer against noise, one line
+    per (sampler, spp, filter) through its radii;
+  - per scene and (sampler, spp) the still-image ranking (mse_target, frame 0) beside the in-motion rankings
+    (shimmer, and flicker with one seed per sequence), each in order with its top group (tied with the best by
+    the two-standard-error rule, stats/ties.py top_group) in bold;
+  - the animated loop of frames of one scene with each frame's error (motion_loop.py), when loop.png and its
+    loop.csv are beside the CSV.
+Every number in the prose comes from facts(), computed from the CSV; tests/analysis/test_motion_report.py
+recomputes them from the CSV's text by another path. '' for a still study (no frames column, or F = 1)."""
+import csv
+import html
+import os
+
+import numpy as np
+
+from .. import figures, palette
+from ..figures import plt
+from ..stats import ties
+from .elements import figure
+
+MEASURES = [("still (mse_target)", "mse_target", "mse_target_se", True),
+            ("in motion: shimmer", "shimmer", "shimmer_se", False),
+            ("in motion: flicker, one seed", "flicker_same", "flicker_same_se", False)]
+
+
+def motion_rows(df, target):
+    """The rows of a study with frames against `target`, or None for a still study."""
+    if "frames" not in df.columns or not (df["frames"].astype(float) > 1).any():
+        return None
+    return df[(df["target"].astype(str) == target) & (df["frames"].astype(float) > 1)].copy()
+
+
+def method(r):
+    recon = "" if str(r["reconstruction"]) == "weighted" else f" ({r['reconstruction']})"
+    return f"{r['filter_name']} {float(r['radius']):g}{recon}"
+
+
+def ranked(cell, column, se_column, paired):
+    """The cell's rows in order of `column` with ties.top_group's `top` (paired by seeds only for mse_target)."""
+    rows = cell.copy()
+    rows["error"], rows["error_se"] = rows[column].astype(float), rows[se_column].astype(float)
+    if not paired:
+        rows = rows.drop(columns=[c for c in ("seed_values",) if c in rows.columns])
+    return ties.top_group(rows).sort_values("error")
+
+
+def best(cell, column):
+    return method(cell.loc[cell[column].astype(float).idxmin()])
+
+
+def facts(rows):
+    """The section's numbers: cells = (scene, sampler, spp); `tradeoff`: cells whose Gaussians (two radii or
+    more) have shimmer_filter falling and blur rising with the radius; `differ_shimmer` / `differ_flicker`:
+    cells whose lowest mse_target is another method than their lowest shimmer / flicker_same; `wide_more`:
+    cells whose widest Gaussian has a higher shimmer than their box r = 0.5 (against the target)."""
+    out = dict(cells=0, gaussian_cells=0, tradeoff=0, differ_shimmer=0, differ_flicker=0, box_cells=0, wide_more=0)
+    for _, cell in rows.groupby(["scene", "sampler", "spp"], sort=True):
+        out["cells"] += 1
+        out["differ_shimmer"] += best(cell, "mse_target") != best(cell, "shimmer")
+        out["differ_flicker"] += best(cell, "mse_target") != best(cell, "flicker_same")
+        g = cell[(cell["filter_name"] == "gaussian") & (cell["reconstruction"] == "weighted")].sort_values("radius")
+        if len(g) >= 2:
+            out["gaussian_cells"] += 1
+            sf, blur = g["shimmer_filter"].to_numpy(float), g["blur"].to_numpy(float)
+            out["tradeoff"] += bool((np.diff(sf) < 0).all() and (np.diff(blur) > 0).all())
+        box = cell[(cell["filter_name"] == "box") & (cell["radius"].astype(float) == 0.5) &
+                   (cell["reconstruction"] == "weighted")]
+        if len(g) >= 1 and len(box) == 1:
+            out["box_cells"] += 1
+            out["wide_more"] += float(g["shimmer"].iloc[-1]) > float(box["shimmer"].iloc[0])
+    return out
+
+
+def chart(rows, scene, out_dir):
+    """shimmer vs blur, shimmer_filter vs blur, shimmer vs noise for one scene; returns the PNG path."""
+    panels = [("blur", "shimmer", "shimmer (against the target)"),
+              ("blur", "shimmer_filter", "shimmer_filter (against own references)"),
+              ("noise", "shimmer", "shimmer (against the target)")]
+    fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
+    sd = rows[rows["scene"] == scene]
+    for ax, (x, y, title) in zip(axes, panels):
+        for (sampler, spp, name, recon), line in sd.groupby(["sampler", "spp", "filter_name", "reconstruction"]):
+            line = line.sort_values("radius")
+            ax.plot(line[x].astype(float), line[y].astype(float), marker=palette.filter_marker(name),
+                    color=palette.sampler_colour(sampler), linestyle="-" if int(spp) == sd["spp"].min() else "--",
+                    label=f"{sampler} {int(spp)} spp, {name}" + ("" if recon == "weighted" else f" ({recon})"))
+            for _, r in line.iterrows():
+                ax.annotate(f"{float(r['radius']):g}", (float(r[x]), float(r[y])), fontsize=7, xytext=(3, 3),
+                            textcoords="offset points")
+        ax.set_xscale("symlog", linthresh=1e-6)
+        ax.set_yscale("symlog", linthresh=1e-6)
+        ax.set_xlabel(f"{x} (the still image, frame 0)")
+        ax.set_ylabel(y)
+        ax.set_title(title, fontsize=10)
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=7, loc="best")
+    fig.suptitle(f"{scene}: aliasing in motion beside blur and noise (numbers: filter radius; lower is steadier)")
+    return figures.save_figure(fig, out_dir, f"motion-{figures.slug(scene)}")[0]
+
+
+def ranking_table(rows, scene):
+    head = "".join(f"<th>{html.escape(label)}</th>" for label, _, _, _ in MEASURES)
+    body = []
+    for (sampler, spp), cell in rows[rows["scene"] == scene].groupby(["sampler", "spp"], sort=True):
+        tds = []
+        for _, col, se, paired in MEASURES:
+            parts = []
+            for _, r in ranked(cell, col, se, paired).iterrows():
+                text = f"{html.escape(method(r))} ({float(r[col]):.2g})"
+                parts.append(f"<b>{text}</b>" if r["top"] else text)
+            tds.append("<td style='text-align:left'>" + ", ".join(parts) + "</td>")
+        body.append(f"<tr><td>{html.escape(str(sampler))} {int(spp)} spp</td>{''.join(tds)}</tr>")
+    return f"<table><tr><th>sampler</th>{head}</tr>{''.join(body)}</table>"
+
+
+def loop_part(results, folder, embed):
+    """The animated loop and its per-frame errors, when motion_loop.py wrote them beside the CSV."""
+    png, table = os.path.join(folder, "loop.png"), os.path.join(folder, "loop.csv")
+    if not (os.path.isfile(png) and os.path.isfile(table)):
+        return ""
+    with open(table, newline="") as f:
+        errs = list(csv.DictReader(f))
+    by = {}
+    for r in errs:
+        by.setdefault(r["method"], []).append(float(r["mse"]))
+    rows = "".join(f"<tr><td>{html.escape(m)}</td>" + "".join(f"<td>{v:.2e}</td>" for v in vals) +
+                   f"<td>{np.mean(vals):.2e}</td></tr>" for m, vals in by.items())
+    n = max(len(v) for v in by.values())
+    head = "".join(f"<th>frame {t}</th>" for t in range(n))
+    return (figure(results, png, "A short loop of frames (the camera moving as in the study): the reference, then "
+                   "per method its frame and its signed error against that frame's reference (red above, blue "
+                   "below), with the frame's error (mean squared difference) above it. Made by "
+                   "<code>motion_loop.py</code> from <code>raytracer -frames</code> renders.", embed,
+                   anchor="motion-loop", toc="motion: a loop of frames")
+            + f"<table><tr><th>method</th>{head}<th>mean</th></tr>{rows}</table>")
+
+
+def motion_section(c):
+    rows = motion_rows(c.df, c.s.primary)
+    if rows is None or rows.empty:
+        return ""
+    f = facts(rows)
+    frames = int(rows["frames"].iloc[0])
+    dx, dy = float(rows["motion_dx"].iloc[0]), float(rows["motion_dy"].iloc[0])
+    body = ["<h2 id='motion'>Aliasing in motion</h2>",
+            f"<p>Every configuration rendered in {frames} frames of a camera moving ({dx:g}, {dy:g}) pixels per "
+            f"frame, each frame against its own references (definitions: <a href='{c.science}'>docs/science.md"
+            "</a>, \"Motion\"). <code>shimmer</code>: the squared frame-to-frame change of the structured error "
+            "against the target, noise removed; <code>shimmer_filter</code>: the same against each filter's own "
+            "references (aliasing in motion without the blur); <code>flicker</code>: the frame change one rendered "
+            "sequence shows with one seed, noise included. The still columns are frame 0's.</p>",
+            f"<div class='answer'><b>Answer for this study</b> (computed from the CSV). In {f['tradeoff']} of "
+            f"{f['gaussian_cells']} (scene, sampler, spp) cells with two or more Gaussian radii, shimmer_filter "
+            "falls and blur rises as the Gaussian widens: the trade-off. Against the target, the widest Gaussian "
+            f"shimmers more than the box r = 0.5 in {f['wide_more']} of {f['box_cells']} cells (its blur moves "
+            f"with the picture). The still image's best method is not the steadiest in {f['differ_shimmer']} of "
+            f"{f['cells']} cells by shimmer and in {f['differ_flicker']} by flicker (lowest value; ties in the "
+            "tables below).</div>"]
+    for scene in sorted(rows["scene"].unique()):
+        png = chart(rows, scene, c.charts_dir)
+        body.append(f"<h3>{html.escape(str(scene))}</h3>")
+        body.append(figure(c.results, png, f"{html.escape(str(scene))}: shimmer against blur (left), shimmer_filter "
+                           "against blur (middle) and shimmer against noise (right), per filter and radius "
+                           "(symmetric log axes: zero is drawn).", c.embed, anchor=f"motion-{figures.slug(scene)}",
+                           toc=f"motion: {scene}"))
+        body.append("<p>Rankings, lowest first, with the value; <b>bold</b>: tied with the best by the "
+                    "two-standard-error rule (mse_target paired over seeds, the motion measures unpaired).</p>")
+        body.append(ranking_table(rows, scene))
+    body.append(loop_part(c.results, os.path.dirname(os.path.abspath(c.study)), c.embed))
+    return "\n".join(p for p in body if p)
