@@ -21,7 +21,7 @@ from . import errors
 from .viewer.exr import read_exrs
 
 SCALE = 2           # pixels per image pixel in the animation (nearest neighbour)
-ERROR_RANGE = 0.5   # the signed error map's full scale (red positive, blue negative)
+ERROR_RANGE = 0.2   # the signed error map's full scale (red positive, blue negative)
 FRAME_MS = 300
 
 

@@ -61,12 +61,12 @@ void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& t
   // images[r][k][t]: row r, seed k, frame t
   std::vector<std::vector<std::vector<Image>>> images(rows.size(),
                                                       std::vector<std::vector<Image>>(K, std::vector<Image>(F)));
+  const bool shared = std::any_of(rows.begin(), rows.end(),  // a row reconstructs the shared sample set
+                                  [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
   for (int k = 0; k < K; ++k) {
     const auto source = makeSampleSource(group.sampler, group.spp, static_cast<uint64_t>(k));
     for (int t = 0; t < F; ++t) {
       camera.set(t);
-      const bool shared = std::any_of(rows.begin(), rows.end(),
-                                      [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
       const SampleBuffer samples = shared ? source->trace(tracer, scene.width, scene.height, threads) : SampleBuffer();
       for (size_t r = 0; r < rows.size(); ++r) {
         const Filter& filter = *rows[r].filter.filter;

@@ -10,8 +10,8 @@
 // (film/film.h reconstruct; importance rows trace their own), and gives each row its motion columns per target
 // of the study (PendingRow::motion, study/csv.h MotionColumns): shimmer and the two flickers against that
 // target's T_t, shimmer_filter against the row's own references G_t (the pixel area for supersample rows).
-// Memory: a row holds its K x F images until its measures are taken (rows x K x F images per group, beyond the
-// still pass's bound, study/sweep_memory.h). Threads: seeds and frames in order, each trace and reconstruction
+// Memory: a row holds its K x F images until its measures are taken (rows x K x F images per group), and every
+// frame's references are held for the scene; validateStudy adds both to the still pass's bound (sweep_memory.h). Threads: seeds and frames in order, each trace and reconstruction
 // on every thread; no number depends on the thread count. The scene's camera and content hash are restored.
 #pragma once
 #include <vector>

@@ -138,8 +138,13 @@ StudyPlan validateStudy(const StudyConfig& c) {
     // the references.
     const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
     const double pixels = double(size.width) * size.height;
-    requireMemory(double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup, weightedRows,
-                                          c.seeds)) +
+    // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
+    const double image = double(imageBytes(size.width, size.height));
+    const double frames = c.frames > 1 ? double(rowsPerGroup) * c.seeds * c.frames * image +
+                                             (c.frames - 1) * pixels * double(referenceCount) * 6 * sizeof(float)
+                                       : 0.0;
+    requireMemory(frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
+                                                   weightedRows, c.seeds)) +
                       std::max(pixels * references,
                                referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
                   "size",

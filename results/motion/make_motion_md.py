@@ -52,7 +52,13 @@ def main():
              "error over the 8 seeds where there is one; the uniform sampler is deterministic). `shimmer` is",
              "against the pixel-area target, `shimmer_filter` against each filter's own references (aliasing",
              "in motion without the blur). 256 x 256 pixels, 8 frames, the camera moving 0.25 pixel per frame",
-             "along x, references of 256 samples per pixel per frame.", ""]
+             "along x, references of 256 samples per pixel per frame.", "",
+             "The motion study made by the sweep (`sweep --frames 8 --motion 0.25,0`: the grating and the zone",
+             "plate at 128 px, box and Gaussian at four radii, every row with its still and motion columns) is",
+             "[results/motion/index.html](motion/index.html), made by `results/motion/make_study.sh`: shimmer",
+             "against blur and noise, the still and the in-motion rankings with ties, and a loop of frames with",
+             "each frame's error. The tables below are the first measurement, by `experiments/motion` at 256 px.",
+             ""]
     for scene in SCENES:
         path = os.path.join(HERE, scene + ".csv")
         if not os.path.exists(path):

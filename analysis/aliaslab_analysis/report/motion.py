@@ -51,16 +51,18 @@ def best(cell, column):
 
 
 def facts(rows):
-    """The section's numbers: cells = (scene, sampler, spp); `tradeoff`: cells whose Gaussians (two radii or
-    more) have shimmer_filter falling and blur rising with the radius; `differ_shimmer` / `differ_flicker`:
-    cells whose lowest mse_target is another method than their lowest shimmer / flicker_same; `wide_more`:
-    cells whose widest Gaussian has a higher shimmer than their box r = 0.5 (against the target)."""
+    """The section's numbers: cells = (scene, sampler, spp); `tradeoff`: cells whose Gaussians of radius 1 or more
+    (two radii or more; at r = 0.5, sigma = r / 3 is narrower than the pixel, and its blur against the pixel
+    area a sharpening) have shimmer_filter falling and blur rising with the radius, value by value;
+    `differ_shimmer` / `differ_flicker`: cells whose lowest mse_target is another method than their lowest
+    shimmer / flicker_same; `wide_more`: cells whose widest Gaussian has a higher shimmer than their box r = 0.5 (against the target)."""
     out = dict(cells=0, gaussian_cells=0, tradeoff=0, differ_shimmer=0, differ_flicker=0, box_cells=0, wide_more=0)
     for _, cell in rows.groupby(["scene", "sampler", "spp"], sort=True):
         out["cells"] += 1
         out["differ_shimmer"] += best(cell, "mse_target") != best(cell, "shimmer")
         out["differ_flicker"] += best(cell, "mse_target") != best(cell, "flicker_same")
-        g = cell[(cell["filter_name"] == "gaussian") & (cell["reconstruction"] == "weighted")].sort_values("radius")
+        g = cell[(cell["filter_name"] == "gaussian") & (cell["reconstruction"] == "weighted") &
+                 (cell["radius"].astype(float) >= 1)].sort_values("radius")
         if len(g) >= 2:
             out["gaussian_cells"] += 1
             sf, blur = g["shimmer_filter"].to_numpy(float), g["blur"].to_numpy(float)
@@ -132,7 +134,9 @@ def loop_part(results, folder, embed):
     return (figure(results, png, "A short loop of frames (the camera moving as in the study): the reference, then "
                    "per method its frame and its signed error against that frame's reference (red above, blue "
                    "below), with the frame's error (mean squared difference) above it. Made by "
-                   "<code>motion_loop.py</code> from <code>raytracer -frames</code> renders.", embed,
+                   "<code>motion_loop.py</code> from <code>raytracer -frames</code> renders. A grating moved across its "
+                   "stripes has the same error in every frame: what changes is where the error lies, and that "
+                   "change is the shimmer.", embed,
                    anchor="motion-loop", toc="motion: a loop of frames")
             + f"<table><tr><th>method</th>{head}<th>mean</th></tr>{rows}</table>")
 
@@ -152,9 +156,10 @@ def motion_section(c):
             "references (aliasing in motion without the blur); <code>flicker</code>: the frame change one rendered "
             "sequence shows with one seed, noise included. The still columns are frame 0's.</p>",
             f"<div class='answer'><b>Answer for this study</b> (computed from the CSV). In {f['tradeoff']} of "
-            f"{f['gaussian_cells']} (scene, sampler, spp) cells with two or more Gaussian radii, shimmer_filter "
-            "falls and blur rises as the Gaussian widens: the trade-off. Against the target, the widest Gaussian "
-            f"shimmers more than the box r = 0.5 in {f['wide_more']} of {f['box_cells']} cells (its blur moves "
+            f"{f['gaussian_cells']} (scene, sampler, spp) cells with two or more Gaussian radii of 1 pixel or more, "
+            "shimmer_filter falls and blur rises at every step as the Gaussian widens: the trade-off (value by "
+            "value, without the standard errors: a rise within noise counts against it). Against the target, the "
+            f"widest Gaussian shimmers more than the box r = 0.5 in {f['wide_more']} of {f['box_cells']} cells (its blur moves "
             f"with the picture). The still image's best method is not the steadiest in {f['differ_shimmer']} of "
             f"{f['cells']} cells by shimmer and in {f['differ_flicker']} by flicker (lowest value; ties in the "
             "tables below).</div>"]
