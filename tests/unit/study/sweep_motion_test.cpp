@@ -1,7 +1,8 @@
 // The sweep with frames (study/sweep_motion.h) at 24 px: its motion columns are the motion study's numbers
 // (study/motion_study.h, another assembly of the same frames, references rendered into another cache); its still
 // columns are those of the same study without frames (frame 0 is the still image), whose CSV has no motion
-// columns; no number depends on the thread count; a CSV of one kind is not resumed by a study of another.
+// columns; no number depends on the thread count; two shards merge into the unsharded CSV; a CSV of one kind is
+// not resumed by a study of another.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include "core/error.h"
 #include "study/config.h"
 #include "study/csv.h"
+#include "study/merge.h"
 #include "study/motion_study.h"
 #include "study/sweep.h"
 
@@ -163,6 +165,28 @@ TEST(SweepMotion, StillColumnsAreTheStillStudysAndThreadsChangeNothing) {
   EXPECT_THROW(runSweep(again), FileError);
   again = study("still", 3, 1);
   EXPECT_THROW(runSweep(again), FileError);
+}
+
+TEST(SweepMotion, ShardsMergeIntoTheWholeStudy) {
+  const auto whole = framesStudy(1, "whole");
+  std::vector<std::string> shards;
+  for (int i = 0; i < 2; ++i) {
+    StudyConfig c = study("sharded", 3, 1);
+    c.shardIndex = i, c.shardCount = 2;
+    runSweep(c);
+    shards.push_back(csvPath(c));
+  }
+  StudyConfig merged = study("sharded", 3, 1);
+  merged.csv = (scratch() / "sharded" / "merged.csv").string();
+  mergeStudy(merged.csv, shards, "test");
+  std::string header;
+  const auto rows = readRows(merged, header);
+  EXPECT_EQ(header, csvHeader(true));
+  ASSERT_EQ(rows.size(), whole.size());
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (size_t i = 0; i < rows[r].size(); ++i) {
+      if (!variable(i)) EXPECT_EQ(rows[r][i], whole[r][i]) << "row " << r << " column " << i;
+    }
 }
 
 TEST(SweepMotion, RefusesBadFramesAndMotion) {
