@@ -43,8 +43,8 @@ StudyPlan validateStudy(const StudyConfig& config);
 /// created before it are removed again (nothing is left behind) and OptionError(key) is thrown.
 void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders);
 
-/// A CSV holds one study: throws OptionError keyed "seeds", "ref-spp", "frames" or "motion" when a row of the existing CSV `lines`
-/// was made with another value than `config` asks for (a rerun would add a second copy).
+/// A CSV holds one study: throws OptionError keyed "seeds", "ref-spp", "frames" or "motion" when a row of the
+/// existing CSV `lines` was made with another value than `config` asks for (a rerun would add a second copy).
 void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& config);
 /// The same for the image size of one scene (OptionError "size").
 void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,

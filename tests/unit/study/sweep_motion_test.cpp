@@ -185,7 +185,9 @@ TEST(SweepMotion, ShardsMergeIntoTheWholeStudy) {
   ASSERT_EQ(rows.size(), whole.size());
   for (size_t r = 0; r < rows.size(); ++r)
     for (size_t i = 0; i < rows[r].size(); ++i) {
-      if (!variable(i)) EXPECT_EQ(rows[r][i], whole[r][i]) << "row " << r << " column " << i;
+      if (!variable(i)) {
+        EXPECT_EQ(rows[r][i], whole[r][i]) << "row " << r << " column " << i;
+      }
     }
 }
 
