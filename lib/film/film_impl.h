@@ -27,18 +27,8 @@ constexpr int kBand = 32;
 /// sample-by-sample set-up, for tests).
 /// Float sums were measured no faster and lose the 1e-6 agreement where
 /// negative lobes cancel.
-///
-/// The path (SplatPath): Runs (the default) sorts each batch by its samples'
-/// first pixel (stably) and adds each run of samples with the same first
-/// pixel into registers, loading and storing each pixel's sum once per run.
-/// Every contribution w L is the same double as Direct's (the same weights,
-/// exact products); only the order in which a pixel's sum adds them
-/// changes, within a batch of kBatch samples. Direct adds the samples in
-/// memory order (the definition the tolerance is stated against: film_test
-/// RunsPathWithinToleranceOfDirect, docs/science.md "Reconstruction").
-enum class SplatPath { Direct, Runs };
 void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads,
-                   bool allowAvx2 = true, SplatPath path = SplatPath::Runs);
+                   bool allowAvx2 = true);
 
 /// splatWeighted for several filters at once, sums[k] for filters[k], each
 /// exactly as on its own: filters of equal radius share one pass, so each
@@ -48,8 +38,7 @@ void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* su
 /// seconds summed over the threads. overwrite: the sums need not be initialised; every value is set to
 /// 0.0 + this pass's sum, bit for bit what adding into zeroed sums gives (an Accumulator's first batch).
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true, bool overwrite = false,
-              SplatPath path = SplatPath::Runs);
+              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true, bool overwrite = false);
 
 /// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel); returns the
 /// number of samples skipped as non-finite.

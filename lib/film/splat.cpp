@@ -19,14 +19,6 @@
 // any sample it does not handle (near the image's first rows and columns,
 // partly outside the band, wider than a block, not finite) goes one by one.
 //
-// SplatPath::Runs (the default, for n <= 6): before the weights, each batch is put in the order of its
-// samples' first pixel (stable), so the samples of a pixel's quadrant (even n) or of the whole pixel (odd n)
-// form a run; the kernel then adds each run into registers, block row by block row, in interleaved partial
-// sums, with the float weights widened to double once per batch (the products stay exact). The terms are
-// Direct's; only the order of each pixel's double additions within a batch changes (the tolerance:
-// film_impl.h SplatPath). Batches end at the same samples with and without the 8-sample set-up, so the order,
-// like the sums, is the same on every CPU.
-//
 // In this file: addPlainSums, splatAll (the passes per radius) and splatWeighted. The pass per radius and
 // the 8-sample set-up are in splat_pass.cpp (its work spaces in splat_workspace.h), the accumulation
 // kernels in splat_kernels.cpp, the band buffer's cells and the batch in splat_impl.h.
@@ -53,7 +45,7 @@ size_t addPlainSums(const SampleBuffer& samples, double* plain) {
 }
 
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds, bool allowAvx2, bool overwrite, SplatPath path) {
+              int threads, double* ownSeconds, bool allowAvx2, bool overwrite) {
   const int H = samples.height();
   RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
   parallelFor(H, threads, [&](int sj) {
@@ -74,15 +66,14 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
         group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
     std::vector<double> own(group.size(), 0.0);
     splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr,
-                    overwrite, path);
+                    overwrite);
     if (ownSeconds)
       for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
   }
 }
 
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2,
-                   SplatPath path) {
-  splatAll(samples, {&filter}, {sums}, threads, nullptr, allowAvx2, false, path);
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
+  splatAll(samples, {&filter}, {sums}, threads, nullptr, allowAvx2);
 }
 
 }  // namespace aliaslab::filmimpl

@@ -24,27 +24,12 @@ struct Batch {
   int at[kBatch];                                                   ///< first pixel's index in the band buffer
   int nx[kBatch], ny[kBatch];                                       ///< footprint columns and rows (<= n)
   F4 L[kBatch];                                                     ///< (r, g, b, 1)
-  // SplatPath::Runs, set once per batch for every filter's kernel: the samples in the order of their first
-  // pixel (order[t]: the t-th sample's index), their first pixel and L in double in that order
-  int order[kBatch], sortedAt[kBatch];
-  Sum LD[kBatch];
 };
 
 using Kernel = void (*)(const Batch&, int, const float*, int, Sum*, int);
 /// The kernel that adds a batch's samples over blocks of n x n pixels (weights w, or none: unitWeights):
 /// unrolled for n <= 6, AVX2 + FMA when the CPU has it and allowAvx2 (splat_kernels.cpp).
 Kernel pickKernel(int n, bool allowAvx2);
-
-/// SplatPath::Runs up to this block size (r <= 3); wider blocks take the Kernel, sample by sample.
-constexpr int kMaxRunBlock = 6;
-using RunKernel = void (*)(const Batch&, int, const double*, Sum*, int);
-/// SplatPath::Runs' kernel for n <= kMaxRunBlock (else null): a batch in first-pixel order (Batch::order), its weights in
-/// double (wd[(b * n + a) * kBatch + s], or null for unitWeights); each run of samples with the same first
-/// pixel adds into registers (each pixel's sum loaded and stored once per run).
-RunKernel pickRunKernel(int n, bool allowAvx2);
-/// wd = w (exactly) for the n x n weights of a batch's first `count` samples (rounded up to 8), the layout of
-/// FilterBatch::eval with stride kBatch.
-void widenWeights(const float* w, double* wd, int n, int count, bool allowAvx2);
 
 /// Per source row (the samples of one row of pixels): the least and greatest y (NaN ignored).
 struct RowSpans {
@@ -54,6 +39,6 @@ struct RowSpans {
 /// The fused pass for filters that share one radius (see splatAll; splat_pass.cpp).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
                      const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite, SplatPath path);
+                     bool overwrite);
 
 }  // namespace aliaslab::filmimpl

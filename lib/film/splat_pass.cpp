@@ -6,7 +6,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <cstring>
 #include <memory>
 #include <vector>
@@ -124,45 +123,16 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
   return 1;
 }
 
-/// SplatPath::Runs: the order of the batch's first `count` samples by first pixel (at), stable (ties keep
-/// their order), into b.order, with b.sortedAt and b.LD (L in double) in that order, so the kernels find every
-/// run of equal first pixels: by the first pixel's row (a counting sort; a batch's rows lie within one band),
-/// then by `at` within each row by insertion (a source row's samples come nearly in that order already).
-void orderByFirstPixel(Batch& b, int count) {
-  int* order = b.order;
-  bool sorted = true;
-  for (int s = 1; s < count; ++s) sorted &= b.at[s - 1] <= b.at[s];
-  if (sorted) {
-    for (int s = 0; s < count; ++s) order[s] = s;
-  } else {
-    float first = b.cy[0];
-    for (int s = 1; s < count; ++s) first = std::min(first, b.cy[s]);
-    int rows[kBand + 1] = {};  // (footprints start on the band's rows)
-    int row[kBatch];
-    for (int s = 0; s < count; ++s) ++rows[row[s] = std::min(static_cast<int>(b.cy[s] - first), kBand)];
-    for (int r = 0, start = 0; r <= kBand; ++r) std::swap(rows[r], start), start += rows[r];  // each row's start
-    for (int s = 0; s < count; ++s) order[rows[row[s]]++] = s;
-    for (int t = 1; t < count; ++t) {  // (rows in order: the insertion moves only within a row)
-      const int s = order[t];
-      int u = t;
-      for (; u > 0 && b.at[order[u - 1]] > b.at[s]; --u) order[u] = order[u - 1];
-      order[u] = s;
-    }
-  }
-  for (int t = 0; t < count; ++t) b.sortedAt[t] = b.at[order[t]], b.LD[t].v = __builtin_convertvector(b.L[order[t]], V4);
-}
-
 }  // namespace
 
 /// The fused pass for filters that share one radius (see splatAll).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
                      const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite, SplatPath path) {
+                     bool overwrite) {
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
   const Kernel kernel = pickKernel(n, allowAvx2);
-  const RunKernel runKernel = path == SplatPath::Runs ? pickRunKernel(n, allowAvx2) : nullptr;  // null: Direct
   std::vector<FilterBatch> weights;  // each filter's vectorised weights, built once for the pass
   for (const Filter* f : filters) weights.emplace_back(*f);
   static const bool cpuAvx2 = __builtin_cpu_supports("avx2");
@@ -178,7 +148,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
   const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
   const size_t bandSize = static_cast<size_t>(kBand + pad) * width;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  WorkspacePool pool(K * bandSize, static_cast<size_t>(pad) * pad * kBatch, runKernel != nullptr);
+  WorkspacePool pool(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
   parallelFor(bands, threads, [&](int band) {
     const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
     std::unique_ptr<Workspace> space = pool.take();
@@ -190,18 +160,12 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
     // each filter's own work on the batch: its weights (none for unitWeights) and the accumulation
     auto flush = [&] {
       if (!count) return;
-      if (runKernel) orderByFirstPixel(b, count);
       for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
       auto t0 = own ? Clock::now() : Clock::time_point();
       for (int f = 0; f < K; ++f) {
         const bool unit = weights[f].unitWeights();
         if (!unit) weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
-        if (runKernel) {
-          if (!unit) widenWeights(w.data(), space->wd.data(), n, count, allowAvx2);
-          runKernel(b, count, unit ? nullptr : space->wd.data(), buffer(f), width);
-        } else {
-          kernel(b, count, unit ? nullptr : w.data(), n, buffer(f), width);
-        }
+        kernel(b, count, unit ? nullptr : w.data(), n, buffer(f), width);
         if (own) {
           const auto t1 = Clock::now();
           own[f] += std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
@@ -216,20 +180,17 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const s
       if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
       const FilmSample* row = samples.pixel(0, sj);
       const size_t rowSamples = samples.rowCount(sj);
-      for (size_t k = 0; k < rowSamples; ++k) {
-        // groups of 8 from the row's start: a batch ends where it is full or where fewer than 8 entries are
-        // left at a group's start, with or without the 8-sample set-up, so the batches (and the runs path's
-        // order within them) are the same either way
-        if (k % 8 == 0 && k + 8 <= rowSamples) {
+      size_t k = 0, next = 0;  // next: where the 8-sample set-up may go on (after a group taken one by one)
+      for (; k < rowSamples; ++k) {
+        if (vectorSetup && k == next && k + 8 <= rowSamples) {
           if (count > kBatch - 8) flush();
-          if (vectorSetup) {
-            const int status = setup8(row + k, c, b, count);
-            if (status != 2) {  // all 8 skipped or all 8 in the batch; else these 8 one by one
-              if (status == 1 && (count += 8) == kBatch) flush();
-              k += 7;
-              continue;
-            }
+          const int status = setup8(row + k, c, b, count);
+          if (status != 2) {  // all 8 skipped or all 8 in the batch
+            if (status == 1 && (count += 8) == kBatch) flush();
+            k += 7, next = k + 1;
+            continue;
           }
+          next = k + 8;  // these 8 one by one
         }
         const FilmSample& q = row[k];
         if (!finiteSample(q) || !(q.x > c.lo && q.x < c.xHi && q.y > c.lo && q.y < c.yHi)) continue;

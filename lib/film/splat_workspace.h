@@ -36,13 +36,11 @@ class SumPages {
   Sum* data_ = nullptr;
 };
 
-/// A thread's work space in a pass: K band buffers one after the other, the weights (and, for SplatPath::Runs,
-/// the same in double), a batch.
+/// A thread's work space in a pass: K band buffers one after the other, the weights, a batch.
 struct Workspace {
-  Workspace(size_t sums, size_t weights, bool doubles) : buffer(sums), w(weights), wd(doubles ? weights : 0) {}
+  Workspace(size_t sums, size_t weights) : buffer(sums), w(weights) {}
   SumPages buffer;
   std::vector<float> w;
-  std::vector<double> wd;
   Batch batch;
 };
 
@@ -50,7 +48,7 @@ struct Workspace {
 /// radius to radius, they raised a 256 x 256 reference's peak by 2.3 MB: results/study_speed.md.)
 class WorkspacePool {
  public:
-  WorkspacePool(size_t sums, size_t weights, bool doubles) : sums_(sums), weights_(weights), doubles_(doubles) {}
+  WorkspacePool(size_t sums, size_t weights) : sums_(sums), weights_(weights) {}
   /// A work space with zeroed sums.
   std::unique_ptr<Workspace> take() {
     std::unique_ptr<Workspace> space;
@@ -58,7 +56,7 @@ class WorkspacePool {
       std::lock_guard lock(mutex_);
       if (!free_.empty()) space = std::move(free_.back()), free_.pop_back();
     }
-    if (!space) return std::make_unique<Workspace>(sums_, weights_, doubles_);
+    if (!space) return std::make_unique<Workspace>(sums_, weights_);
     return space;
   }
   /// Returns a work space whose sums are zero again (the band that used it cleared them as it read them).
@@ -69,7 +67,6 @@ class WorkspacePool {
 
  private:
   size_t sums_, weights_;
-  bool doubles_;
   std::mutex mutex_;
   std::vector<std::unique_ptr<Workspace>> free_;
 };

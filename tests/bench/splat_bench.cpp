@@ -1,9 +1,7 @@
 // The splat of the study's references and rows (one thread, 256 x 256 pixels, sobol positions, hashed
 // radiance): one 16-spp sample set (a reference batch: a 4096-spp reference adds 256 of them) into every
 // filter of the presented study at once (26 (filter, radius) pairs, film/film.h Accumulator), and into one
-// filter at a time (a study row). Each benchmark runs the direct path (every weight from the filter's batch
-// evaluation, samples added in memory order) and the runs path (filmimpl::SplatPath, film_impl.h), so
-// one run with --benchmark_enable_random_interleaving compares them.
+// filter at a time (a study row). Items = samples splatted (each into every filter of the call).
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -49,8 +47,6 @@ std::vector<std::unique_ptr<Filter>> studyFilters() {
   return out;
 }
 
-filmimpl::SplatPath path(int64_t arg) { return arg ? filmimpl::SplatPath::Runs : filmimpl::SplatPath::Direct; }
-
 /// One reference batch into all 26 filters (what a reference does 256 times per half pair).
 void BM_AllFilters(benchmark::State& state) {
   const auto filters = studyFilters();
@@ -60,27 +56,26 @@ void BM_AllFilters(benchmark::State& state) {
   std::vector<double*> out;
   for (auto& s : sums) out.push_back(s.data());
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), raw, out, 1, nullptr, true, true, path(state.range(0)));
+    filmimpl::splatAll(samples(), raw, out, 1, nullptr, true, true);
     benchmark::DoNotOptimize(sums[0][0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));
-  state.SetLabel(state.range(0) ? "runs" : "direct");
 }
-BENCHMARK(BM_AllFilters)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_AllFilters)->Unit(benchmark::kMillisecond);
 
 /// One filter (a study row's splat).
 void BM_OneFilter(benchmark::State& state, const std::string& name, float radius) {
   const auto f = makeFilter(name, radius);
   std::vector<double> sums(4 * size_t(kSize) * kSize);
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), {f.get()}, {sums.data()}, 1, nullptr, true, true, path(state.range(0)));
+    filmimpl::splatAll(samples(), {f.get()}, {sums.data()}, 1, nullptr, true, true);
     benchmark::DoNotOptimize(sums[0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));
-  state.SetLabel(f->describe() + (state.range(0) ? " runs" : " direct"));
+  state.SetLabel(f->describe());
 }
 #define ONE_FILTER(filter, tag, r) \
-  BENCHMARK_CAPTURE(BM_OneFilter, filter##_##tag, #filter, r)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+  BENCHMARK_CAPTURE(BM_OneFilter, filter##_##tag, #filter, r)->Unit(benchmark::kMillisecond);
 ONE_FILTER(box, r0_5, 0.5f)
 ONE_FILTER(tent, r1, 1.f)
 ONE_FILTER(mitchell, r2, 2.f)
