@@ -9,7 +9,7 @@ Layout, a concept a module:
   csv_tables.py      reading the experiments' small CSVs, checked
   errors.py          bad input: InputError, exit 2 with a message naming the file or option
   fits.py            the log-log slope fit and the Pareto front
-  figures.py         matplotlib (Agg), file-name-safe names, saving PNG + SVG
+  figures.py         matplotlib (Agg), file-name-safe names, saving PNG (+ SVG with --svg)
   palette.py         the one palette: each sampler's colour, each filter's marker (every chart, the page)
   degenerate.py      the rule that marks degenerate configurations (weight sums near zero) on the charts
   charts/            the study's charts, one module per chart family (the `charts` command)

@@ -6,7 +6,7 @@ Usage: /usr/bin/python3 -m analysis convergence convergence.csv --out DIR
 One panel per integrand, one line per sampler; the legend gives the slope
 fitted by least squares on log-log over the powers of two in
 [fit-min, fit-max] (the same fit as lib/measure/convergence.h). Counts that are
-not powers of two are drawn as crosses. Writes DIR/convergence.png and .svg.
+not powers of two are drawn as crosses. Writes DIR/convergence.png (and .svg with --svg).
 """
 import argparse
 
@@ -64,7 +64,9 @@ def main(argv=None, prog=None):
     ap.add_argument("--out", required=True)
     ap.add_argument("--fit-min", type=float, default=16)
     ap.add_argument("--fit-max", type=float, default=4096)
+    figures.add_svg_option(ap)
     args = ap.parse_args(argv)
+    figures.write_svg(args.svg)
     try:
         df = read(args.csv)
     except errors.InputError as e:

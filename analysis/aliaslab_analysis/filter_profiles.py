@@ -5,7 +5,7 @@ Usage: /usr/bin/python3 -m analysis filters --out DIR
 
 The numbers come from the C++ experiment `filterprofile` (the library's own
 Filter::eval, one source of truth): either a CSV it wrote (--csv) or the
-binary, run here (--bin). Writes DIR/filter_profiles.png/.svg and, when the
+binary, run here (--bin). Writes DIR/filter_profiles.png (and .svg with --svg) and, when the
 binary was run, DIR/filter_profiles.csv. Left: the 1-D profile g(x) (x in
 pixels; f = g(x) g(y) or g(|d|)) at each
 filter's natural radius; right: |H(nu)|, the 2-D filter's normalised Fourier
@@ -59,7 +59,9 @@ def main(argv=None, prog=None):
     src = ap.add_mutually_exclusive_group(required=True)
     src.add_argument("--csv", help="CSV written by filterprofile")
     src.add_argument("--bin", help="the filterprofile executable, run here")
+    figures.add_svg_option(ap)
     args = ap.parse_args(argv)
+    figures.write_svg(args.svg)
     errors.prepare_out(args.out)
     try:
         if args.csv:

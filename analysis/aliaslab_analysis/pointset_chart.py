@@ -1,10 +1,10 @@
 """Charts of the `pointsets` experiment's tables.
 
-Usage: /usr/bin/python3 -m analysis pointsets DIR_WITH_CSVS --out DIR
+Usage: /usr/bin/python3 -m analysis pointsets DIR_WITH_CSVS --out DIR [--svg]
 
-Reads pointsets.csv and spectra.csv; writes spectra.png/.svg (radial mean
-periodogram against k / sqrt(N), one panel per N) and discrepancy.png/.svg
-(L2-star discrepancy and normalised minimum toroidal distance against N).
+Reads pointsets.csv and spectra.csv; writes spectra.png (radial mean
+periodogram against k / sqrt(N), one panel per N) and discrepancy.png
+(L2-star discrepancy and normalised minimum toroidal distance against N); with --svg each also as .svg.
 """
 import argparse
 import os
@@ -61,7 +61,9 @@ def main(argv=None, prog=None):
     ap = argparse.ArgumentParser(prog=prog, description="Point-set charts")
     ap.add_argument("dir", help="folder holding pointsets.csv and spectra.csv")
     ap.add_argument("--out", required=True)
+    figures.add_svg_option(ap)
     args = ap.parse_args(argv)
+    figures.write_svg(args.svg)
     try:
         ps = pd.read_csv(os.path.join(args.dir, "pointsets.csv"))
         sp = pd.read_csv(os.path.join(args.dir, "spectra.csv"))

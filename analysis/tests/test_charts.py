@@ -12,7 +12,7 @@ import math
 
 from . import recompute as rc, synthetic
 from ..aliaslab_analysis import study_csv
-from ..aliaslab_analysis import convergence_chart, filter_profiles, pointset_chart
+from ..aliaslab_analysis import convergence_chart, figures, filter_profiles, pointset_chart
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import markdown as report_markdown
 from ..aliaslab_analysis.report import page as report_page
@@ -38,12 +38,22 @@ class StudyCharts(unittest.TestCase):
     def tearDownClass(cls):
         cls.tmp.cleanup()
 
-    def test_every_chart_is_written_as_png_and_svg(self):
-        names = ["stability"] + [f"{kind}_{scene}" for kind in ("speed_accuracy", "convergence", "heatmap",
-                                                                 "decomposition", "radius")
-                                 for scene in ("a", "b")]
-        for name, ext in itertools.product(names, ("png", "svg")):
-            self.assertTrue(is_chart(os.path.join(self.out, f"{name}.{ext}")), f"{name}.{ext}")
+    NAMES = ["stability"] + [f"{kind}_{scene}" for kind in ("speed_accuracy", "convergence", "heatmap",
+                                                             "decomposition", "radius") for scene in ("a", "b")]
+
+    def test_every_chart_is_written_as_png_and_no_svg_by_default(self):
+        for name in self.NAMES:
+            self.assertTrue(is_chart(os.path.join(self.out, f"{name}.png")), f"{name}.png")
+            self.assertFalse(os.path.exists(os.path.join(self.out, f"{name}.svg")), f"{name}.svg written unasked")
+
+    def test_svg_asks_for_an_svg_twin_of_every_chart(self):
+        out = os.path.join(self.tmp.name, "charts-svg")
+        try:
+            charts_cli.main([self.csv, "--out", out, "--svg"])
+        finally:
+            figures.write_svg(False)
+        for name, ext in itertools.product(self.NAMES, ("png", "svg")):
+            self.assertTrue(is_chart(os.path.join(out, f"{name}.{ext}")), f"{name}.{ext}")
 
     def test_the_front_keeps_every_row_nothing_significantly_beats(self):
         # Against the common target (mse_target), not each filter's own mse; with ties (stats/fronts.py): a row
@@ -194,7 +204,10 @@ class OtherCharts(unittest.TestCase):
             pd.DataFrame([("random", n, 4, k, k / n ** .5, 1.0) for n in (16, 64) for k in range(1, 9)],
                          columns=["sampler", "n", "sets", "k", "k_norm", "power"]).to_csv(
                 os.path.join(ps, "spectra.csv"), index=False)
-            pointset_chart.main([ps, "--out", ps])
+            try:
+                pointset_chart.main([ps, "--out", ps, "--svg"])  # the one command asked for SVG here
+            finally:
+                figures.write_svg(False)
             # Filter profiles.
             fp = os.path.join(tmp, "filters")
             os.makedirs(fp)
@@ -204,8 +217,9 @@ class OtherCharts(unittest.TestCase):
             filter_profiles.main(["--csv", os.path.join(fp, "p.csv"), "--out", fp])
             for path in ("convergence/convergence", "pointsets/spectra", "pointsets/discrepancy",
                          "filters/filter_profiles"):
-                for ext in ("png", "svg"):
-                    self.assertTrue(is_chart(os.path.join(tmp, f"{path}.{ext}")), f"{path}.{ext}")
+                self.assertTrue(is_chart(os.path.join(tmp, f"{path}.png")), f"{path}.png")
+                svg = os.path.join(tmp, f"{path}.svg")
+                self.assertTrue(is_chart(svg) if path.startswith("pointsets") else not os.path.exists(svg), svg)
             # The report's section on samplers and filters shows these charts, by relative path or embedded.
             section = report_page.isolation_section(tmp, embed=False)
             for path in ("convergence/convergence.png", "pointsets/spectra.png", "filters/filter_profiles.png"):

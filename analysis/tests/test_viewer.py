@@ -24,6 +24,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")
 VIEWER = os.path.join(REPO, "results", "viewer")
 STUDY = os.path.join(REPO, "results", "presented", "study.csv")
+WHOLE_BUDGET = 20_000_000  # bytes of the whole-image files of all scenes (loaded only when asked for; 19.2 MB)
 
 
 def load_js(path):
@@ -35,6 +36,15 @@ def load_js(path):
     for c in d["configs"]:  # the rows as the viewer reads them: arrays in the order of rowColumns
         c["rows"] = {t: dict(zip(d["rowColumns"], v, strict=True)) for t, v in c["rows"].items()}
     return d
+
+
+def load_whole(path, scene):
+    """The entries of a scene's second file (<scene>_whole.js: ALIASLAB_VIEWER_WHOLE("scene", {...});)."""
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    head = f"ALIASLAB_VIEWER_WHOLE({json.dumps(scene)}, "
+    assert text.startswith(head) and text.rstrip().endswith(");"), path
+    return json.loads(text[len(head):text.rstrip().rindex(")")])
 
 
 def csv_rows():
@@ -52,6 +62,7 @@ class CommittedViewerData(unittest.TestCase):
         with open(os.path.join(VIEWER, "index.json"), encoding="utf-8") as f:
             cls.index = json.load(f)
         cls.scenes = {s: load_js(os.path.join(VIEWER, v["file"])) for s, v in cls.index["scenes"].items()}
+        cls.whole = {s: load_whole(os.path.join(VIEWER, d["wholeFile"]), s) for s, d in cls.scenes.items()}
         cls.rows = csv_rows()
 
     def test_every_scene_of_the_study(self):
@@ -92,21 +103,56 @@ class CommittedViewerData(unittest.TestCase):
                     self.assertAlmostEqual(float(v.max()), e["hi"], places=9)
             self.assertTrue(0 <= d["crop"]["x"] <= d["width"] - n and 0 <= d["crop"]["y"] <= d["height"] - n)
 
-    def test_flip_maps_stored_for_every_configuration(self):
+    def test_flip_maps_stored_for_every_configuration_and_target(self):
         for scene, d in self.scenes.items():
             n = d["crop"]["size"]
             for c in d["configs"]:
-                self.assertEqual(set(c["flip"]), {d["primary"]}, (scene, c["id"]))
-                e = d["images"][c["flip"][d["primary"]]]
-                self.assertEqual((e["bits"], e["lo"], e["hi"], e["c"]), (8, 0.0, 1.0, 1))
-                v = export.decode(e)
-                self.assertEqual(v.shape, (n, n, 1))
-                self.assertTrue(0.0 <= v.min() and v.max() <= 1.0)
+                self.assertEqual(set(c["flip"]), set(d["targets"]), (scene, c["id"]))
+                for t, key in c["flip"].items():
+                    # the primary target's in the first file, the others' in the file loaded on demand
+                    e = d["images"][key] if t == d["primary"] else self.whole[scene][key]
+                    self.assertEqual(key.startswith("w"), t != d["primary"], (scene, c["id"], t))
+                    self.assertEqual((e["bits"], e["lo"], e["hi"], e["c"]), (8, 0.0, 1.0, 1))
+                    v = export.decode(e)
+                    self.assertEqual(v.shape, (n, n, 1))
+                    self.assertTrue(0.0 <= v.min() and v.max() <= 1.0)
+
+    def test_whole_images_of_every_configuration_in_the_second_file(self):
+        for scene, d in self.scenes.items():
+            w = self.whole[scene]
+            self.assertFalse(any(k.startswith("w") for k in d["images"]), scene)
+            wanted = [c["whole"] for c in d["configs"]] + [r["whole"] for r in d["refs"].values()] + \
+                [t["whole"] for t in d["targetImages"].values()]
+            for key in wanted:
+                self.assertIn(key, w, scene)
+                e = w[key]
+                self.assertEqual((e["h"], e["w"], e["bits"]), (d["height"], d["width"], 8), (scene, key))
+            self.assertEqual(self.index["scenes"][scene]["whole_bytes"],
+                             os.path.getsize(os.path.join(VIEWER, d["wholeFile"])))
+
+    def test_whole_image_equals_the_crop_where_they_overlap(self):
+        # the 8-bit whole image over its own range against the crop (8 bits over the crop's range): both within
+        # their half steps of the same render
+        for scene, d in self.scenes.items():
+            x, y, n = d["crop"]["x"], d["crop"]["y"], d["crop"]["size"]
+            for c in d["configs"][:4]:
+                we, ce = self.whole[scene][c["whole"]], d["images"][c["crop"]["0"]]
+                whole, crop = export.decode(we)[y:y + n, x:x + n], export.decode(ce)
+                step = (we["hi"] - we["lo"]) / 255 / 2 + (ce["hi"] - ce["lo"]) / 255 / 2
+                self.assertLessEqual(float(np.abs(whole - crop).max()), step + 1e-9, (scene, c["id"]))
 
     def test_size_budget(self):
-        total = sum(os.path.getsize(os.path.join(VIEWER, f)) for f in os.listdir(VIEWER))
-        self.assertLess(total, 1_600_000, "the viewer data (with the teaching strand) within its share of the "
-                        "page's 5 MB budget")
+        later = {v["whole_file"] for v in self.index["scenes"].values()}
+        sizes = {f: os.path.getsize(os.path.join(VIEWER, f)) for f in os.listdir(VIEWER)}
+        first = sum(b for f, b in sizes.items() if f not in later)
+        self.assertLess(first, 1_700_000, "the viewer data loaded with the page (with the teaching strand and the "
+                        "viewer's script) within its share of the page's 5 MB budget")
+        self.assertLess(sum(sizes[f] for f in later), WHOLE_BUDGET, "the whole images, loaded on demand")
+
+    def test_the_committed_script_is_the_packages(self):
+        for name in ("viewer.js", "viewer.css"):
+            with open(os.path.join(VIEWER, name), encoding="utf-8") as f:
+                self.assertEqual(f.read(), section.asset(name), f"results/viewer/{name}: regenerate the page")
 
 
 class Encoding(unittest.TestCase):
@@ -210,10 +256,30 @@ class Section(unittest.TestCase):
         self.assertEqual(section.viewer_section(os.path.join(REPO, "docs")), "")
 
     def test_section_lists_the_scenes_and_loads_lazily(self):
-        html = section.viewer_section(os.path.join(REPO, "results"))
+        html = section.viewer_section(os.path.join(REPO, "results"), write=False)
         self.assertIn("id='alv'", html)
         self.assertIn("data-base='viewer/'", html)
         self.assertNotIn("ALIASLAB_VIEWER_ADD({", html)  # the data is in the per-scene files, not the page
+        # the script and the style once, beside the data, not inline
+        self.assertIn("<script src='viewer/viewer.js'></script>", html)
+        self.assertIn("<link rel='stylesheet' href='viewer/viewer.css'>", html)
+        self.assertNotIn("ALIASLAB_VIEWER_ADD = function", html)
+        self.assertIn("only when you ask for the whole image", html)
+
+    def test_assets_are_written_beside_the_data(self):
+        with tempfile.TemporaryDirectory() as tmp:
+            data = os.path.join(tmp, "viewer")
+            os.makedirs(data)
+            with open(os.path.join(data, "index.json"), "w", encoding="utf-8") as f:
+                json.dump({"plan": "p", "scenes": {"s": {"file": "s.js", "bytes": 10, "whole_file": "s_whole.js",
+                                                         "whole_bytes": 20, "verified": {
+                                                             "comparisons": 1, "max_relative_difference": 0}}}}, f)
+            open(os.path.join(data, "s.js"), "w").close()
+            html = section.viewer_section(tmp)
+            for name in ("viewer.js", "viewer.css"):
+                with open(os.path.join(data, name), encoding="utf-8") as f:
+                    self.assertEqual(f.read(), section.asset(name))
+            self.assertIn("<script src='viewer/viewer.js'>", html)
 
 
 if __name__ == "__main__":

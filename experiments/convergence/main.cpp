@@ -3,7 +3,7 @@
 // the slopes theory expects.
 //
 // Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations),
-// slopes.md, and (unless --no-chart) convergence.png/.svg drawn by
+// slopes.md, and (unless --no-chart) convergence.png drawn by
 // analysis/convergence_chart.py.
 #include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>

@@ -10,7 +10,7 @@
 //   points_<sampler>_<N>.png       the set of pixel (0, 0)
 //   periodogram_<sampler>_<N>.png  mean 2-D periodogram, DC at the centre,
 //                  grey = 0.5 + 0.25 log2 P (P = 1, white noise, is mid-grey)
-// and (unless --no-chart) spectra.png/.svg via analysis/pointset_chart.py.
+// and (unless --no-chart) spectra.png via analysis/pointset_chart.py.
 #include "aliaslab_paths.h"
 #include <CLI/CLI.hpp>
 

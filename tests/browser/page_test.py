@@ -2,7 +2,9 @@
 its index.html loaded from file:// in headless Chromium at 1366 px, and checked: no severe console message
 (a failed load, a script error), every link and anchor resolves, every image decodes (lazy ones included),
 every entry of the table of contents points at an element of the page, the scene gallery links to the scenes,
-and a click on a chart opens it enlarged (Esc closes it). A screenshot of the top of the page at 1366 px is
+and a click on a chart opens it enlarged (Esc closes it). The committed pages (results/index.html, the
+studies' pages beside it, engineering.html, the definitions) are loaded too: every link, script, style sheet
+and image of theirs resolves. A screenshot of the top of the page at 1366 px is
 written to ARTIFACTS/page-1366.png (CI keeps it: look at it when the page changes).
 
   python3 tests/browser/page_test.py --sweep build/bin/sweep --source . --artifacts build/artifacts
@@ -20,6 +22,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import browser  # noqa: E402
 
 ARGS = None
+COMMITTED = ("index.html", "study/index.html", "prefilter/index.html", "engineering.html", "docs/science.html")
 
 
 def sweep_and_report(sweep, source, out):
@@ -101,6 +104,36 @@ class Page(unittest.TestCase):
         self.assertEqual(box.find_element(By.TAG_NAME, "img").get_attribute("src"), img.get_attribute("src"))
         self.driver.find_element(By.TAG_NAME, "body").send_keys(Keys.ESCAPE)
         self.assertNotIn("open", box.get_attribute("class"))
+
+    def test_every_link_of_the_committed_pages_resolves(self):
+        """The committed pages (results/index.html and the studies' pages beside it) from file://: every link,
+        script, style sheet and image refers to a file that exists (the sub-studies' definitions: the one copy in
+        results/docs) and every anchor to an element of its page."""
+        pages = [os.path.join(ARGS.source, "results", p) for p in COMMITTED]
+        pages = [p for p in pages if os.path.isfile(p)]
+        self.assertTrue(pages)
+        try:
+            for page in pages:
+                self.driver.get("file://" + page)
+                refs = self.js("return [...document.querySelectorAll('a[href]')].map(a => a.getAttribute('href'))"
+                               ".concat([...document.querySelectorAll('script[src], img[src]')].map(e => "
+                               "e.getAttribute('src')), [...document.querySelectorAll('link[href]')].map(e => "
+                               "e.getAttribute('href')), [...document.querySelectorAll('img[data-src]')].map(e => "
+                               "e.getAttribute('data-src')));")
+                self.assertGreater(len(refs), 5, page)
+                for href in refs:
+                    parts = urllib.parse.urlsplit(href)
+                    if parts.scheme == "data":
+                        continue
+                    self.assertIn(parts.scheme, ("", "file"), f"{page}: a link leaves the page's folder: {href}")
+                    if not parts.path:
+                        self.assertTrue(self.js("return document.getElementById(arguments[0]) !== null;",
+                                                urllib.parse.unquote(parts.fragment)), f"{page}: no element {href}")
+                        continue
+                    target = os.path.normpath(os.path.join(os.path.dirname(page), urllib.parse.unquote(parts.path)))
+                    self.assertTrue(os.path.exists(target), f"{page}: {href}: {target} does not exist")
+        finally:
+            self.driver.get("file://" + self.page)
 
     def test_the_definitions_open_as_html(self):
         href = self.js("return Array.from(document.querySelectorAll('a')).find(a => a.textContent.includes("

@@ -13,6 +13,10 @@ chromium-driver, loads a page generated for a small study from file:// and check
   - the key 5 switches to the FLIP map: the picture changes, the colour bar is the FLIP ramp (coloured, not grey)
     labelled FLIP 0..1, and the FLIP readout of a pixel equals imgdiff's map (the EXR kept in the work folder)
     within half the 8-bit step;
+  - the key t switches the FLIP map to a target other than the primary one (its map is in the scene's second
+    data file, loaded on demand): the map is displayed and its readout equals imgdiff's map against that target;
+  - the key c shows the whole image of a method other than the grid (also in the second file): it loads, and the
+    readout of a pixel equals that pixel of the configuration's image file within half the stored step;
 and writes screenshots at 1366 px wide to ARTIFACTS/viewer_1366.png and viewer_flip_1366.png.
 
   test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
@@ -161,8 +165,10 @@ def main():
         check(not logs, f"no console errors ({logs[:3]})")
 
         # every link and script resolves
-        refs = d.execute_script("return [...document.querySelectorAll('a[href]')].map(a => a.getAttribute('href'))"
-                                ".concat([...document.querySelectorAll('script[src]')].map(s => s.getAttribute('src')))")
+        refs = d.execute_script("return [...document.querySelectorAll('a[href], link[href]')].map(a => "
+                                "a.getAttribute('href')).concat([...document.querySelectorAll('script[src]')]"
+                                ".map(s => s.getAttribute('src')))")
+        check(any(r.endswith("viewer/viewer.js") for r in refs), "the viewer's script is a file beside the page")
         bad = []
         for h in refs:
             if h.startswith("#"):
@@ -214,6 +220,66 @@ def main():
         d.execute_script("document.getElementById('viewer').scrollIntoView()")
         time.sleep(0.3)
         shot = os.path.join(ARGS.artifacts, "viewer_flip_1366.png")
+        d.save_screenshot(shot)
+        print(f"screenshot: {shot}")
+
+        # the FLIP map against a target other than the primary one: key t, the second file loaded on demand
+        primary = d.execute_script("return window.ALIASLAB_VIEWER.data[window.ALIASLAB_VIEWER.state.scene].primary")
+        scene = d.execute_script("return window.ALIASLAB_VIEWER.state.scene")
+        check(not d.execute_script("return Object.keys(window.ALIASLAB_VIEWER.data[arguments[0]].images)"
+                                   ".some(k => k.startsWith('w'))", scene),
+              "the whole images and other targets' FLIP maps are not loaded with the scene")
+        d.find_element("css selector", "#alv .alv-status").click()
+        ActionChains(d).send_keys("t").perform()
+        other = d.execute_script("return window.ALIASLAB_VIEWER.state.target")
+        readout = "return document.querySelector('#alv .alv-main .alv-readout') !== null"
+        check(other != primary and wait(readout), f"the FLIP map against {other} (not the primary {primary}) is shown")
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        ActionChains(d).move_to_element_with_offset(canvas, -size["width"] // 6, size["height"] // 5).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        shown_flip, cfg = span.get_attribute("data-flip"), d.execute_script(state).split("|")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        maps = glob.glob(os.path.join(work, "*", f"{cfg[0]}-spp{cfg[1]}-{cfg[2]}-r{cfg[3]}-seed0.flip-"
+                                      f"{other.replace(':', '-')}.exr"))
+        check(shown_flip is not None and len(maps) == 1, f"a FLIP readout against {other} and imgdiff's map {maps}")
+        if shown_flip is not None and maps:
+            truth = float(read_image(maps[0])[y, x, 0])
+            check(abs(float(shown_flip) - truth) <= 0.5 / 255 + 1e-6,
+                  f"FLIP against {other} at ({x}, {y}) {float(shown_flip):.5f} equals imgdiff's map {truth:.5f}")
+
+        # the whole image of a method other than the grid: key 1 (image), c (whole)
+        ActionChains(d).send_keys("1").perform()
+        time.sleep(0.5)
+        if cfg[0] == "uniform":
+            ActionChains(d).send_keys(Keys.ARROW_RIGHT).perform()
+            time.sleep(0.5)
+        ActionChains(d).send_keys("c").perform()
+        cfg = d.execute_script(state)
+        check(d.execute_script("return window.ALIASLAB_VIEWER.state.region") == "whole" and wait(readout),
+              f"the whole image of {cfg} is loaded and shown")
+        sampler, spp, filt, radius = cfg.split("|")
+        check(sampler != "uniform", f"{cfg} is not the grid")
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 4, -size["height"] // 3).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        stepsize = float(span.get_attribute("data-step"))
+        values = [float(v) for v in span.get_attribute("data-value").split(",")]
+        exr = glob.glob(os.path.join(work, "*", f"{sampler}-spp{spp}-{filt}-r{radius}-seed0.exr"))
+        check(len(exr) == 1, f"the image file of {cfg} seed 0 exists")
+        if exr:
+            img = read_image(exr[0])
+            check(0 <= x < img.shape[1] and 0 <= y < img.shape[0], f"the pointer is on the whole image ({x}, {y})")
+            truth = [float(img[y, x, c]) for c in range(len(values))]
+            diffs = [abs(v - t) for v, t in zip(values, truth)]
+            check(max(diffs) <= stepsize / 2 + 1e-6,
+                  f"whole-image readout at ({x}, {y}) {values} equals the file's {[round(t, 5) for t in truth]} "
+                  f"within half the stored step {stepsize:.2g}")
+        check(not [e for e in d.get_log("browser") if e.get("level") == "SEVERE"], "no console errors after the "
+              "on-demand loads")
+        shot = os.path.join(ARGS.artifacts, "viewer_whole_1366.png")
         d.save_screenshot(shot)
         print(f"screenshot: {shot}")
     finally:

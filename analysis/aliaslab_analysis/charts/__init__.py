@@ -1,6 +1,6 @@
 """Charts of a sweep CSV (read with study_csv.load_study; definitions in docs/science.md).
 
-Usage: /usr/bin/python3 -m analysis charts study.csv --out DIR [--filter NAME]
+Usage: /usr/bin/python3 -m analysis charts study.csv --out DIR [--filter NAME] [--svg]
 
 Every ranking and every "error" axis is the error against the study's common
 target (column mse_target; a CSV with several targets is drawn for one, the
@@ -8,7 +8,7 @@ caller's choice: the report passes the primary target's rows; for CSVs of older 
 error against the pixel-area reference, and the charts say so). A filter's own
 mse is not used for ranking: it ignores blur, so the widest filter would win.
 
-Writes into DIR, each as .png and .svg:
+Writes into DIR, each as .png (and .svg with --svg):
   speed_accuracy_<scene>  error against the target vs time per image (cpu_ms,
                           else wall time), log-log; colour = sampler, marker =
                           filter, pre-filtered rows (when the CSV has a

@@ -8,7 +8,7 @@ Below the white curve a sampler's error sits at high screen frequencies (blue), 
 
 Flagged rows (error not told from zero) are drawn dotted and hollow, marked "(flagged)" in the legend.
 
-blur_curve(df, out_dir) draws blur_curve_<scene> (.png, .svg) and returns the paths; a CSV without the columns
+blur_curve(df, out_dir) draws blur_curve_<scene> (.png; .svg too after figures.write_svg) and returns the paths; a CSV without the columns
 (older sweeps) draws nothing and returns [].
 """
 import numpy as np

@@ -2,7 +2,7 @@
 import argparse
 import sys
 
-from .. import errors, study_csv, study_rows
+from .. import errors, figures, study_csv, study_rows
 from . import draw_all
 
 
@@ -13,7 +13,9 @@ def main(argv=None, prog=None):
     ap.add_argument("--out", required=True, help="output folder")
     ap.add_argument("--filter", default=None,
                     help="filter of the convergence chart (default: that of each scene's best method)")
+    figures.add_svg_option(ap)
     args = ap.parse_args(argv)
+    figures.write_svg(args.svg)
     try:
         df, notes = study_csv.load_study(args.csv)
     except errors.InputError as e:

@@ -39,7 +39,8 @@ The charts are (re)drawn from the study into --charts first (the charts
 package), unless --reuse-charts. The page refers to its images by relative
 path, decoded lazily (--link, the default); --embed embeds them as data URIs
 (one self-contained file). docs/*.md are rendered into RESULTS/docs/*.html
-(docs_html.py, Debian's python3-markdown), which the page links. It names the study it reports: "the quick study PATH" when the CSV is
+(docs_html.py, Debian's python3-markdown), which the page links; a page inside the repository's results/
+(results/study, results/prefilter) links to the one copy in results/docs instead of writing its own. It names the study it reports: "the quick study PATH" when the CSV is
 below 256 px or its references below 64x its highest spp, else "the study
 PATH" (or --label).
 Definitions: docs/science.md, linked from the page as docs/science.html.

@@ -3,7 +3,7 @@ import argparse
 import os
 import sys
 
-from .. import errors
+from .. import errors, figures
 from .page import build_report, shown_path
 from .tables import tables
 
@@ -40,7 +40,9 @@ def main(argv=None, prog=None):
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
     ap.add_argument("--findings-md", action="store_true",
                     help="print the generated findings as Markdown (results/README.md's findings section)")
+    figures.add_svg_option(ap)
     args = ap.parse_args(argv)
+    figures.write_svg(args.svg)
     if not os.path.isdir(args.results):
         errors.fail(f"{args.results}: not a folder")
     if args.link and args.embed:

@@ -1,6 +1,7 @@
-"""Markdown to HTML for the pages: the repository's definitions (docs/*.md) rendered into RESULTS/docs/*.html
-at report time, so that the page's "Definitions" link opens a readable page, and the records of
-engineering.html. Uses Debian's python3-markdown (tables, lists, code blocks, inline HTML entities);
+"""Markdown to HTML for the pages: the repository's definitions (docs/*.md) rendered into one folder of HTML pages
+at report time (docs_folder: the repository's results/docs for every page inside results/, so a sub-study's page
+links to that one copy by a relative path; RESULTS/docs for a page elsewhere), so that the page's "Definitions"
+link opens a readable page, and the records of engineering.html. Uses Debian's python3-markdown (tables, lists, code blocks, inline HTML entities);
 without it, the report's own small reader (markdown.py: headings, tables, paragraphs) and a note."""
 import html
 import os
@@ -28,6 +29,15 @@ def to_html(text):
 def md_links_to_html(fragment):
     """Links to sibling .md files rewritten to their .html rendering (anchors kept)."""
     return LINK.sub(lambda m: f"href={m.group(1)}{m.group(2)}.html{m.group(3) or ''}{m.group(1)}", fragment)
+
+
+def docs_folder(results, repo):
+    """The folder of the rendered definitions a page in `results` links to: REPO/results/docs when `results` is
+    the repository's results folder or inside it (one copy for every committed page), else RESULTS/docs."""
+    shared = os.path.realpath(os.path.join(repo, "results"))
+    here = os.path.realpath(results)
+    return os.path.join(shared, "docs") if here == shared or here.startswith(shared + os.sep) else \
+        os.path.join(results, "docs")
 
 
 def render_docs(docs_dir, out_dir, write_page, back_href):

@@ -1,7 +1,8 @@
 """The assembly of the report: index.html from the list SECTIONS (the header and the other studies, the scene
 gallery, the findings, the answer per target, the summary chart, the scenes, stability, the samplers and
 filters in isolation, engineering), with a sticky table of contents; engineering.html (the benchmark and
-fuzzing records); docs/*.html (the definitions rendered from the repository's docs/*.md)."""
+fuzzing records); docs/*.html (the definitions rendered from the repository's docs/*.md; one copy in
+results/docs for every page inside results/: docs_html.docs_folder)."""
 import html
 import os
 import re
@@ -220,9 +221,11 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     if draw:
         charts.draw_all(primary, charts_dir)
     errors.prepare_out(charts_dir, "--charts")
-    docs_html.render_docs(os.path.dirname(SCIENCE), os.path.join(results, "docs"), write_page, "../index.html")
+    docs = docs_html.docs_folder(results, REPO)  # one copy of the definitions under results/ (docs_html.py)
+    docs_html.render_docs(os.path.dirname(SCIENCE), docs, write_page, "../index.html")
+    science = os.path.relpath(os.path.realpath(os.path.join(docs, "science.html")), os.path.realpath(results)).replace(os.sep, "/")
     c = Context(results, study, df, notes, s, primary, charts_dir, images, embed,
-                html.escape(os.path.join("docs", "science.html")), study_label(study, label, is_quick(facts_of(df))))
+                html.escape(science), study_label(study, label, is_quick(facts_of(df))))
     c.spec = spectra.load(study)
     body = [part for part in (section(c) for section in SECTIONS) if part]
     return write_page(os.path.join(results, "index.html"), f"aliaslab report: {c.name}", "\n".join(body), toc=True)

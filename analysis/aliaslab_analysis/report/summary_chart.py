@@ -5,6 +5,7 @@ flagged or undetermined in some scene is drawn hollow, the fixed grid (determini
 a median at or below 0 is drawn at the bottom edge as a down triangle."""
 import os
 
+import matplotlib.ticker
 import numpy as np
 
 from .. import figures, palette
@@ -20,10 +21,26 @@ def summary_points(s):
     return s.points().copy()
 
 
+def layout(n):
+    """(figure, axes): the first of n panels across the top row, the others side by side below it, all sharing
+    the y axis."""
+    if n == 1:
+        fig, ax = plt.subplots(figsize=(12.0, 6.0))
+        return fig, [ax]
+    fig = plt.figure(figsize=(12.0, 11.0))
+    grid = fig.add_gridspec(2, n - 1, height_ratios=[1.25, 1.0])
+    top = fig.add_subplot(grid[0, :])
+    below = [fig.add_subplot(grid[1, k], sharey=top) for k in range(n - 1)]
+    for ax in below[1:]:
+        ax.tick_params(labelleft=False)
+    return fig, [top] + below
+
+
 def summary_chart(s, out_dir):
     """Draws summary_error_time; returns (png path, the front's lines, the points drawn). One panel per spp
-    level, side by side on one shared y axis, each with its own time range, so that the front's numbers of
-    one cluster of times do not pile up."""
+    level on one shared y axis, each with its own time range, so that the front's numbers of one cluster of
+    times do not pile up; the lowest level, where the methods differ most and the front is longest, has the
+    whole width of the top row (readable at a 1366-px page), the others share the row below (layout)."""
     g = summary_points(s)
     name = "summary_error_time"
     g = g[np.isfinite(g["median_ratio"].to_numpy(dtype=float)) & np.isfinite(g["cost"].to_numpy(dtype=float))
@@ -46,10 +63,7 @@ def summary_chart(s, out_dir):
     g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
     g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
     front = g[g["front"]].sort_values(["spp", "cost", "median_ratio"])
-    widths = [1 + (front["spp"] == spp).sum() / 8 for spp in levels]  # room for the numbers where the front is long
-    fig, panels = plt.subplots(1, len(levels), figsize=(2.2 * sum(widths) + 4.0, 6.0), sharey=True, squeeze=False,
-                               gridspec_kw=dict(width_ratios=widths))
-    panels = panels[0]
+    fig, panels = layout(len(levels))
     lines = [f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['median_ratio']:.3g} "
              f"[{r['ci_low']:.3g}-{r['ci_high']:.3g}], {r['cost']:.3g} ms" for k, (_, r) in enumerate(front.iterrows(), 1)]
     timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time"
@@ -59,7 +73,8 @@ def summary_chart(s, out_dir):
         f = front[front["spp"] == spp]
         lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
         hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
-        ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#999", lw=0.8, zorder=1)
+        ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#bbb", lw=0.8, capsize=2,
+                    zorder=1)
         up = above[h_all.index]
         if up.any():
             ax.scatter(h_all.loc[up, "cost"], np.full(int(up.sum()), cap * 1.15), marker="^", color="grey", s=18,
@@ -79,14 +94,18 @@ def summary_chart(s, out_dir):
         ax.set_xscale("log")
         ax.set_yscale("log")
         axes.plain_log_x(ax)
+        if h_all["cost"].max() < 10 * h_all["cost"].min():  # less than a decade: label every minor tick
+            ax.xaxis.set_minor_formatter(matplotlib.ticker.FuncFormatter(lambda v, _: f"{v:g}"))
+            ax.tick_params(axis="x", which="both", labelsize=8)
         ax.set_ylim(bottom=float(g["y"].min()) / 1.3, top=cap * 1.3)
-        ax.set_title(f"{int(spp)} spp", fontsize=10)
-        ax.set_xlabel(f"{timing} per image (ms, mean over scenes)", fontsize=8)
+        ax.set_title(f"{int(spp)} spp", fontsize=11)
+        ax.set_xlabel(f"{timing} per image (ms, mean over scenes)", fontsize=9)
         ax.grid(True, which="both", alpha=0.25)
         axes.number_points(ax, list(f["cost"]), list(f["y"]), start=number)
         number += len(f)
-    panels[0].set_ylabel("error / each scene's best at that spp, lower is better\n"
-                         "(median over scenes; front: 95 % bootstrap interval)")
+    for ax in panels[:2]:
+        ax.set_ylabel("error / each scene's best at that spp,\nlower is better (median over scenes;\n"
+                      "front: 95 % bootstrap interval)", fontsize=9)
     clipped = (f"{int(above.sum())} point(s) above {cap:.3g}x (up to {g['median_ratio'].max():.3g}x) drawn as grey "
                "triangles at the top" if above.any() else "")
     handles = [plt.Line2D([], [], ls="", marker="o", color=colours[x], label=x) for x in samplers]
@@ -99,16 +118,16 @@ def summary_chart(s, out_dir):
         handles.append(plt.Line2D([], [], ls="", marker="v", color="0.3", label="median <= 0 (drawn at the edge)"))
     if (g["prefilter"] != "none").any():
         handles.append(plt.Line2D([], [], ls="", marker="o", mfc="white", mec="black", mew=1.5, label="pre-filtered"))
-    leg = panels[-1].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.02, 1.0),
-                            title="colour: sampler", title_fontsize=7)
+    leg = panels[0].legend(handles=handles, fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0),
+                           title="colour: sampler", title_fontsize=8)
     leg.set_in_layout(True)
     shown = lines[:36] + ([f"... {len(lines) - 36} more"] if len(lines) > 36 else [])
-    per = 12
+    per = max(12, -(-len(shown) // 2))  # two columns
     for c in range(0, len(shown), per):
-        fig.text(0.02 + 0.33 * (c // per), -0.02, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
-                 fontsize=7, va="top", family="monospace")
+        fig.text(0.02 + 0.5 * (c // per), -0.01, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+                 fontsize=8, va="top", family="monospace")
     fig.suptitle(f"Error against `{s.primary}` vs time: every method at every spp level, all "
-                 f"{len(s.scenes)} scenes" + (f"\n{clipped}" if clipped else ""), fontsize=10)
+                 f"{len(s.scenes)} scenes" + (f"\n{clipped}" if clipped else ""), fontsize=11)
     fig.tight_layout()
     figures.save_figure(fig, out_dir, name)
     return os.path.join(out_dir, name + ".png"), lines, g

@@ -3,7 +3,10 @@
   plan.py     which configurations are shown (a subset chosen from the CSV) and the crop window
   render.py   renders them with the raytracer (the sweep's sampler, seed and filter: the same images)
   exr.py      reads EXR images through Debian's oiiotool
+  encoding.py an image's values as a PNG data URI (8 or 16 bits over its own range) and back
   export.py   checks each image against the CSV's per-seed mse_target and writes RESULTS/viewer/<scene>.js
-  section.py  the page's section (viewer.js, viewer.css inline; the data loaded per scene when opened)
+              (loaded when the scene is opened) and <scene>_whole.js (whole images, FLIP maps against the
+              other targets: loaded when asked for)
+  section.py  the page's section; copies viewer.js and viewer.css into RESULTS/viewer/ (the page refers to them)
   cli.py      `python3 -m analysis viewer RESULTS --study CSV --raytracer build/bin/raytracer`
 """

@@ -1,6 +1,7 @@
-"""The viewer's data: one JavaScript file per scene, RESULTS/viewer/<scene>.js, loaded by a <script> element when
-the reader opens that scene (a page opened from file:// may not read files with fetch, and Chromium taints a canvas
-drawn from a file:// image; images from data: URIs it does not taint). Each file calls
+"""The viewer's data: two JavaScript files per scene, RESULTS/viewer/<scene>.js, loaded by a <script> element when
+the reader opens that scene, and RESULTS/viewer/<scene>_whole.js, loaded the same way only when the reader asks
+for a whole image or a FLIP map against a target other than the primary one (a page opened from file:// may not read files with fetch, and Chromium taints a canvas
+drawn from a file:// image; images from data: URIs it does not taint). The first file calls
 ALIASLAB_VIEWER_ADD(scene data) with:
 
   crop      {x, y, size, how}: the window where the methods differ most (plan.crop_window over set A's seed-0
@@ -11,86 +12,37 @@ ALIASLAB_VIEWER_ADD(scene data) with:
             error is taken against them) (png_entry);
             lo, hi the image's own minimum and maximum, so the step is stated per image
   configs   per configuration: sampler, spp, filter, radius, the seeds rendered, its image ids (crop per seed;
-            the whole image of seed 0 only for the grid (uniform) at the lowest spp with set A's filter: the
-            size budget), its own reference and its CSV rows, one per target: the CSV's values of the columns
-            rowColumns (ROW_COLUMNS present in the CSV), in that order; flip: {primary target: the FLIP map's id}
-  targets   the target images (crop and whole); refs: each filter x radius's own reference G
+            whole: the whole image of seed 0, 8 bits), its own reference and its CSV rows, one per target: the
+            CSV's values of the columns rowColumns (ROW_COLUMNS present in the CSV), in that order;
+            flip: {target: the FLIP map's id} for every target (the crop, seed 0)
+  targets   the target images (crop and whole); refs: each filter x radius's own reference G (crop and whole)
+  wholeFile the second file's name; its ids (prefix "w": every whole image, the FLIP maps against the targets
+            other than the primary one) are not in `images` until it is loaded: it calls
+            ALIASLAB_VIEWER_WHOLE(scene, {id: entry}) (WHOLE_DOC)
   scales    the signed error's colour scale per (spp, target): the 99th percentile of |I_0 - T| (the mean over
             the channels) over set A's methods at that spp in the crop
   verified  every image's per-seed mse_target recomputed from the EXRs against the CSV's mse_target_seeds
 
 RESULTS/viewer/index.json says what was chosen (plan.describe()) and the verification."""
-import base64
-import io
 import json
 import os
 
 import numpy as np
-from PIL import Image
-
 from .. import errors, figures
+from .encoding import channels, decode, png_entry  # noqa: F401 (decode: the tests' inverse of png_entry)
 from .exr import read_exr, read_exrs
 from .flip import flip_maps, map_path
 from .plan import crop_window, image_stem
 
 ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
                "cpu_ms")  # the CSV columns shown beside an image
-WHOLE = ("uniform",)  # the samplers whose whole image is stored (the size budget: the grid, where it aliases)
-FLIP_TARGETS = 1  # FLIP maps against the primary target only (imgdiff's time, about 0.5 s a map, and the size)
+WHOLE_DOC = ("whole images (seed 0 of every configuration shown, every own reference, every target; 8 bits over "
+             "each image's own range) and the FLIP maps against the targets other than the primary one")
 TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_target (float images, double sums)
 
 
 def crop_size(width, height):
     return int(max(8, min(24, min(width, height) // 2)))
-
-
-def encode(q, mode):
-    buf = io.BytesIO()
-    Image.fromarray(q.astype(np.uint8), mode).save(buf, "PNG", optimize=True)
-    return "data:image/png;base64," + base64.b64encode(buf.getvalue()).decode("ascii")
-
-
-def png_entry(values, bits, scale=None):
-    """An image entry {w, h, c, bits, lo, hi, src[, src2]} of an (h, w, c) array (c = 1 grey or 3 colour)
-    quantised to `bits` between its own minimum and maximum (or the fixed (lo, hi) `scale`, values clipped to it):
-    8 bits in a grey or RGB PNG; 16 bits grey in one RGB
-    PNG (red the high byte, green the low byte), colour in two RGB PNGs (src the high bytes, src2 the low)."""
-    v = np.nan_to_num(np.asarray(values, dtype=np.float64), nan=0.0, posinf=0.0, neginf=0.0)
-    h, w, c = v.shape
-    lo, hi = (float(v.min()), float(v.max())) if scale is None else (float(scale[0]), float(scale[1]))
-    v = np.clip(v, lo, hi)
-    top = (1 << bits) - 1
-    q = np.zeros(v.shape, dtype=np.int64) if hi <= lo else np.rint((v - lo) / (hi - lo) * top).astype(np.int64)
-    e = {"w": int(w), "h": int(h), "c": int(c), "bits": bits, "lo": lo, "hi": hi}
-    if bits == 8:
-        e["src"] = encode(q[..., 0], "L") if c == 1 else encode(q, "RGB")
-    elif c == 1:
-        e["src"] = encode(np.stack([q[..., 0] >> 8, q[..., 0] & 255, np.zeros_like(q[..., 0])], axis=-1), "RGB")
-    else:
-        e["src"], e["src2"] = encode(q >> 8, "RGB"), encode(q & 255, "RGB")
-    return e
-
-
-def decode(entry):
-    """The (h, w, c) values an image entry stores (the inverse of png_entry; the tests use it)."""
-    def pixels(src):
-        return np.asarray(Image.open(io.BytesIO(base64.b64decode(src.split(",", 1)[1])))).astype(np.int64)
-    a = pixels(entry["src"])
-    if entry["bits"] == 8:
-        q = a[..., None] if a.ndim == 2 else a[..., :3]
-    elif entry["c"] == 1:
-        q = ((a[..., 0] << 8) + a[..., 1])[..., None]
-    else:
-        q = (a[..., :3] << 8) + pixels(entry["src2"])[..., :3]
-    top = (1 << entry["bits"]) - 1
-    return entry["lo"] + q * (entry["hi"] - entry["lo"]) / top
-
-
-def channels(img):
-    """The image's channels as stored: one when R, G and B are equal (the grey scenes), else three."""
-    if img.shape[2] >= 3 and not (np.array_equal(img[..., 0], img[..., 1]) and np.array_equal(img[..., 0], img[..., 2])):
-        return img[..., :3]
-    return img[..., :1]
 
 
 def row_values(r):
@@ -121,13 +73,9 @@ class SceneExport:
         self.mdir, self.cache = os.path.dirname(mpath), cache
         self.targets = [str(t) for t in dict.fromkeys(self.sd["target"].astype(str))]
         self.images, self.checked, self.worst, self.imgdiff, self.same = {}, 0, 0.0, imgdiff, {}
+        self.later, self.same_later = {}, {}  # the second file's entries (ids "w0", "w1", ...)
         self.describe = {}
         self.row_columns = [c for c in ROW_COLUMNS if c in self.sd.columns]
-
-    def whole(self, c):
-        """Whether the whole image of a configuration is stored (the size budget): the grid (uniform) at the
-        lowest spp with set A's filter (the references' whole images are not stored; the primary target's is)."""
-        return "A" in c["sets"] and c["spp"] == self.plan.levels[0] and c["sampler"] in WHOLE
 
     def has_reference(self, filt, radius):
         return any(e["filter"] == filt and abs(float(e["radius"]) - radius) < 1e-9 for e in self.manifest["filters"])
@@ -146,35 +94,43 @@ class SceneExport:
                     os.path.normpath(os.path.join(self.mdir, e["image"]))
         errors.fail(f"{self.scene}: no reference {filt} r={radius:g} in its manifest")
 
-    def add(self, key, values, bits, region, scale=None):
+    def add(self, key, values, bits, region, scale=None, later=None):
         """Stores an image entry; an entry equal to one already stored (a deterministic sampler's seeds) is
-        stored once: the id returned is the first one's."""
+        stored once: the id returned is the first one's. Whole images, and entries with later=True, go to the
+        second file (loaded on demand); an entry of the first file is never replaced by one of the second."""
         x, y, n = self.crop
         part = values[y:y + n, x:x + n] if region == "crop" else values
         e = png_entry(part, bits, scale)
         same = json.dumps(e, sort_keys=True)
-        if same not in self.same:  # a short id (the size budget); `key` says what it is in this comment only
-            self.same[same] = str(len(self.images))
-            self.images[self.same[same]] = e
+        if same in self.same:
+            return self.same[same]
+        if later or (later is None and region == "whole"):
+            if same not in self.same_later:
+                self.same_later[same] = f"w{len(self.later)}"
+                self.later[self.same_later[same]] = e
+            return self.same_later[same]
+        self.same[same] = str(len(self.images))  # a short id (the size budget); `key` names it in this comment only
+        self.images[self.same[same]] = e
         return self.same[same]
 
     def flip_crops(self, configs):
-        """{config index: {target: image id}}: the FLIP map of each configuration's seed-0 image against the
-        primary target (FLIP_TARGETS; imgdiff over the whole image, the crop stored, 8 bits over the fixed scale
-        FLIP 0..1)."""
+        """{config index: {target: image id}}: the FLIP map of each configuration's seed-0 image against every
+        target (imgdiff over the whole image, the crop stored, 8 bits over the fixed scale FLIP 0..1; the maps
+        against the targets other than the primary one in the second file)."""
         if not self.imgdiff:
             return {}
         pairs, where = [], []
         for i, c in enumerate(configs):
             image = os.path.join(self.work, image_stem(c, 0) + ".exr")
-            for t in self.targets[:FLIP_TARGETS]:
+            for t in self.targets:
                 f, r = t.split(":")
                 pairs.append((image, self.reference_path(f, float(r)), map_path(image, t)))
                 where.append((i, t))
         out = {}
         for (i, t), m in zip(where, flip_maps(self.imgdiff, pairs, (self.width, self.height))):
             base = image_stem(configs[i], 0)
-            out.setdefault(i, {})[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0))
+            out.setdefault(i, {})[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0),
+                                                later=t != self.targets[0])
         return out
 
     def run(self):
@@ -225,12 +181,11 @@ class SceneExport:
                         errors.fail(f"{self.scene}: {base} seed {k}: mse_target against {t} from the image "
                                     f"{mine:.9g}, the CSV says {theirs:.9g}: the image is not the one measured")
             ref_key = f"{c['filter']}|{c['radius']:g}"
-            whole = None
-            if self.whole(c):
-                whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole")
+            whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole")
             if ref_key not in refs:
                 g, _, describe = self.reference(c["filter"], c["radius"])
-                refs[ref_key] = {"crop": self.add(f"ref-{ref_key}-crop", g, 8, "crop"), "describe": describe}
+                refs[ref_key] = {"crop": self.add(f"ref-{ref_key}-crop", g, 8, "crop"),
+                                 "whole": self.add(f"ref-{ref_key}-whole", g, 8, "whole"), "describe": describe}
             crops = {str(k): self.add(f"{base}-seed{k}-crop", seeds[(image_stem(c, 0), k)], 8, "crop")
                      for k in c["seeds"]}
             out_configs.append({"id": f"{c['sampler']}|{c['spp']}|{c['filter']}|{c['radius']:g}",
@@ -243,17 +198,16 @@ class SceneExport:
                     err = np.mean(e0 - target_imgs[t][cy:cy + n, cx:cx + n], axis=2)
                     scales.setdefault(f"{c['spp']}|{t}", []).append(np.abs(err))
         scale = {k: float(np.percentile(np.concatenate([a.ravel() for a in v]), 99)) for k, v in scales.items()}
-        targets = {t: {"crop": self.add(f"target-{t}-crop", target_imgs[t], 16, "crop")} for t in self.targets}
-        targets[self.targets[0]]["whole"] = self.add(f"target-{self.targets[0]}-whole", target_imgs[self.targets[0]],
-                                                     8, "whole")  # the primary target's only (size budget)
+        targets = {t: {"crop": self.add(f"target-{t}-crop", target_imgs[t], 16, "crop"),
+                       "whole": self.add(f"target-{t}-whole", target_imgs[t], 8, "whole")} for t in self.targets}
         return {"scene": self.scene, "width": self.width, "height": self.height,
                 "crop": {"x": cx, "y": cy, "size": n,
                          "how": f"the {n} x {n} window with the largest summed variance across the methods of set A "
                                 f"(seed 0, {plan.levels[0]} spp)"},
-                "wholeHow": f"{', '.join(WHOLE)} at {plan.levels[0]} spp, {plan.filter} r={plan.radius:g}",
+                "wholeHow": WHOLE_DOC,
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "rowColumns": self.row_columns, "scales": scale,
-                "flipHow": "per-pixel LDR-FLIP of the seed-0 image against the primary target (imgdiff "
+                "flipHow": "per-pixel LDR-FLIP of the seed-0 image against the target (imgdiff "
                            "--flip-output, the "
                            "flip column's map; its mean over the whole image and the seeds is the CSV's flip), "
                            "crop only, 8 bits over 0..1",
@@ -263,11 +217,22 @@ class SceneExport:
                 "images": self.images}
 
 
-def write_js(path, data):
+def write_js(path, data, call="ALIASLAB_VIEWER_ADD({})"):
     tmp = path + ".partial"
     with open(tmp, "w", encoding="utf-8") as f:
-        f.write("ALIASLAB_VIEWER_ADD(" + json.dumps(data, separators=(",", ":")) + ");\n")
+        f.write(call.format(json.dumps(data, separators=(",", ":"))) + ";\n")
     os.replace(tmp, path)
+
+
+def write_scene(out, scene, data, later):
+    """Writes OUT/<scene>.js (data, naming the second file) and OUT/<scene>_whole.js (the `later` entries);
+    returns their paths."""
+    slug = figures.slug(scene)
+    first, second = os.path.join(out, slug + ".js"), os.path.join(out, slug + "_whole.js")
+    write_js(second, later, "ALIASLAB_VIEWER_WHOLE(" + json.dumps(scene) + ", {})")
+    data["wholeFile"], data["wholeBytes"] = os.path.basename(second), os.path.getsize(second)
+    write_js(first, data)
+    return first, second
 
 
 def export_study(results, study, df, plan, scenes, work, cache=None, quiet=False, imgdiff=None):
@@ -276,13 +241,15 @@ def export_study(results, study, df, plan, scenes, work, cache=None, quiet=False
     index = {"study": os.path.relpath(os.path.abspath(study), os.path.abspath(results)).replace(os.sep, "/"),
              "plan": plan.describe(), "scenes": {}}
     for scene in scenes:
-        data = SceneExport(study, df, plan, scene, work, cache, imgdiff).run()
-        path = os.path.join(out, figures.slug(scene) + ".js")
-        write_js(path, data)
+        e = SceneExport(study, df, plan, scene, work, cache, imgdiff)
+        data = e.run()
+        path, whole = write_scene(out, scene, data, e.later)
         index["scenes"][scene] = {"file": os.path.basename(path), "bytes": os.path.getsize(path),
+                                  "whole_file": os.path.basename(whole), "whole_bytes": os.path.getsize(whole),
                                   "crop": data["crop"], "verified": data["verified"]}
         if not quiet:
-            print(f"{scene}: {os.path.getsize(path) / 1e3:.0f} kB, {data['verified']['comparisons']} per-seed "
+            print(f"{scene}: {os.path.getsize(path) / 1e3:.0f} kB (+ {os.path.getsize(whole) / 1e3:.0f} kB on demand), "
+                  f"{data['verified']['comparisons']} per-seed "
                   f"mse_target values recomputed, largest relative difference "
                   f"{data['verified']['max_relative_difference']:.2g}", flush=True)
     with open(os.path.join(out, "index.json"), "w", encoding="utf-8") as f:

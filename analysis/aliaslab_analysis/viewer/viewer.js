@@ -1,7 +1,9 @@
 // The comparison viewer (analysis/aliaslab_analysis/viewer): one per page, in the element #alv whose data-base is
 // the folder of the per-scene data files (export.py) and data-scenes their list. A scene's file is loaded by a
 // <script> element when the scene is opened (works from file://); its images are PNG data URIs holding values
-// (value = lo + q (hi - lo) / (2^bits - 1)), decoded once through a canvas. Panels: the current method and the
+// (value = lo + q (hi - lo) / (2^bits - 1)), decoded once through a canvas. Ids starting with "w" (whole images,
+// FLIP maps against the non-primary targets) are in the scene's second file (d.wholeFile), loaded the same way
+// the first time one of them is shown; it calls ALIASLAB_VIEWER_WHOLE(scene, images). Panels: the current method and the
 // pinned ones, drawn with the same mode, seed, region, zoom and pan; the numbers beside each are its CSV row's.
 (function () {
   "use strict";
@@ -21,6 +23,12 @@
       for (const t in c.rows) c.rows[t] = Object.fromEntries(d.rowColumns.map((k, i) => [k, c.rows[t][i]]));
     data[d.scene] = d;
     if (S.pending === d.scene) open(d.scene);
+  };
+  const later = {}, arrived = {};  // per scene: the promise of its second file, and its resolver
+  window.ALIASLAB_VIEWER_WHOLE = function (scene, images) {
+    if (!data[scene]) return;
+    Object.assign(data[scene].images, images);
+    if (arrived[scene]) arrived[scene]();
   };
 
   const fmt = (v) => v === null || v === undefined ? "n/a"
@@ -44,6 +52,20 @@
     document.head.appendChild(s);
   }
 
+  function loadLater(scene) {  // Promise: the scene's second file has been loaded (once per scene)
+    if (later[scene]) return later[scene];
+    const d = data[scene];
+    later[scene] = new Promise((resolve, reject) => {
+      if (!d.wholeFile) { reject(new Error("no whole-image file for " + scene)); return; }
+      arrived[scene] = resolve;
+      $(".alv-status").textContent = `loading the whole images of ${scene} (${(d.wholeBytes / 1e6).toFixed(1)} MB) ...`;
+      const s = el("script", {src: base + d.wholeFile});
+      s.onerror = () => { later[scene] = null; reject(new Error("could not load " + s.src)); };
+      document.head.appendChild(s);
+    });
+    return later[scene];
+  }
+
   function pixelsOf(src, w, h) {  // Promise of the RGBA bytes of a PNG data URI
     return new Promise((resolve, reject) => {
       const img = new Image();
@@ -58,10 +80,14 @@
   }
 
   function values(id) {  // Promise of {w, h, c, v: Float32Array (interleaved channels), step} of an image id
-    const key = S.scene + "/" + id;
+    const scene = S.scene, key = scene + "/" + id;
     if (decoded[key]) return decoded[key];
-    const e = D().images[id];
-    decoded[key] = Promise.all([pixelsOf(e.src, e.w, e.h), e.src2 ? pixelsOf(e.src2, e.w, e.h) : null]).then(([a, b]) => {
+    const ready = data[scene].images[id] ? Promise.resolve() : loadLater(scene);
+    decoded[key] = ready.then(() => {
+      const e = data[scene].images[id];
+      if (!e) throw new Error("no image " + id + " in the data of " + scene);
+      return Promise.all([pixelsOf(e.src, e.w, e.h), e.src2 ? pixelsOf(e.src2, e.w, e.h) : null]).then(([a, b]) => [e, a, b]);
+    }).then(([e, a, b]) => {
       const n = e.w * e.h, v = new Float32Array(n * e.c), k = (e.hi - e.lo) / (Math.pow(2, e.bits) - 1);
       for (let i = 0; i < n; ++i)
         for (let ch = 0; ch < e.c; ++ch) {
@@ -70,6 +96,7 @@
         }
       return {w: e.w, h: e.h, c: e.c, v: v, step: k};
     });
+    decoded[key].catch(() => { delete decoded[key]; });  // a failed load may be retried
     return decoded[key];
   }
 
@@ -170,13 +197,18 @@
 
   async function panelData(c) {
     const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
-    if (!id || !t) return {missing: true, seed: seed};  // whole images: a few only (the size budget)
-    if (S.mode === "ref" && !r) return {missing: true, seed: seed};
+    const why = S.region === "whole" ? "whole image not stored for this one" : "crop not stored for this one";
+    if (!id || !t) return {missing: true, seed: seed, why: why};
+    if (S.mode === "ref" && !r) return {missing: true, seed: seed, why: "own reference not stored"};
     const f = S.region === "crop" && c.flip ? c.flip[S.target] : null;  // FLIP maps: seed 0, crop only
-    if (S.mode === "flip" && !f) return {missing: true, seed: seed};
-    const img = await values(id);
-    return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: f ? await values(f) : null,
-            seed: seed};
+    if (S.mode === "flip" && !f) return {missing: true, seed: seed, why: "FLIP maps: the crop only"};
+    try {
+      const img = await values(id);
+      return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: f ? await values(f) : null,
+              seed: seed};
+    } catch (err) {
+      return {missing: true, seed: seed, why: String(err.message || err)};
+    }
   }
 
   async function draw() {
@@ -200,7 +232,7 @@
     colourBar(scale);
     const crop = d.crop;
     $(".alv-status").textContent = (S.region === "crop" ? `crop ${crop.size} x ${crop.size} at (${crop.x}, ${crop.y}): ${crop.how}`
-      : `whole image ${d.width} x ${d.height}, seed 0`) + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
+      : `whole image ${d.width} x ${d.height}, seed 0 (the whole images are loaded on demand, from ${d.wholeFile})`) + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
       "t target, 1-5 show, space next seed, a play, c crop/whole, p pin, x clear pins, + - zoom, 0 reset; drag to pan, wheel to zoom.";
     if (S.hover) readout(S.hover[0], S.hover[1]);
   }
@@ -211,11 +243,9 @@
     if (p.missing) {
       const ctx = cv.getContext("2d");
       ctx.fillStyle = "#ddd"; ctx.fillRect(0, 0, VIEW, VIEW); ctx.fillStyle = "#333"; ctx.font = "14px sans-serif";
-      ctx.fillText(S.mode === "ref" ? "whole references not stored" : S.mode === "flip"
-        ? (S.region === "crop" ? `FLIP maps against ${D().primary} only` : "FLIP maps: the crop only")
-        : "whole image not stored for this one", 20, VIEW / 2 - 10);
-      ctx.fillText("(size budget): see the crop, or the", 20, VIEW / 2 + 10);
-      ctx.fillText(D().wholeHow || "", 20, VIEW / 2 + 30);
+      const words = p.why.split(" "), lines = [""];
+      for (const w of words) if ((lines[lines.length - 1] + " " + w).length > 44) lines.push(w); else lines[lines.length - 1] += " " + w;
+      lines.forEach((line, k) => ctx.fillText(line.trim(), 20, VIEW / 2 - 10 + 20 * k));
       fig.appendChild(cv);
       fig.appendChild(el("figcaption", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
       return fig;
