@@ -14,6 +14,7 @@ from ..charts import axes as charts_axes
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
+from .adaptive import adaptive_section
 from .elements import figure, image_src, write_page
 from .findings import findings, method_name, tie_rules
 from .markdown import markdown_tables
@@ -200,6 +201,7 @@ SECTIONS = [
     summary_section,
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
+    adaptive_section,  # the adaptive samplers against their base: wins, losses and why (issue 32)
     stability_section,
     lambda c: isolation_section(c.results, c.embed),
     engineering_section,
