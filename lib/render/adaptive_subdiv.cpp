@@ -35,9 +35,21 @@ std::vector<double> spreads(const Work& w, const std::vector<Cell>& level, int l
   std::vector<size_t> order(level.size());  // the cells grouped by pixel, each group by (cy, cx)
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   const auto key = [&](size_t k) { return (static_cast<long long>(level[k].r.cy) << 20) | level[k].r.cx; };
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return level[a].p != level[b].p ? level[a].p < level[b].p : key(a) < key(b);
-  });
+  // Usually grouped already (the pixels in order; a split's 4 children in key order, one split per pixel at
+  // level 0): sorted only when some pixel's cells are apart or out of key order (two splits in one pixel).
+  bool grouped = true;
+  {
+    std::vector<char> done(static_cast<size_t>(w.pixels()), 0);
+    for (size_t k = 0; k < level.size() && grouped; ++k) {
+      const bool same = k > 0 && level[k].p == level[k - 1].p;
+      if (same ? key(k) <= key(k - 1) : done[level[k].p]) grouped = false;
+      done[level[k].p] = 1;
+    }
+  }
+  if (!grouped)
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return level[a].p != level[b].p ? level[a].p < level[b].p : key(a) < key(b);
+    });
   std::vector<double> out(level.size(), 0.0);
   const double n = std::ldexp(1.0, lv);
   std::vector<Color> lo, hi;
