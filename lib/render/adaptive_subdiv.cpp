@@ -28,56 +28,18 @@ constexpr int kChildFresh = 4;  ///< fresh samples a cell below the pixel keeps 
 /// Fresh samples a leaf keeps at least: one for a pixel, kChildFresh below.
 int keep(const Cell& c) { return c.r.level == 0 ? 1 : kChildFresh; }
 
-/// Per cell of `level` (all at depth `lv`): max over channels of (max - min) of its pixel's samples inside it (0
-/// with fewer than 2). One pass over each pixel's samples, each put in the cell of depth lv that holds it
-/// (cx = floor((x - i) 2^lv), exact in double for a float x, so the same test as x0 <= x < x0 + side).
-std::vector<double> spreads(const Work& w, const std::vector<Cell>& level, int lv) {
-  std::vector<size_t> order(level.size());  // the cells grouped by pixel, each group by (cy, cx)
-  for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  const auto key = [&](size_t k) { return (static_cast<long long>(level[k].r.cy) << 20) | level[k].r.cx; };
-  // Usually grouped already (the pixels in order; a split's 4 children in key order, one split per pixel at
-  // level 0): sorted only when some pixel's cells are apart or out of key order (two splits in one pixel).
-  bool grouped = true;
-  {
-    std::vector<char> done(static_cast<size_t>(w.pixels()), 0);
-    for (size_t k = 0; k < level.size() && grouped; ++k) {
-      const bool same = k > 0 && level[k].p == level[k - 1].p;
-      if (same ? key(k) <= key(k - 1) : done[level[k].p]) grouped = false;
-      done[level[k].p] = 1;
-    }
-  }
-  if (!grouped)
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-      return level[a].p != level[b].p ? level[a].p < level[b].p : key(a) < key(b);
-    });
-  std::vector<double> out(level.size(), 0.0);
-  const double n = std::ldexp(1.0, lv);
-  std::vector<Color> lo, hi;
-  std::vector<int> in;
-  for (size_t g = 0; g < order.size();) {
-    const long long p = level[order[g]].p;
-    size_t e = g;
-    while (e < order.size() && level[order[e]].p == p) ++e;
-    const size_t m = e - g;
-    lo.assign(m, Color::Constant(INFINITY)), hi.assign(m, Color::Constant(-INFINITY)), in.assign(m, 0);
-    const double i = static_cast<double>(p % w.width()), j = static_cast<double>(p / w.width());
-    w.forSamples(p, [&](const FilmSample& s) {
-      const double u = (s.x - i) * n, v = (s.y - j) * n;
-      if (!(u >= 0 && u < n && v >= 0 && v < n) || !s.L.allFinite()) return;
-      const long long k = (static_cast<long long>(std::floor(v)) << 20) | static_cast<long long>(std::floor(u));
-      size_t a = g, b = e;  // binary search of the group by key
-      while (a < b) {
-        const size_t mid = (a + b) / 2;
-        (key(order[mid]) < k ? a = mid + 1 : b = mid);
-      }
-      if (a == e || key(order[a]) != k) return;
-      lo[a - g] = lo[a - g].min(s.L), hi[a - g] = hi[a - g].max(s.L), ++in[a - g];
-    });
-    for (size_t t = 0; t < m; ++t)
-      if (in[t] >= 2) out[order[g + t]] = static_cast<double>((hi[t] - lo[t]).maxCoeff());
-    g = e;
-  }
-  return out;
+/// Max over channels of (max - min) of the pixel's samples inside the cell (0 with fewer than 2).
+double spreadIn(const Work& w, const Cell& c) {
+  const double side = std::ldexp(1.0, -c.r.level);
+  const double x0 = static_cast<double>(c.p % w.width()) + c.r.cx * side;
+  const double y0 = static_cast<double>(c.p / w.width()) + c.r.cy * side;
+  Color lo = Color::Constant(INFINITY), hi = Color::Constant(-INFINITY);
+  int in = 0;
+  w.forSamples(c.p, [&](const FilmSample& s) {
+    if (s.x >= x0 && s.x < x0 + side && s.y >= y0 && s.y < y0 + side && s.L.allFinite())
+      lo = lo.min(s.L), hi = hi.max(s.L), ++in;
+  });
+  return in >= 2 ? static_cast<double>((hi - lo).maxCoeff()) : 0.0;
 }
 
 }  // namespace
@@ -97,10 +59,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   long long free = w.left() - w.pixels();  // beyond the fresh samples every leaf keeps
   for (int d = 0; d <= a.params().depth && !level.empty(); ++d) {
     std::vector<Cell> split, next;
-    if (d < a.params().depth) {
-      const std::vector<double> diff = spreads(w, level, d);
-      for (size_t k = 0; k < level.size(); ++k) level[k].diff = diff[k];
-    }
+    for (Cell& c : level) c.diff = d < a.params().depth ? spreadIn(w, c) : 0.0;
     if (d == 0) {  // a pixel also splits when a neighbour's samples differ: an edge missed by its own 4 is seen
       std::vector<double> own(level.size());
       for (size_t k = 0; k < level.size(); ++k) own[k] = level[k].diff;
