@@ -139,14 +139,19 @@ class AdaptiveSection(unittest.TestCase):
                 rows = list(csv.DictReader(f))
             path = os.path.join(tmp, "plain", "study.csv")
             os.makedirs(os.path.dirname(path))
-            for keep, expect in ((lambda r: True, True), (lambda r: not r["sampler"].startswith("adaptive"), False)):
+            everything = list(rows[0])
+            older = [c for c in everything if c not in ("max_spp", "mean_spp")]  # a CSV before adaptive columns
+            for keep, columns, expect in ((lambda r: True, everything, True),
+                                          (lambda r: not r["sampler"].startswith("adaptive"), everything, False),
+                                          (lambda r: True, older, True)):
                 with open(path, "w", newline="") as f:
-                    w = csv.DictWriter(f, fieldnames=list(rows[0]))
+                    w = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
                     w.writeheader()
                     w.writerows(r for r in rows if keep(r))
                 page = adaptive.adaptive_section(context(path, tmp, os.path.join(tmp, "none")))
                 self.assertEqual(bool(page), expect)
                 self.assertNotIn("<img", page)
+                self.assertEqual("in one pixel" in page, columns is everything and expect)
 
 
 if __name__ == "__main__":

@@ -68,6 +68,14 @@ def verdict(e_a, se_a, e_b, se_b, z=ties.Z):
     return word, ratio, ratio_se, gap_z
 
 
+def num(r, column):
+    """A row's value as a float, NaN when the column is absent (older CSVs) or empty."""
+    try:
+        return float(r[column])
+    except (KeyError, TypeError, ValueError):
+        return np.nan
+
+
 def comparisons(rows, target):
     """One dict per (scene, spp, base): the best adaptive row against the base row (module doc); rows are one
     target's rows of load_study (columns error, error_se, filter_name, ...). Sorted by scene, spp, base."""
@@ -97,9 +105,9 @@ def comparisons(rows, target):
                             reconstruction=b["reconstruction"], prefilter=b["prefilter"],
                             e_a=float(a["error"]), se_a=float(a["error_se"]), e_b=float(b["error"]),
                             se_b=float(b["error_se"]), verdict=word, ratio=ratio, ratio_se=ratio_se, z=gap_z,
-                            noise_ratio=float(a["noise"]) / float(b["noise"]) if float(b["noise"]) > 0 else np.nan,
-                            aliasing=float(a["aliasing"]), aliasing_se=float(a["aliasing_se"]),
-                            mean_spp=float(a["mean_spp"]), max_spp=int(a["max_spp"]), row_a=a, row_b=b))
+                            noise_ratio=num(a, "noise") / num(b, "noise") if num(b, "noise") > 0 else np.nan,
+                            aliasing=num(a, "aliasing"), aliasing_se=num(a, "aliasing_se"),
+                            mean_spp=num(a, "mean_spp"), max_spp=num(a, "max_spp"), row_a=a, row_b=b))
     return out
 
 
@@ -110,12 +118,15 @@ def why(c):
     parts.append(f"aliasing {c['aliasing']:.2g} &plusmn; {c['aliasing_se']:.1g}, "
                  + ("zero within two standard errors: the loss is noise, not bias" if zero else
                     "not zero within two standard errors"))
-    if c["max_spp"] <= c["spp"]:
-        parts.append(f"no pixel got more than the mean {c['spp']} samples (max_spp {c['max_spp']}): nothing was "
+    most = c["max_spp"]
+    if not np.isfinite(most):
+        pass  # no max_spp column: nothing said about where the samples went
+    elif most <= c["spp"]:
+        parts.append(f"no pixel got more than the mean {c['spp']} samples (max_spp {most:g}): nothing was "
                      "moved, so the difference is only how each pixel's samples are drawn and weighted (a pilot "
                      "at a fixed weight and a fresh set)")
     else:
-        parts.append(f"it moved samples (up to {c['max_spp']} in one pixel, {c['max_spp'] / c['spp']:.1f}x the "
+        parts.append(f"it moved samples (up to {most:g} in one pixel, {most / c['spp']:.1f}x the "
                      "mean): see where in the density image")
     return "; ".join(parts)
 
@@ -180,7 +191,7 @@ def fmt_row(c):
             f"<td>{html.escape(c['base'])}</td><td>{html.escape(c['filter'])} r={c['radius']:g}{star}</td>"
             f"<td>{c['e_a']:.3g} &plusmn; {c['se_a']:.1g}</td><td>{c['e_b']:.3g} &plusmn; {c['se_b']:.1g}</td>"
             f"<td>{c['ratio']:.2f}x &plusmn; {c['ratio_se']:.2f}</td><td>{c['z']:+.1f}</td><td><b>{c['verdict']}</b>"
-            f"</td><td>{c['max_spp']}</td><td>{c['noise_ratio']:.2f}x</td></tr>")
+            f"</td><td>{c['max_spp']:g}</td><td>{c['noise_ratio']:.2f}x</td></tr>")
 
 
 def adaptive_section(c):
