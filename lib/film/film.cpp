@@ -42,7 +42,7 @@ int classicSupport(const Filter& filter) {
   return std::max(0, static_cast<int>(std::ceil(double((course ? *course : filter).radius()) - 0.5)));
 }
 
-SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts)
+SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts, Unwritten)
     : width_(width), height_(height), offsets_(static_cast<size_t>(width) * height + 1, 0) {
   if (counts.size() != static_cast<size_t>(width) * height)
     throw std::invalid_argument("SampleBuffer: " + std::to_string(counts.size()) + " counts for " +
@@ -52,7 +52,6 @@ SampleBuffer::SampleBuffer(int width, int height, const std::vector<int>& counts
     offsets_[p + 1] = offsets_[p] + static_cast<size_t>(counts[p]);
   }
   samples_.resize(offsets_.back());
-  std::fill(samples_.begin(), samples_.end(), FilmSample{});
 }
 
 namespace filmimpl {

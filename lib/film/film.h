@@ -89,8 +89,14 @@ class SampleBuffer {
   SampleBuffer(int width, int height, int spp, Unwritten)
       : width_(width), height_(height), spp_(spp), samples_(static_cast<size_t>(width) * height * spp) {}
   /// Variable count (adaptive sampling): counts[j * width + i] samples in pixel (i, j), stored pixel after
-  /// pixel in the same row-major order, so each row's samples are still contiguous.
-  SampleBuffer(int width, int height, const std::vector<int>& counts);
+  /// pixel in the same row-major order, so each row's samples are still contiguous; each FilmSample{}.
+  /// Throws std::invalid_argument unless counts has width x height entries, none negative.
+  SampleBuffer(int width, int height, const std::vector<int>& counts)
+      : SampleBuffer(width, height, counts, Unwritten{}) {
+    std::fill(samples_.begin(), samples_.end(), FilmSample{});
+  }
+  /// The same layout, nothing initialised (the caller writes every sample before reading: adaptive gather).
+  SampleBuffer(int width, int height, const std::vector<int>& counts, Unwritten);
   int width() const { return width_; }
   int height() const { return height_; }
   /// The fixed count; 0 for a variable-count buffer (use count()).

@@ -52,6 +52,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   }
   const double alpha0 = 4.0 / spp, alphaBelow = 0.25;
   std::vector<Cell> leaves, level;
+  leaves.reserve(static_cast<size_t>(w.pixels())), level.reserve(static_cast<size_t>(w.pixels()));
   for (long long p = 0; p < w.pixels(); ++p)
     level.push_back({p, {0, 0, 0, 4, static_cast<float>(alpha0 / 4)}, 1.0, alpha0});
   w.tracePixels(std::vector<int>(w.pixels(), 4), std::vector<double>(w.pixels(), alpha0));

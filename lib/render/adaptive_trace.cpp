@@ -116,25 +116,35 @@ void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
   const long long budget = w.left();
   const int lowest = std::clamp(static_cast<int>(std::lround(prm.floor * (a.spp() - n0))), 1, a.spp() - n0);
   const int cap = std::max(lowest, freshCap(a, n0));
-  auto allot = [&](double lambda, std::vector<int>* out) {
+  const auto fresh0 = [&](double lambda, double s) {
+    const double want = std::min<double>(cap, lambda * s - n0);
+    return std::max(lowest, static_cast<int>(std::floor(std::max(0.0, want))));
+  };
+  // The total depends on sd only: each distinct value once, with how many pixels have it (the dilation repeats
+  // values, flat regions share 0), so the search sums fewer terms and finds the same integer totals.
+  std::vector<std::pair<double, long long>> distinct;
+  {
+    std::vector<double> sorted(sd);
+    std::sort(sorted.begin(), sorted.end());
+    for (double s : sorted)
+      if (distinct.empty() || distinct.back().first != s) distinct.push_back({s, 1});
+      else ++distinct.back().second;
+  }
+  const auto allot = [&](double lambda) {
     long long total = 0;
-    for (long long p = 0; p < w.pixels(); ++p) {
-      const double want = std::min<double>(cap, lambda * sd[p] - n0);
-      const int m = std::max(lowest, static_cast<int>(std::floor(std::max(0.0, want))));
-      total += m;
-      if (out) (*out)[p] = m;
-    }
+    for (const auto& [s, k] : distinct) total += k * fresh0(lambda, s);
     return total;
   };
   // the largest lambda whose allocation fits the budget (the total grows with lambda)
   double lo = 0, hi = 1;
-  while (hi < 1e12 && allot(hi, nullptr) <= budget) hi *= 2;
+  while (hi < 1e12 && allot(hi) <= budget) hi *= 2;
   for (int k = 0; k < 60; ++k) {
     const double mid = 0.5 * (lo + hi);
-    (allot(mid, nullptr) <= budget ? lo : hi) = mid;
+    (allot(mid) <= budget ? lo : hi) = mid;
   }
   std::vector<int> fresh(w.pixels());
-  const long long used = allot(lo, &fresh);
+  long long used = 0;
+  for (long long p = 0; p < w.pixels(); ++p) used += fresh[p] = fresh0(lo, sd[p]);
   const std::vector<int> even = w.evenly(budget - used, sd);
   for (long long p = 0; p < w.pixels(); ++p) fresh[p] += even[p];
   traceFresh(w, fresh, alpha);

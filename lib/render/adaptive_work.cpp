@@ -93,7 +93,7 @@ void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& s
 }
 
 SampleBuffer Work::gather() const {
-  SampleBuffer out(W_, H_, count_);
+  SampleBuffer out(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample copied below
   parallelFor(H_, threads_, [&](int j) {
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;

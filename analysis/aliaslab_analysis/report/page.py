@@ -15,6 +15,7 @@ from ..charts import axes as charts_axes
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
+from .adaptive import adaptive_section
 from .elements import figure, image_src, write_page
 from .findings import findings, method_name, tie_rules
 from .markdown import markdown_tables
@@ -203,6 +204,7 @@ SECTIONS = [
     motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
+    adaptive_section,  # the adaptive samplers against their base: wins, losses and why (issue 32)
     stability_section,
     lambda c: isolation_section(c.results, c.embed),
     engineering_section,

@@ -529,3 +529,37 @@ TEST(LargeBuffers, AlignedAndReusedForTheSameSize) {
     for (aliaslab::FilmSample& f : buf.samples()) f.x = f.y = 7.f, f.weight = 3.f;
   }
 }
+
+// The variable-count buffer without the fill (SampleBuffer::Unwritten, for a caller that writes every sample:
+// the adaptive gather) has the same layout as the filled one: counts, row counts and each pixel's first sample
+// at the same offset (the prefix sums of the counts, summed here), and refuses the same bad counts. The filled
+// one still starts as FilmSample{} in large memory that a previous buffer of the same size left dirty.
+TEST(LargeBuffers, VariableCountUnwrittenHasTheFilledLayout) {
+  using aliaslab::SampleBuffer;
+  const int w = 300, h = 200;
+  std::vector<int> counts(w * h);
+  for (int p = 0; p < w * h; ++p) counts[p] = (p * 7919) % 23;  // 0 .. 22, zeros included
+  for (int round = 0; round < 2; ++round) {
+    SampleBuffer filled(w, h, counts), bare(w, h, counts, SampleBuffer::Unwritten{});
+    ASSERT_EQ(bare.samples().size(), filled.samples().size());
+    EXPECT_TRUE(bare.variable());
+    size_t offset = 0;
+    for (int j = 0; j < h; ++j) {
+      size_t row = 0;
+      for (int i = 0; i < w; ++i) {
+        const int n = counts[size_t(j) * w + i];
+        ASSERT_EQ(bare.count(i, j), n);
+        ASSERT_EQ(bare.pixel(i, j) - bare.samples().data(), std::ptrdiff_t(offset));
+        ASSERT_EQ(filled.pixel(i, j) - filled.samples().data(), std::ptrdiff_t(offset));
+        offset += n, row += n;
+      }
+      ASSERT_EQ(bare.rowCount(j), row);
+    }
+    EXPECT_EQ(offset, bare.samples().size());
+    for (const aliaslab::FilmSample& f : filled.samples()) ASSERT_TRUE(f.x == 0 && f.y == 0 && f.weight == 1.f);
+    for (aliaslab::FilmSample& f : filled.samples()) f.x = f.y = 7.f, f.weight = 3.f;
+    for (aliaslab::FilmSample& f : bare.samples()) f.x = f.y = 5.f, f.weight = 2.f;
+  }
+  EXPECT_THROW(SampleBuffer(2, 2, std::vector<int>(3, 1), SampleBuffer::Unwritten{}), std::invalid_argument);
+  EXPECT_THROW(SampleBuffer(1, 2, std::vector<int>{1, -1}, SampleBuffer::Unwritten{}), std::invalid_argument);
+}
