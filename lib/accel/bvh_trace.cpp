@@ -147,8 +147,7 @@ bool bvhEightWideSupported() { return cpuHasAvx2(); }
 std::unique_ptr<Aggregate> makeBvh(const Object& root, BvhWidth width) {
   if (width == BvhWidth::Eight && !cpuHasAvx2())
     throw std::runtime_error("makeBvh: the 8-wide BVH needs a CPU with AVX2, and this one has none");
-  const bool eight = width == BvhWidth::Eight || (width == BvhWidth::Automatic && cpuHasAvx2());
-  return std::make_unique<Bvh>(root, eight ? 8 : 4);
+  return std::make_unique<Bvh>(root, width == BvhWidth::Eight ? 8 : 4);
 }
 
 std::unique_ptr<Aggregate> makeDefaultAggregate(const Object& root, int nx, int ny, int nz) {

@@ -41,18 +41,24 @@ void closestHit8(const Bvh8View& bvh, const Ray& ray, float tmin, Hit& hit, int&
   const PreparedRay r(ray);
   const Ray8 r8(r);
   const __m256 vtmin = _mm256_set1_ps(tmin);
-  int stack[kStack8];
+  // Leaves go on the stack like inner nodes (count != 0), so they too are opened nearest first, and not at all
+  // once a hit nearer than their box is found
+  int32_t stack[kStack8];
+  uint32_t count[kStack8];
   float near[kStack8];
   int top = 0;
-  stack[top] = 0, near[top++] = -kInf;
+  stack[top] = 0, count[top] = 0, near[top++] = -kInf;
   while (top > 0) {
     --top;
     if (near[top] > hit.t) continue;
+    if (count[top] != 0) {
+      leafClosest(stack[top], count[top], r, bvh.items, bvh.packs, tmin, hit, best);
+      continue;
+    }
     const Node8& n = bvh.nodes[stack[top]];
     alignas(32) float tn[8];
     int mask = boxes8(n, r8, vtmin, _mm256_set1_ps(hit.t), tn);
-    // Hit children sorted far to near; leaves tested nearest first (each hit shortens the segment), then
-    // inner children still within it pushed far to near, so the nearest is visited next
+    // Hit children pushed far to near, so the nearest is visited next
     int idx[8], k = 0;
     for (; mask; mask &= mask - 1) {
       const int c = __builtin_ctz(mask);
@@ -61,14 +67,9 @@ void closestHit8(const Bvh8View& bvh, const Ray& ray, float tmin, Hit& hit, int&
       while (j > 0 && tn[idx[j - 1]] < tn[c]) idx[j] = idx[j - 1], --j;
       idx[j] = c;
     }
-    for (int m = k - 1; m >= 0; --m) {
-      const int c = idx[m];
-      if (n.count[c] != 0 && tn[c] <= hit.t)
-        leafClosest(n.child[c], n.count[c], r, bvh.items, bvh.packs, tmin, hit, best);
-    }
     for (int m = 0; m < k; ++m) {
       const int c = idx[m];
-      if (n.count[c] == 0 && tn[c] <= hit.t) stack[top] = n.child[c], near[top++] = tn[c];
+      stack[top] = n.child[c], count[top] = n.count[c], near[top++] = tn[c];
     }
   }
 }
