@@ -64,9 +64,9 @@ class Bvh final : public Aggregate {
   }
 
   std::string describe() const override {
-    return "bvh " + std::to_string(width_) + "-wide, " + std::to_string(nodes_.size() + nodes8_.size()) +
-           " nodes over " + std::to_string(items_.size()) + " bounded prims + " + std::to_string(unbounded_.size()) +
-           " unbounded";
+    return std::string(width_ == 8 ? "bvh 8-wide" : "bvh 4-wide") + ", " +
+           std::to_string(nodes_.size() + nodes8_.size()) + " nodes over " + std::to_string(items_.size()) +
+           " bounded prims + " + std::to_string(unbounded_.size()) + " unbounded";
   }
 
  private:
