@@ -44,13 +44,22 @@ std::unique_ptr<Aggregate> makeBruteForce(const Object& root);
 /// gem (results/tracing_speed.md).
 std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, int nz = 0);
 
+/// Node width of the BVH: Four (SSE, any x86-64-v2 CPU), Eight (AVX2; only on a CPU that has it, else
+/// makeBvh throws) or Automatic, the default: Four on every CPU, since Eight was measured no faster on an
+/// AVX2 machine (results/tracing_speed.md, 2026-11-26). Both give the same hits.
+enum class BvhWidth { Automatic, Four, Eight };
+
+/// Whether this CPU runs the 8-wide BVH (has AVX2).
+bool bvhEightWideSupported();
+
 /// A bounding volume hierarchy (accel/bvh.h, bvh_build.cpp, bvh_trace.cpp): binned-SAH build, 4-wide
-/// nodes tested with SSE, ordered closest-hit traversal, early-out any-hit.
+/// nodes tested with SSE or 8-wide nodes tested with AVX2 (bvh_trace_avx2.cpp), ordered closest-hit
+/// traversal, early-out any-hit; the same leaf tests either way (bvh_leaf.h), so the same hits.
 /// Triangles use a watertight hit test (no ray slips between the triangles
 /// of a shared edge) and Triangle::intersect's t, so the closest hit equals
 /// brute force's (ties in t to the lower flattened index) except for rays
 /// within rounding of an edge, where the watertight test decides.
-std::unique_ptr<Aggregate> makeBvh(const Object& root);
+std::unique_ptr<Aggregate> makeBvh(const Object& root, BvhWidth width = BvhWidth::Automatic);
 
 /// The default accelerator: the BVH when the scene has triangles (measured
 /// faster than the grid on every mesh scene, closest and any hit,

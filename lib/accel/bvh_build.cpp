@@ -30,7 +30,7 @@ struct BinaryNode {
 /// The build's state: the items in leaf order and the nodes and packs collapsed so far.
 class Builder {
  public:
-  explicit Builder(const Object& root) {
+  Builder(const Object& root, int width) {
     const auto t0 = std::chrono::steady_clock::now();
     root.flatten(Mat4::Identity(), prims_);
     std::vector<BBox> boxes;
@@ -70,15 +70,15 @@ class Builder {
       std::vector<Item> sorted(items_.size());
       for (size_t i = 0; i < order.size(); ++i) sorted[i] = items_[order[i]];
       items_.swap(sorted);
-      nodes_.reserve(bin.size() / 2 + 1);
-      collapse(0, bin);
+      if (width == 8) nodes8_.reserve(bin.size() / 4 + 1), collapse(0, bin, nodes8_);
+      else nodes_.reserve(bin.size() / 2 + 1), collapse(0, bin, nodes_);
     }
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
   BvhLayout take() && {
-    return {std::move(prims_), std::move(unbounded_), std::move(items_), std::move(nodes_), std::move(packs_),
-            buildSeconds_};
+    return {std::move(prims_), std::move(unbounded_), std::move(items_), std::move(nodes_), std::move(nodes8_),
+            std::move(packs_), buildSeconds_};
   }
 
  private:
@@ -137,12 +137,14 @@ class Builder {
     split(l + 1, mid, end, order, boxes, centroids, bin);
   }
 
-  /// 4-wide node for binary node b (an inner node); returns its index.
-  int collapse(int b, const std::vector<BinaryNode>& bin) {
+  /// Node of Node::kWidth children for binary node b (an inner node); returns its index.
+  template <class Node>
+  int collapse(int b, const std::vector<BinaryNode>& bin, std::vector<Node>& nodes) {
+    constexpr int W = Node::kWidth;
     std::vector<int> kids;
     if (bin[b].left < 0) kids = {b};  // the root is a leaf
     else kids = {bin[b].left, bin[b].right};
-    while (kids.size() < 4) {
+    while (kids.size() < static_cast<size_t>(W)) {
       int pick = -1;
       float bestArea = -1.f;
       for (size_t i = 0; i < kids.size(); ++i)
@@ -152,10 +154,10 @@ class Builder {
       kids[pick] = bin[k].left;
       kids.push_back(bin[k].right);
     }
-    const int index = static_cast<int>(nodes_.size());
-    nodes_.push_back({});
-    for (int c = 0; c < 4; ++c) {
-      Node4& n = nodes_[index];
+    const int index = static_cast<int>(nodes.size());
+    nodes.push_back({});
+    for (int c = 0; c < W; ++c) {
+      Node& n = nodes[index];
       if (c >= static_cast<int>(kids.size())) {
         for (int a = 0; a < 3; ++a) n.lo[a][c] = kInf, n.hi[a][c] = -kInf;
         n.child[c] = -1, n.count[c] = 0;
@@ -180,8 +182,8 @@ class Builder {
         }
       } else {
         n.count[c] = 0;
-        const int child = collapse(kids[c], bin);
-        nodes_[index].child[c] = child;
+        const int child = collapse(kids[c], bin, nodes);
+        nodes[index].child[c] = child;
       }
     }
     return index;
@@ -191,12 +193,13 @@ class Builder {
   std::vector<int> unbounded_;
   std::vector<Item> items_;
   std::vector<Node4> nodes_;
+  std::vector<Node8> nodes8_;
   std::vector<TriPack> packs_;  ///< the triangle-only leaves
   double buildSeconds_ = 0;
 };
 
 }  // namespace
 
-BvhLayout buildBvh(const Object& root) { return Builder(root).take(); }
+BvhLayout buildBvh(const Object& root, int width) { return Builder(root, width).take(); }
 
 }  // namespace aliaslab::bvhimpl

@@ -1,7 +1,8 @@
 // Primary closest-hit queries per second on every scenes/*.txt: the grid,
-// the BVH, brute force and (with -DALIASLAB_EMBREE=ON) Embree's
-// rtcIntersect1; any-hit (shadow) queries: grid, BVH and rtcOccluded1;
-// build times of the grid and the BVH.
+// the BVH (bvh4: 4-wide SSE nodes; bvh8: 8-wide AVX2 nodes, where the CPU has
+// AVX2), brute force and (with -DALIASLAB_EMBREE=ON) Embree's rtcIntersect1;
+// any-hit (shadow) queries: grid, both BVHs and rtcOccluded1; build times of
+// the grid and both BVHs.
 //
 // Shadow rays: from the hit point of every 4th primary ray that hits
 // (offset 1e-3 along the normal, towards the light) to each scene light,
@@ -45,7 +46,7 @@ struct ShadowRay {
 
 struct Workload {
   Scene scene;
-  std::unique_ptr<Aggregate> grid, brute, bvh;
+  std::unique_ptr<Aggregate> grid, brute, bvh, bvh8;  ///< bvh: 4-wide; bvh8: null without AVX2
   std::vector<Ray> rays;  ///< pixel-major, kSpp per pixel
   std::vector<ShadowRay> shadowRays;
   float tmin = 0.f;
@@ -68,7 +69,8 @@ Workload& workload(const std::string& path) {
         const float v = (k / kStrata + toUnitFloat(hashWords(key, k, 1))) / kStrata;
         w.rays.push_back(w.scene.camera->generateRay(filmToScreen(px + u, py + v, kSize, kSize)));
       }
-  w.bvh = makeBvh(*w.scene.root);
+  w.bvh = makeBvh(*w.scene.root, BvhWidth::Four);
+  if (bvhEightWideSupported()) w.bvh8 = makeBvh(*w.scene.root, BvhWidth::Eight);
   // Shadow rays from the hits of every 4th primary ray
   std::vector<std::unique_ptr<Light>> fallback;
   const auto* lights = &w.scene.lights;
@@ -99,9 +101,10 @@ Workload& workload(const std::string& path) {
 }
 
 /// Any-hit queries of the shadow rays.
-void occludedAggregate(benchmark::State& state, const std::string& path, bool useGrid) {
+void occludedAggregate(benchmark::State& state, const std::string& path, int bvhWidth) {
   Workload& w = workload(path);
-  const Aggregate& agg = useGrid ? *w.grid : *w.bvh;
+  if (bvhWidth == 8 && !w.bvh8) return state.SkipWithError("this CPU has no AVX2");
+  const Aggregate& agg = bvhWidth == 0 ? *w.grid : bvhWidth == 8 ? *w.bvh8 : *w.bvh;
   size_t blocked = 0, n = 0;
   for (auto _ : state)
     for (const ShadowRay& s : w.shadowRays) blocked += agg.occluded(s.ray, 0.f, s.tmax), ++n;
@@ -110,22 +113,29 @@ void occludedAggregate(benchmark::State& state, const std::string& path, bool us
   state.SetLabel(agg.describe());
 }
 
-/// Build time of the grid (automatic resolution) or the BVH.
-void buildAggregate(benchmark::State& state, const std::string& path, bool useGrid) {
+/// Build time of the grid (automatic resolution, bvhWidth 0) or the BVH of the given width.
+void buildAggregate(benchmark::State& state, const std::string& path, int bvhWidth) {
   Workload& w = workload(path);
+  if (bvhWidth == 8 && !w.bvh8) return state.SkipWithError("this CPU has no AVX2");
   size_t nodes = 0;
   for (auto _ : state) {
-    const auto agg = useGrid ? makeGrid(*w.scene.root) : makeBvh(*w.scene.root);
+    const auto agg = bvhWidth == 0   ? makeGrid(*w.scene.root)
+                     : bvhWidth == 4 ? makeBvh(*w.scene.root, BvhWidth::Four)
+                                     : makeBvh(*w.scene.root, BvhWidth::Eight);
     nodes += agg->stats().nodes + agg->stats().references;
     benchmark::DoNotOptimize(nodes);
   }
 }
 
-enum class Method { Grid, Brute, Bvh };
+enum class Method { Grid, Brute, Bvh, Bvh8 };
 
 void traceAggregate(benchmark::State& state, const std::string& path, Method method) {
   Workload& w = workload(path);
-  const Aggregate& agg = method == Method::Grid ? *w.grid : method == Method::Bvh ? *w.bvh : *w.brute;
+  if (method == Method::Bvh8 && !w.bvh8) return state.SkipWithError("this CPU has no AVX2");
+  const Aggregate& agg = method == Method::Grid  ? *w.grid
+                         : method == Method::Bvh ? *w.bvh
+                         : method == Method::Bvh8 ? *w.bvh8
+                                                  : *w.brute;
   const size_t stride = method == Method::Brute ? kSpp : 1;
   size_t hits = 0, n = 0;
   for (auto _ : state) {
@@ -295,13 +305,14 @@ const bool registered = [] {
   std::sort(files.begin(), files.end());
   for (const auto& f : files) {
     const std::string name = f.stem().string(), path = f.string();
-    benchmark::RegisterBenchmark(("Trace/grid/" + name).c_str(), traceAggregate, path, Method::Grid)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Trace/bvh/" + name).c_str(), traceAggregate, path, Method::Bvh)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Trace/brute/" + name).c_str(), traceAggregate, path, Method::Brute)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Occluded/grid/" + name).c_str(), occludedAggregate, path, true)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Occluded/bvh/" + name).c_str(), occludedAggregate, path, false)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Build/grid/" + name).c_str(), buildAggregate, path, true)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark(("Build/bvh/" + name).c_str(), buildAggregate, path, false)->Unit(benchmark::kMillisecond);
+    auto add = [&](const std::string& what, auto fn, auto arg) {
+      benchmark::RegisterBenchmark((what + "/" + name).c_str(), fn, path, arg)->Unit(benchmark::kMillisecond);
+    };
+    add("Trace/grid", traceAggregate, Method::Grid), add("Trace/bvh4", traceAggregate, Method::Bvh);
+    add("Trace/bvh8", traceAggregate, Method::Bvh8), add("Trace/brute", traceAggregate, Method::Brute);
+    add("Occluded/grid", occludedAggregate, 0), add("Occluded/bvh4", occludedAggregate, 4);
+    add("Occluded/bvh8", occludedAggregate, 8);
+    add("Build/grid", buildAggregate, 0), add("Build/bvh4", buildAggregate, 4), add("Build/bvh8", buildAggregate, 8);
     if (name == "vase")  // the former automatic resolution (3 cbrt(N) along the longest axis)
       benchmark::RegisterBenchmark("Trace/grid_34x48x34/vase", traceFixedGrid, path, std::array{34, 48, 34})
           ->Unit(benchmark::kMillisecond);

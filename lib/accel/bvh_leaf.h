@@ -1,0 +1,186 @@
+// Private to accel/: the leaf tests of the bounding volume hierarchy, shared by the 4-wide traversal
+// (bvh_trace.cpp, built for any x86-64-v2 CPU) and the 8-wide one (bvh_trace_avx2.cpp, built with -mavx2), so
+// both run the same float operations in the same order and return the same hits, t to the last bit (-mavx2
+// does not allow FMA contraction). Everything here is in an unnamed namespace and always inlined: each
+// translation unit has its own copy, so no AVX2-encoded copy can stand in for the other's at link time.
+//
+// Triangles: the watertight test of Woop, Benthin and Wald (2013) decides
+// hit or miss (shear the triangle into the ray's space, signs of three 2D
+// edge functions, recomputed in double when one is exactly zero), so a ray
+// through a shared edge or vertex of a closed mesh hits at least one of the
+// triangles. The distance t of an accepted triangle is then computed with
+// the Moller-Trumbore formula Triangle::intersect uses, so t (and hence
+// every shaded value) is bit-identical to brute force whenever both tests
+// accept; they differ only for rays within rounding of an edge.
+// Leaves made only of triangles (all but a few) are stored as a TriPack, so
+// the watertight test runs on up to four triangles per SSE instruction; the
+// accepted ones are then taken in item order, as the one-by-one loop would.
+// Closest hit: t in (tmin, hit.t), ties in t to the lower flattened index
+// (as brute force's list order gives), whatever order nodes are visited in.
+#pragma once
+#include <xmmintrin.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "accel/bvh.h"
+#include "geometry/primitives.h"
+#include "geometry/triangle_math.h"
+
+namespace aliaslab::bvhimpl {
+namespace {
+
+/// A ray prepared for both box and watertight triangle tests.
+struct PreparedRay {
+  const Ray* ray;
+  __m128 o[3], inv[3];
+  bool negative[3];  ///< direction component < 0: the slab is entered through hi
+  int kx, ky, kz;
+  float sx, sy, sz;
+  __m128 okx, oky, okz, vsx, vsy;  ///< origin along kx, ky, kz and the shears, broadcast (pack test)
+  explicit PreparedRay(const Ray& r) : ray(&r) {
+    const Vec3& d = r.direction;
+    for (int a = 0; a < 3; ++a) {
+      float da = d[a];
+      if (std::abs(da) < 1e-30f) da = std::signbit(da) ? -1e-30f : 1e-30f;
+      o[a] = _mm_set1_ps(r.origin[a]);
+      inv[a] = _mm_set1_ps(1.f / da);
+      negative[a] = da < 0.f;
+    }
+    const Vec3 ad = d.cwiseAbs();
+    kz = ad.x() > ad.y() ? (ad.x() > ad.z() ? 0 : 2) : (ad.y() > ad.z() ? 1 : 2);
+    kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0.f) std::swap(kx, ky);  // keep the winding
+    sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.f / d[kz];
+    okx = _mm_set1_ps(r.origin[kx]), oky = _mm_set1_ps(r.origin[ky]), okz = _mm_set1_ps(r.origin[kz]);
+    vsx = _mm_set1_ps(sx), vsy = _mm_set1_ps(sy);
+  }
+};
+
+/// Woop-Benthin-Wald: does the ray's line pass through the triangle
+/// (edges and vertices included)? Direction-agnostic in t; t is checked later.
+[[gnu::always_inline]] inline bool watertightHit(const PreparedRay& r, const Item& it) {
+  const Vec3& o = r.ray->origin;
+  const Vec3 A = it.a - o, B = it.b - o, C = it.c - o;
+  const float ax = A[r.kx] - r.sx * A[r.kz], ay = A[r.ky] - r.sy * A[r.kz];
+  const float bx = B[r.kx] - r.sx * B[r.kz], by = B[r.ky] - r.sy * B[r.kz];
+  const float cx = C[r.kx] - r.sx * C[r.kz], cy = C[r.ky] - r.sy * C[r.kz];
+  float u = cx * by - cy * bx, v = ax * cy - ay * cx, w = bx * ay - by * ax;
+  if (u == 0.f || v == 0.f || w == 0.f) {
+    u = static_cast<float>(static_cast<double>(cx) * by - static_cast<double>(cy) * bx);
+    v = static_cast<float>(static_cast<double>(ax) * cy - static_cast<double>(ay) * cx);
+    w = static_cast<float>(static_cast<double>(bx) * ay - static_cast<double>(by) * ax);
+  }
+  if ((u < 0.f || v < 0.f || w < 0.f) && (u > 0.f || v > 0.f || w > 0.f)) return false;
+  return u + v + w != 0.f;  // zero: the ray lies in the triangle's plane
+}
+
+/// watertightHit() for the triangles of a pack at once, as a lane mask: the
+/// same float operations in the same order per lane (so the same answers);
+/// a lane with an edge function exactly zero is decided by the scalar test
+/// (its double recomputation).
+[[gnu::always_inline]] inline int watertightHits(const PreparedRay& r, const TriPack& p, const Item* items) {
+  const __m128 zero = _mm_setzero_ps();
+  auto shear = [&](const float (*v)[4], __m128& x, __m128& y) {
+    const __m128 vz = _mm_sub_ps(_mm_load_ps(v[r.kz]), r.okz);
+    x = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(v[r.kx]), r.okx), _mm_mul_ps(r.vsx, vz));
+    y = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(v[r.ky]), r.oky), _mm_mul_ps(r.vsy, vz));
+  };
+  __m128 ax, ay, bx, by, cx, cy;
+  shear(p.a, ax, ay), shear(p.b, bx, by), shear(p.c, cx, cy);
+  const __m128 u = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
+  const __m128 v = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
+  const __m128 w = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
+  const __m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
+  const __m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
+  const __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(_mm_add_ps(_mm_add_ps(u, v), w), zero));
+  const __m128 edge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
+  const int valid = (1 << p.n) - 1;
+  int mask = _mm_movemask_ps(ok) & valid;
+  int exact = _mm_movemask_ps(edge) & valid;
+  while (exact) {
+    const int l = __builtin_ctz(exact);
+    exact &= exact - 1;
+    mask = watertightHit(r, items[p.item[l]]) ? (mask | (1 << l)) : (mask & ~(1 << l));
+  }
+  return mask;
+}
+
+/// Moller-Trumbore's t, the exact expressions of intersectTriangle().
+[[gnu::always_inline]] inline bool mollerTrumboreT(const Ray& ray, const Item& it, float& t) {
+  const Vec3 p = ray.direction.cross(it.e2);
+  const float det = it.e1.dot(p);
+  if (det == 0.f) return false;
+  const float inv = 1.f / det;
+  const Vec3 s = ray.origin - it.a;
+  const Vec3 q = s.cross(it.e1);
+  t = it.e2.dot(q) * inv;
+  return true;
+}
+
+/// A primitive with its own intersect(): a tie in t goes to the lower index.
+[[gnu::always_inline]] inline void testObject(const Object& obj, int prim, const Ray& ray, float tmin, Hit& hit,
+                                              int& best) {
+  Hit h = hit;
+  if (best >= 0 && prim < best) h.t = std::nextafter(hit.t, kInf);
+  if (obj.intersect(ray, tmin, h)) hit = h, best = prim;
+}
+
+/// A triangle the watertight test accepted: its Moller-Trumbore t, ties in t to the lower index.
+[[gnu::always_inline]] inline void acceptTriangle(const Item& it, const Ray& ray, float tmin, Hit& hit, int& best) {
+  float t;
+  if (!mollerTrumboreT(ray, it, t)) return;
+  if (!(t > tmin)) return;
+  if (!(t < hit.t || (t == hit.t && best >= 0 && it.prim < best))) return;
+  hit.t = t;
+  hit.normal = triangleNormal(it.e1, it.e2);
+  hit.material = it.material;
+  best = it.prim;
+}
+
+/// Closest hit within a leaf: child and count as a node stores them (count | kPacked: a TriPack).
+[[gnu::always_inline]] inline void leafClosest(int32_t child, uint32_t count, const PreparedRay& r,
+                                               const Item* items, const TriPack* packs, float tmin, Hit& hit,
+                                               int& best) {
+  if (count & kPacked) {
+    const TriPack& p = packs[child];
+    for (int mask = watertightHits(r, p, items); mask; mask &= mask - 1)  // lanes in item order
+      acceptTriangle(items[p.item[__builtin_ctz(mask)]], *r.ray, tmin, hit, best);
+    return;
+  }
+  for (uint32_t e = 0; e < count; ++e) {
+    const Item& it = items[child + e];
+    if (it.obj) testObject(*it.obj, it.prim, *r.ray, tmin, hit, best);
+    else if (watertightHit(r, it)) acceptTriangle(it, *r.ray, tmin, hit, best);
+  }
+}
+
+/// Any hit with tmin < t < tmax within a leaf.
+[[gnu::always_inline]] inline bool leafAny(int32_t child, uint32_t count, const PreparedRay& r, const Item* items,
+                                           const TriPack* packs, float tmin, float tmax) {
+  const Ray& ray = *r.ray;
+  if (count & kPacked) {
+    const TriPack& p = packs[child];
+    for (int mask = watertightHits(r, p, items); mask; mask &= mask - 1) {
+      float t;
+      if (mollerTrumboreT(ray, items[p.item[__builtin_ctz(mask)]], t) && t > tmin && t < tmax) return true;
+    }
+    return false;
+  }
+  for (uint32_t e = 0; e < count; ++e) {
+    const Item& it = items[child + e];
+    if (it.obj) {
+      Hit h;
+      h.t = tmax;
+      if (it.obj->intersect(ray, tmin, h)) return true;
+    } else {
+      float t;
+      if (watertightHit(r, it) && mollerTrumboreT(ray, it, t) && t > tmin && t < tmax) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+}  // namespace aliaslab::bvhimpl
