@@ -234,7 +234,9 @@ TEST(SpectraIntegrity, AMergeOfShardsWithDamagedSpectraIsRefusedNamingTheFile) {
   for (const auto& [damage, expected] : damages) {
     fs::remove(victim);
     if (damage == "empty") writeBytes(victim, "");
-    if (damage == "fifo") ASSERT_EQ(::mkfifo(victim.c_str(), 0644), 0);
+    if (damage == "fifo") {
+      ASSERT_EQ(::mkfifo(victim.c_str(), 0644), 0);
+    }
     if (damage == "cut mid-line") writeBytes(victim, good.substr(0, good.size() - 5));
     if (damage == "one line short") writeBytes(victim, firstLines(lines.size() - 1));
     if (damage == "two thirds") writeBytes(victim, firstLines(lines.size() * 2 / 3));
