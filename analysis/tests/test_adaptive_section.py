@@ -65,7 +65,8 @@ def rows_of(study):
 
 
 def context(study, results, images):
-    return types.SimpleNamespace(s=rows_of(study), study=study, results=results, images=images, embed=False)
+    return types.SimpleNamespace(s=rows_of(study), study=study, results=results, images=images, embed=False,
+                                 science="../docs/science.html")
 
 
 class AdaptiveSection(unittest.TestCase):

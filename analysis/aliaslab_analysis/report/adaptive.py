@@ -200,6 +200,7 @@ def adaptive_section(c):
     if not cmp:
         return ""
     n = {w: sum(x["verdict"] == w for x in cmp) for w in ("wins", "loses", "tied")}
+    docs_dir = c.science.rsplit("science.html", 1)[0]  # the rendered definitions' folder, relative to the page
     body = ["<h2 id='adaptive'>Adaptive sampling against its base</h2>",
             "<p>Per scene and spp, the best adaptive variant against its base sampler at the same mean spp, "
             f"error against <code>{html.escape(c.s.primary)}</code>, both with the target's own filter "
@@ -207,7 +208,8 @@ def adaptive_section(c):
             "adaptive error over the base's, &plusmn; its standard error; z: the difference in standard errors "
             "(positive: adaptive better); <i>wins</i> or <i>loses</i> beyond two standard errors, else "
             f"<i>tied</i> (the tie rule above). Over the {len(cmp)} cells: it wins {n['wins']}, loses "
-            f"{n['loses']}, ties {n['tied']}. Definitions: <a href='docs/adaptive.html'>docs/adaptive.md</a>.</p>",
+            f"{n['loses']}, ties {n['tied']}. Definitions: <a href='{html.escape(docs_dir)}adaptive.html'>"
+            "docs/adaptive.md</a>.</p>",
             "<table><tr><th>scene</th><th>spp</th><th>adaptive</th><th>base</th><th>filter</th>"
             "<th>adaptive error</th><th>base error</th><th>ratio</th><th>z</th><th></th><th>max_spp</th>"
             "<th>noise ratio</th></tr>" + "".join(fmt_row(x) for x in cmp) + "</table>"]
