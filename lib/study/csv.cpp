@@ -55,8 +55,10 @@ const std::string& csvHeader(bool motion) {
   return motion ? moving : still;
 }
 
+size_t csvColumnCount(bool motion) { return csvColumns().size() + (motion ? csvMotionColumns().size() : 0); }
+
 bool isStudyRow(const std::vector<std::string>& f) {
-  return f.size() == csvColumns().size() || f.size() == csvColumns().size() + csvMotionColumns().size();
+  return f.size() == csvColumnCount(false) || f.size() == csvColumnCount(true);
 }
 
 size_t csvColumn(const std::string& name) {
@@ -259,7 +261,7 @@ CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
       const size_t end = text.find('\n', start);
       const std::string line = text.substr(start, end - start);
       const size_t n = splitCsvLine(line).size();
-      const size_t expected = csvColumns().size() + (motion ? csvMotionColumns().size() : 0);
+      const size_t expected = csvColumnCount(motion);
       if (!line.empty() && n != expected)
         throw ParseError(path, lineNo, "not a study row (" + std::to_string(n) + " fields, expected " +
                                            std::to_string(expected) + "); the CSV is left unchanged");

@@ -81,7 +81,7 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows,
     }
     if (line.empty()) continue;
     const size_t n = splitCsvLine(line).size();
-    const size_t expected = csvColumns().size() + (motion ? csvMotionColumns().size() : 0);
+    const size_t expected = csvColumnCount(motion);
     if (n != expected)
       throw ParseError(path, lineNo, "has " + std::to_string(n) + " fields, expected " + std::to_string(expected) +
                                          " (a damaged row)");
