@@ -47,7 +47,7 @@ double spreadIn(const Work& w, const Cell& c) {
 void runSubdivision(Work& w, const AdaptiveSampler& a) {
   const int spp = a.spp();
   if (spp < 5) {  // no room for 4 decision samples and a fresh one: the base sampler, nothing decided
-    w.tracePixels(std::vector<int>(w.pixels(), spp), std::vector<double>(w.pixels(), 1.0));
+    w.tracePixels(std::vector<int>(w.pixels(), spp), std::vector<double>(w.pixels(), 1.0), true);
     return;
   }
   const double alpha0 = 4.0 / spp, alphaBelow = 0.25;
@@ -110,8 +110,12 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
     n[k] += static_cast<int>(whole), given += whole;
     rest.push_back({share - static_cast<double>(whole), k});
   }
-  std::stable_sort(rest.begin(), rest.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
-  for (size_t k = 0; k < rest.size() && given < free; ++k) ++n[rest[k].second], ++given;
+  // the (free - given) largest remainders, ties to the earlier leaf: a strict order, so the set is unique and
+  // only it is needed (a selection, not a sort of every leaf)
+  const auto larger = [](const auto& x, const auto& y) { return x.first != y.first ? x.first > y.first : x.second < y.second; };
+  const size_t more = static_cast<size_t>(std::clamp<long long>(free - given, 0, static_cast<long long>(rest.size())));
+  if (more < rest.size()) std::nth_element(rest.begin(), rest.begin() + static_cast<long long>(more), rest.end(), larger);
+  for (size_t k = 0; k < more; ++k) ++n[rest[k].second], ++given;
   for (size_t k = 0; given > free && k < n.size(); ++k)  // rounding of the shares: never past the budget
     if (n[k] > keep(leaves[k])) --n[k], --given;
   std::vector<std::pair<long long, Request>> requests;
@@ -120,7 +124,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
     const Cell& c = leaves[k];
     requests.push_back({c.p, {c.r.level, c.r.cx, c.r.cy, n[k], static_cast<float>(c.mass * (1 - c.alpha) / n[k])}});
   }
-  w.trace(requests);
+  w.trace(requests, true);
 }
 
 }  // namespace aliaslab::adaptiveimpl

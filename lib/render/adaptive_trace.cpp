@@ -24,15 +24,17 @@ int freshCap(const AdaptiveSampler& a, int n0) {
   return std::max(1, static_cast<int>(std::llround(a.params().cap * a.spp())) - n0);
 }
 
-/// The pilot: n0 samples per pixel, each of weight 1 / spp (its share alpha / n0). Returns alpha.
+/// The pilot: n0 samples per pixel, each of weight 1 / spp (its share alpha / n0). Returns alpha. The last
+/// round when n0 = spp (nothing left to allocate).
 double tracePilot(Work& w, const AdaptiveSampler& a, int n0) {
-  w.tracePixels(std::vector<int>(w.pixels(), n0), std::vector<double>(w.pixels(), double(n0) / a.spp()));
+  w.tracePixels(std::vector<int>(w.pixels(), n0), std::vector<double>(w.pixels(), double(n0) / a.spp()),
+                n0 == a.spp());
   return double(n0) / a.spp();
 }
 
-/// The fresh round: fresh[p] >= 1 samples in every pixel sharing 1 - alpha of its estimate.
+/// The fresh round, the last: fresh[p] >= 1 samples in every pixel sharing 1 - alpha of its estimate.
 void traceFresh(Work& w, const std::vector<int>& fresh, double alpha) {
-  w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - alpha));
+  w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - alpha), true);
 }
 
 /// The largest value over each pixel's 3 x 3 neighbourhood.

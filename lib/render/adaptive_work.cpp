@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "core/hash.h"
 #include "core/parallel.h"
@@ -17,7 +18,8 @@ Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height
   for (long long p = 0; p < N_; ++p) hash_[p] = hashWords(a.seed(), 0x72616e6bULL, static_cast<uint64_t>(p));
 }
 
-void Work::trace(const std::vector<std::pair<long long, Request>>& requests) {
+void Work::trace(const std::vector<std::pair<long long, Request>>& requests, bool last) {
+  if (finished_) throw std::logic_error("adaptive Work: a round after the last one");
   // The round's layout: requests grouped by pixel (a counting sort keeping each pixel's order), and the
   // samples of pixel p at [start[p], start[p + 1]) of one flat buffer.
   Round round;
@@ -48,15 +50,23 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests) {
       plan[r.n].push_back(s.get());
     }
   }
-  round.samples = SampleBuffer::Storage(static_cast<size_t>(total));
+  for (long long p = 0; p < N_; ++p) count_[p] += static_cast<int>(round.start[p + 1] - round.start[p]);
+  // Where the round's samples go: its own flat buffer, or (last round) the final buffer after each pixel's
+  // earlier samples, which are copied there first.
+  if (last) final_ = SampleBuffer(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample written below
+  else round.samples = SampleBuffer::Storage(static_cast<size_t>(total));
   parallelFor(H_, threads_, [&](int j) {
     std::vector<Vec2> u;
     const float topY = std::nextafter(static_cast<float>(j + 1), 0.f);
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;
+      FilmSample* out = round.samples.data() + round.start[p];
+      if (last) {
+        out = final_.pixel(i, j);
+        for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
+      }
       if (first[p] == first[p + 1]) continue;
       const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
-      FilmSample* out = round.samples.data() + round.start[p];
       for (size_t c = first[p]; c < first[p + 1]; ++c) {
         const Request& r = cells[c];
         if (r.n <= 0) continue;
@@ -75,8 +85,13 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests) {
       }
     }
   });
-  for (long long p = 0; p < N_; ++p) count_[p] += static_cast<int>(round.start[p + 1] - round.start[p]);
-  rounds_.push_back(std::move(round));
+  if (last) {
+    final_.setAreaWeighted(true);
+    rounds_.clear();  // all in final_ now
+    finished_ = true;
+  } else {
+    rounds_.push_back(std::move(round));
+  }
   spent_ += total, ++round_;
   if (progress_) {
     const double f = static_cast<double>(spent_) / static_cast<double>(std::max(1LL, B_));
@@ -84,15 +99,16 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests) {
   }
 }
 
-void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share) {
+void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last) {
   std::vector<std::pair<long long, Request>> requests;
   requests.reserve(static_cast<size_t>(N_));
   for (long long p = 0; p < N_; ++p)
     if (add[p] > 0) requests.push_back({p, {0, 0, 0, add[p], static_cast<float>(share[p] / add[p])}});
-  trace(requests);
+  trace(requests, last);
 }
 
-SampleBuffer Work::gather() const {
+SampleBuffer Work::gather() {
+  if (finished_) return std::move(final_);
   SampleBuffer out(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample copied below
   parallelFor(H_, threads_, [&](int j) {
     for (int i = 0; i < W_; ++i) {

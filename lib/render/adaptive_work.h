@@ -2,8 +2,9 @@
 // pixel's samples so far and the budget, and the rounds that trace more of them (Work::trace). The methods
 // read the samples through the inline accessors; each round is one call. Storage: each round's samples go
 // into one flat buffer laid out pixel after pixel by that round's counts (prefix sums, known before the round
-// is traced), so no per-pixel heap blocks; gather() copies the rounds into the final SampleBuffer once, each
-// pixel's samples in round order (the order the methods add them in).
+// is traced), so no per-pixel heap blocks. The method's last round is traced straight into the final
+// SampleBuffer, each pixel's earlier rounds copied in ahead of it (round order, the order the methods add them
+// in); gather() hands that buffer over.
 #pragma once
 #include <algorithm>
 #include <cmath>
@@ -41,10 +42,12 @@ class Work {
   uint64_t hash(long long p) const { return hash_[p]; }
 
   /// Traces one round: the cells to sample as (pixel, cell) pairs; each pixel's cells in the order listed.
-  void trace(const std::vector<std::pair<long long, Request>>& requests);
+  /// `last`: the method's final round, traced straight into the final buffer after each pixel's earlier
+  /// samples (the gather fused with the round: its samples are written once, not stored and then copied).
+  void trace(const std::vector<std::pair<long long, Request>>& requests, bool last = false);
 
   /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p].
-  void tracePixels(const std::vector<int>& add, const std::vector<double>& share);
+  void tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last = false);
 
   /// The first `first` pixels (all by default) by priority descending, then count ascending, then a hash of
   /// (seed, pixel): a strict order.
@@ -64,8 +67,9 @@ class Work {
   /// Per pixel, per channel, the least and greatest radiance of its samples.
   void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
 
-  /// Every pixel's samples, in round order, as one variable-count buffer (area-weighted).
-  SampleBuffer gather() const;
+  /// Every pixel's samples, in round order, as one variable-count buffer (area-weighted); after a `last`
+  /// round, the buffer it wrote (moved out: call once).
+  SampleBuffer gather();
 
  private:
   /// v as a float inside [i, top] with top = the float below i + 1 (rounding of i + u could give i + 1).
@@ -82,6 +86,8 @@ class Work {
     SampleBuffer::Storage samples;  ///< written in the round's parallel loop before any read
   };
   std::vector<Round> rounds_;
+  SampleBuffer final_;  ///< written by the `last` round; empty before
+  bool finished_ = false;
   std::vector<int> count_;  ///< samples per pixel over all rounds
   std::vector<uint64_t> hash_;
   mutable std::map<int, bool> quality_;  ///< count -> the base sampler has no warning() at it
