@@ -36,6 +36,7 @@ struct Bounds {
   double x0, x1, y0, y1;
   float fx0, fx1, fy0, fy1;
   bool exact;
+  Bounds() = default;
   Bounds(const Work& w, const Cell& c) {
     const double side = std::ldexp(1.0, -c.level);
     x0 = static_cast<double>(c.p % w.width()) + c.cx * side, y0 = static_cast<double>(c.p / w.width()) + c.cy * side;
@@ -45,23 +46,24 @@ struct Bounds {
   }
 };
 
-/// Max over channels of (max - min) of the pixel's samples inside the cell (0 with fewer than 2).
-double spreadIn(const Work& w, const Cell& c) {
-  const Bounds b(w, c);
-  Color lo = Color::Constant(INFINITY), hi = Color::Constant(-INFINITY);
-  int in = 0;
-  const auto add = [&](const FilmSample& s) {
-    if (s.L.allFinite()) lo = lo.min(s.L), hi = hi.max(s.L), ++in;
-  };
-  if (b.exact)
-    w.forSamples(c.p, [&](const FilmSample& s) {
-      if (s.x >= b.fx0 && s.x < b.fx1 && s.y >= b.fy0 && s.y < b.fy1) add(s);
-    });
-  else
-    w.forSamples(c.p, [&](const FilmSample& s) {
-      if (s.x >= b.x0 && s.x < b.x1 && s.y >= b.y0 && s.y < b.y1) add(s);
-    });
-  return in >= 2 ? static_cast<double>((hi - lo).maxCoeff()) : 0.0;
+/// Max over channels of (max - min) of the pixel's samples inside each of the cells c[0 .. n), all of one pixel
+/// (0 with fewer than 2), into diff[0 .. n): one pass over the pixel's samples for the n cells.
+template <int n>
+void spreadIn(const Work& w, const Cell* c, double* diff) {
+  Bounds b[n] = {Bounds(w, c[0])};
+  bool exact = b[0].exact;
+  for (int k = 1; k < n; ++k) b[k] = Bounds(w, c[k]), exact = exact && b[k].exact;
+  Color lo[n], hi[n];
+  int in[n];
+  for (int k = 0; k < n; ++k) lo[k] = Color::Constant(INFINITY), hi[k] = Color::Constant(-INFINITY), in[k] = 0;
+  w.forSamples(c[0].p, [&](const FilmSample& s) {
+    if (!s.L.allFinite()) return;
+    for (int k = 0; k < n; ++k)
+      if (exact ? s.x >= b[k].fx0 && s.x < b[k].fx1 && s.y >= b[k].fy0 && s.y < b[k].fy1
+                : s.x >= b[k].x0 && s.x < b[k].x1 && s.y >= b[k].y0 && s.y < b[k].y1)
+        lo[k] = lo[k].min(s.L), hi[k] = hi[k].max(s.L), ++in[k];
+  });
+  for (int k = 0; k < n; ++k) diff[k] = in[k] >= 2 ? static_cast<double>((hi[k] - lo[k]).maxCoeff()) : 0.0;
 }
 
 /// A split candidate: the sort key and where the cell is in its level.
@@ -85,6 +87,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   const double threshold = a.params().threshold;
   std::vector<Cell> leaves, level, next;
   std::vector<double> diff;
+  std::vector<uint32_t> byPixel, order;
   std::vector<Key> split;
   std::vector<std::pair<long long, Request>> requests;
   leaves.reserve(static_cast<size_t>(w.pixels())), level.reserve(static_cast<size_t>(w.pixels()));
@@ -93,8 +96,20 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   long long free = w.left() - w.pixels();  // beyond the fresh samples every leaf keeps
   for (int d = 0; d <= depth && !level.empty(); ++d) {
     diff.assign(level.size(), 0.0);
-    if (d < depth)
-      for (size_t k = 0; k < level.size(); ++k) diff[k] = spreadIn(w, level[k]);
+    if (d == 0 && d < depth) {
+      for (size_t k = 0; k < level.size(); ++k) spreadIn<1>(w, &level[k], &diff[k]);
+    } else if (d < depth) {
+      // below the pixel the level is made of the 4 children of each split cell, side by side, in the order of
+      // the splits; visited in pixel order (counting sort), the 4 in one pass over the pixel's samples, so a
+      // pixel's samples are read while in cache, not once per cell in the order of the splits
+      const size_t groups = level.size() / 4;
+      byPixel.assign(static_cast<size_t>(w.pixels()) + 1, 0);
+      order.resize(groups);
+      for (size_t g = 0; g < groups; ++g) ++byPixel[static_cast<size_t>(level[4 * g].p) + 1];
+      for (long long p = 0; p < w.pixels(); ++p) byPixel[p + 1] += byPixel[p];
+      for (size_t g = 0; g < groups; ++g) order[byPixel[level[4 * g].p]++] = static_cast<uint32_t>(g);
+      for (uint32_t g : order) spreadIn<4>(w, &level[4 * size_t(g)], &diff[4 * size_t(g)]);
+    }
     if (d == 0) {  // a pixel also splits when a neighbour's samples differ: an edge missed by its own 4 is seen
       const std::vector<double> own(diff);
       const int W = w.width(), H = static_cast<int>(w.pixels() / W);
