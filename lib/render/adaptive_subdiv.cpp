@@ -38,7 +38,7 @@ struct Bounds {
   bool exact;
   Bounds() = default;
   Bounds(const Work& w, const Cell& c) {
-    const double side = std::ldexp(1.0, -c.level);
+    const double side = cellSide(c.level);
     x0 = static_cast<double>(c.p % w.width()) + c.cx * side, y0 = static_cast<double>(c.p / w.width()) + c.cy * side;
     x1 = x0 + side, y1 = y0 + side;
     fx0 = static_cast<float>(x0), fx1 = static_cast<float>(x1), fy0 = static_cast<float>(y0), fy1 = static_cast<float>(y1);

@@ -75,7 +75,7 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
         const Request r = cells[c];
         if (r.n <= 0) continue;
         const int px = (i << r.level) + r.cx, py = (j << r.level) + r.cy;
-        const double side = 1.0 / static_cast<double>(1 << r.level);
+        const double side = cellSide(r.level);  // 1 / 2^level
         const float fside = static_cast<float>(side);  // a power of two: exact
         for (const Sampler* sampler : plan[r.n]) {
           const int n = sampler->spp();
