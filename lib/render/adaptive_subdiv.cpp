@@ -41,7 +41,8 @@ struct Bounds {
     const double side = cellSide(c.level);
     x0 = static_cast<double>(c.p % w.width()) + c.cx * side, y0 = static_cast<double>(c.p / w.width()) + c.cy * side;
     x1 = x0 + side, y1 = y0 + side;
-    fx0 = static_cast<float>(x0), fx1 = static_cast<float>(x1), fy0 = static_cast<float>(y0), fy1 = static_cast<float>(y1);
+    fx0 = static_cast<float>(x0), fx1 = static_cast<float>(x1);
+    fy0 = static_cast<float>(y0), fy1 = static_cast<float>(y1);
     exact = fx0 == x0 && fx1 == x1 && fy0 == y0 && fy1 == y1;
   }
 };
