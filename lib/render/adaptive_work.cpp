@@ -1,6 +1,7 @@
 // The adaptive methods' shared state (adaptive_work.h): the samples of each round traced in parallel, the
 // budget spent, and the orders and summaries the methods ask of it.
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -38,6 +39,7 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   // independent), as a plan indexed by n that the workers only read.
   std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
   std::vector<std::vector<const Sampler*>> plan;
+  int most = 0;  // the largest part: the workers' point arrays are that long
   for (const Request& r : cells) {
     if (r.n <= 0) continue;
     if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
@@ -48,6 +50,7 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
       auto& s = samplers[key];
       if (!s) s = a_.baseSampler(part, key.second == 0 ? round_ : hashWords(round_, 0x70617274ULL, key.second));
       plan[r.n].push_back(s.get());
+      most = std::max(most, s->spp());
     }
   }
   for (long long p = 0; p < N_; ++p) count_[p] += static_cast<int>(round.start[p + 1] - round.start[p]);
@@ -55,9 +58,10 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   // earlier samples, which are copied there first.
   if (last) final_ = SampleBuffer(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample written below
   else round.samples = SampleBuffer::Storage(static_cast<size_t>(total));
+  const bool inFloat = W_ < (1 << 24) && H_ < (1 << 24);  // every pixel index a float
   parallelFor(H_, threads_, [&](int j) {
-    std::vector<Vec2> u;
-    const float topY = std::nextafter(static_cast<float>(j + 1), 0.f);
+    std::vector<Vec2> u(static_cast<size_t>(most));
+    const float fj = static_cast<float>(j), topY = std::nextafter(static_cast<float>(j + 1), 0.f);
     for (int i = 0; i < W_; ++i) {
       const size_t p = static_cast<size_t>(j) * W_ + i;
       FilmSample* out = round.samples.data() + round.start[p];
@@ -66,17 +70,28 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
         for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
       }
       if (first[p] == first[p + 1]) continue;
-      const float topX = std::nextafter(static_cast<float>(i + 1), 0.f);
+      const float fi = static_cast<float>(i), topX = std::nextafter(static_cast<float>(i + 1), 0.f);
       for (size_t c = first[p]; c < first[p + 1]; ++c) {
-        const Request& r = cells[c];
+        const Request r = cells[c];
         if (r.n <= 0) continue;
-        const double side = 1.0 / static_cast<double>(1 << r.level);
+        const int px = (i << r.level) + r.cx, py = (j << r.level) + r.cy;
+        const double side = cellSide(r.level);  // 1 / 2^level
+        const float fside = static_cast<float>(side);  // a power of two: exact
         for (const Sampler* sampler : plan[r.n]) {
-          u.resize(sampler->spp());
-          sampler->generate((i << r.level) + r.cx, (j << r.level) + r.cy, u.data());
-          for (const Vec2& q : u) {
+          const int n = sampler->spp();
+          sampler->generate(px, py, u.data());
+          for (int k = 0; k < n; ++k) {
+            const Vec2 q = u[k];
             FilmSample s;
-            s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
+            // The position i + (cx + q) * side, the sum in double rounded to float (inside), is computed in
+            // float with the same bits: cx + q is a float either way; times a power of two it stays exact
+            // unless the product is subnormal; and a sum of two floats (i is one below 2^24) rounded to double
+            // and then to float is rounded once (53 >= 2 * 24 + 2 bits). Else in double, as written.
+            const float tx = (r.cx + q.x()) * fside, ty = (r.cy + q.y()) * fside;
+            if (inFloat && (tx == 0 || tx >= FLT_MIN) && (ty == 0 || ty >= FLT_MIN))
+              s.x = std::clamp(fi + tx, fi, topX), s.y = std::clamp(fj + ty, fj, topY);
+            else
+              s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
             s.weight = r.weight;
             s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
             *out++ = s;
@@ -139,17 +154,25 @@ std::vector<int> Work::parts(int n) const {
 }
 
 std::vector<long long> Work::rank(const std::vector<double>& priority, long long first) const {
-  std::vector<long long> order(N_);
-  for (long long p = 0; p < N_; ++p) order[p] = p;
-  const auto before = [&](long long a, long long b) {
-    if (priority[a] != priority[b]) return priority[a] > priority[b];
-    if (count(a) != count(b)) return count(a) < count(b);
-    return hash_[a] != hash_[b] ? hash_[a] < hash_[b] : a < b;
+  // the order's key of every pixel side by side (the comparisons read one array, not three at random)
+  struct Key {
+    double priority;
+    int count;
+    uint64_t hash;
+    long long p;
+    bool operator<(const Key& o) const {  // "before"
+      if (priority != o.priority) return priority > o.priority;
+      if (count != o.count) return count < o.count;
+      return hash != o.hash ? hash < o.hash : p < o.p;
+    }
   };
+  std::vector<Key> keys(static_cast<size_t>(N_));
+  for (long long p = 0; p < N_; ++p) keys[p] = {priority[p], count_[p], hash_[p], p};
   const long long k = std::clamp(first, 0LL, N_);
-  if (k < N_) std::nth_element(order.begin(), order.begin() + k, order.end(), before);  // the first k, unsorted
-  std::sort(order.begin(), order.begin() + k, before);
-  order.resize(k);
+  if (k < N_) std::nth_element(keys.begin(), keys.begin() + k, keys.end());  // the first k, unsorted
+  std::sort(keys.begin(), keys.begin() + k);
+  std::vector<long long> order(static_cast<size_t>(k));
+  for (long long q = 0; q < k; ++q) order[q] = keys[q].p;
   return order;
 }
 

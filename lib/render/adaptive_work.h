@@ -7,6 +7,7 @@
 // in); gather() hands that buffer over.
 #pragma once
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -23,6 +24,9 @@ struct Request {
   int level = 0, cx = 0, cy = 0, n = 0;
   float weight = 1.f;
 };
+
+/// 2^-level (level 0 .. 1022), exactly, without a division or a libm call.
+inline double cellSide(int level) { return std::bit_cast<double>(static_cast<uint64_t>(1023 - level) << 52); }
 
 /// The state shared by the methods: every pixel's samples so far and the budget.
 class Work {

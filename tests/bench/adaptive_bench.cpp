@@ -5,13 +5,17 @@
 // set (its positions, computed before the timing) in pixel order, writing a buffer: the cost of those rays
 // without the method's bookkeeping, since adaptive rays are not average rays (they crowd where the geometry is:
 // on fence they are about 2x dearer than the base sampler's). For same-run ratios run with
-// --benchmark_repetitions=N --benchmark_enable_random_interleaving=true (the machine is shared).
+// --benchmark_repetitions=N --benchmark_enable_random_interleaving=true (the machine is shared). The process keeps
+// freed medium blocks in its heap (keepMediumBlocks(), core/huge_pages.h) as the sweep does (study/sweep.cpp):
+// otherwise glibc returns the rounds' buffers (0.1 to 2 MB) to the kernel after every trace and the next one
+// faults them in again, a cost (5 to 10 % of an adaptive trace in perf) that the study does not pay.
 #include "aliaslab_paths.h"
 #include <benchmark/benchmark.h>
 
 #include <map>
 
 #include "accel/aggregate.h"
+#include "core/huge_pages.h"
 #include "render/adaptive.h"
 #include "render/render.h"
 #include "scene/scene.h"
@@ -67,6 +71,7 @@ void retrace(benchmark::State& state, std::string file, std::string name) {
 }
 
 const int registered = [] {
+  keepMediumBlocks();
   for (const char* file : {"fence.txt", "checker_horizon.txt", "controls/edge.txt"}) {
     const std::string stem = std::string(file).substr(0, std::string(file).find('.'));
     benchmark::RegisterBenchmark(("Trace/jittered/" + stem).c_str(), base, std::string(file))
