@@ -35,7 +35,8 @@ class Bvh final : public Aggregate {
 
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
     int best = -1;  // flattened index of the current closest primitive
-    for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best);
+    int none = -1;
+    for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best, none);
     if (!nodes8_.empty()) closestHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, hit, best);
     else if (!nodes_.empty()) closestHit4(ray, tmin, hit, best);
     if (best < 0) return false;
@@ -72,6 +73,7 @@ class Bvh final : public Aggregate {
  private:
   void closestHit4(const Ray& ray, float tmin, Hit& hit, int& best) const {
     const PreparedRay r(ray);
+    int tri = -1;
     int stack[kStack];
     float near[kStack];
     int top = 0;
@@ -93,9 +95,10 @@ class Bvh final : public Aggregate {
       for (int m = 0; m < k; ++m) {
         const int c = idx[m];
         if (n.count[c] == 0) stack[top] = n.child[c], near[top++] = tn[c];
-        else leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best);
+        else leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
       }
     }
+    finishClosest(items_.data(), tri, hit);
   }
 
   bool anyHit4(const Ray& ray, float tmin, float tmax) const {
