@@ -44,11 +44,13 @@ struct alignas(32) Node8 {
 };
 
 /// A leaf made only of triangles, vertices stored axis by axis so that one SSE
-/// instruction runs a step of the watertight test for all of them. Lanes >= n
-/// are unused; item[l] is lane l's entry in items_ (material, prim, edges).
-struct alignas(16) TriPack {
+/// instruction runs a step of the watertight test (and of Moller-Trumbore's t) for all of them. Lanes >= n
+/// repeat the last triangle and are masked off; item[l] is lane l's entry in items_ (material, edges),
+/// prim[l] its flattened index. Three cache lines.
+struct alignas(64) TriPack {
   float a[3][4], b[3][4], c[3][4];
   int32_t item[4];
+  int32_t prim[4];
   int32_t n;
 };
 constexpr uint32_t kPacked = 0x80000000u;  ///< in Node4::count: child is a TriPack index, low bits the count

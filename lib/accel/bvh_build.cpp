@@ -13,7 +13,10 @@
 namespace aliaslab::bvhimpl {
 namespace {
 
-constexpr int kBins = 16, kMaxLeaf = 4;
+constexpr int kBins = 32, kMaxLeaf = 4;
+
+/// Leaf tests a set of n primitives costs: one per pack of (up to) four, tested at once.
+float blocks(int n) { return static_cast<float>((n + kMaxLeaf - 1) / kMaxLeaf); }
 
 float area(const BBox& b) {
   if (b.empty()) return 0.f;
@@ -89,7 +92,7 @@ class Builder {
     for (int i = start; i < end; ++i) box.extend(boxes[order[i]]), cbox.extend(centroids[order[i]]);
     bin[node].box = box, bin[node].start = start, bin[node].count = end - start;
     const int n = end - start;
-    if (n <= 1) return;
+    if (n <= kMaxLeaf) return;  // a leaf: its (up to) four triangles are tested at once
     int bestAxis = -1, bestSplit = 0;
     float bestCost = kInf;
     for (int a = 0; a < 3; ++a) {
@@ -111,18 +114,14 @@ class Builder {
       for (int b = 0; b < kBins - 1; ++b) {
         acc.extend(bb[b]), c += cnt[b];
         if (c == 0 || rightCount[b + 1] == 0) continue;
-        const float cost = area(acc) * c + rightArea[b + 1] * rightCount[b + 1];
+        const float cost = area(acc) * blocks(c) + rightArea[b + 1] * blocks(rightCount[b + 1]);
         if (cost < bestCost) bestCost = cost, bestAxis = a, bestSplit = b;
       }
     }
-    // Leaf when small and splitting does not pay (intersection cost ~ 1 box test per 1 primitive)
-    const float leafCost = area(box) * n;
     int mid;
-    if (bestAxis < 0) {  // all centroids equal: split by count if too many
-      if (n <= kMaxLeaf) return;
+    if (bestAxis < 0) {  // all centroids equal: split by count
       mid = start + n / 2;
     } else {
-      if (n <= kMaxLeaf && bestCost + area(box) >= leafCost) return;
       const float lo = cbox.min[bestAxis], scale = kBins / (cbox.max[bestAxis] - lo);
       const auto it = std::partition(order.begin() + start, order.begin() + end, [&](int i) {
         return std::min(kBins - 1, static_cast<int>((centroids[i][bestAxis] - lo) * scale)) <= bestSplit;
@@ -174,7 +173,7 @@ class Builder {
           p.n = k.count;
           for (int e = 0; e < 4; ++e) {
             const Item& it = items_[k.start + std::min(e, k.count - 1)];  // unused lanes repeat the last
-            p.item[e] = k.start + std::min(e, k.count - 1);
+            p.item[e] = k.start + std::min(e, k.count - 1), p.prim[e] = it.prim;
             for (int a = 0; a < 3; ++a) p.a[a][e] = it.a[a], p.b[a][e] = it.b[a], p.c[a][e] = it.c[a];
           }
           n.child[c] = static_cast<int32_t>(packs_.size()), n.count[c] = kPacked | static_cast<uint32_t>(k.count);

@@ -14,9 +14,10 @@
 // accept; they differ only for rays within rounding of an edge.
 // Leaves made only of triangles (all but a few) are stored as a TriPack, so
 // the watertight test runs on up to four triangles per SSE instruction; the
-// accepted ones are then taken in item order, as the one-by-one loop would.
+// accepted ones' Moller-Trumbore t is computed for the four at once too (same operations per lane).
 // Closest hit: t in (tmin, hit.t), ties in t to the lower flattened index
-// (as brute force's list order gives), whatever order nodes are visited in.
+// (as brute force's list order gives), whatever order nodes are visited in; the winner's normal and
+// material are filled in once, at the end.
 #pragma once
 #include <xmmintrin.h>
 
@@ -34,10 +35,10 @@ namespace {
 /// A ray prepared for both box and watertight triangle tests.
 struct PreparedRay {
   const Ray* ray;
-  __m128 o[3], inv[3];
+  __m128 o[3], inv[3], dir[3];  ///< origin, clamped reciprocal and raw direction, broadcast
   bool negative[3];  ///< direction component < 0: the slab is entered through hi
   int kx, ky, kz;
-  float sx, sy, sz;
+  float sx, sy;
   __m128 okx, oky, okz, vsx, vsy;  ///< origin along kx, ky, kz and the shears, broadcast (pack test)
   explicit PreparedRay(const Ray& r) : ray(&r) {
     const Vec3& d = r.direction;
@@ -46,13 +47,14 @@ struct PreparedRay {
       if (std::abs(da) < 1e-30f) da = std::signbit(da) ? -1e-30f : 1e-30f;
       o[a] = _mm_set1_ps(r.origin[a]);
       inv[a] = _mm_set1_ps(1.f / da);
+      dir[a] = _mm_set1_ps(r.direction[a]);
       negative[a] = da < 0.f;
     }
     const Vec3 ad = d.cwiseAbs();
     kz = ad.x() > ad.y() ? (ad.x() > ad.z() ? 0 : 2) : (ad.y() > ad.z() ? 1 : 2);
     kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     if (d[kz] < 0.f) std::swap(kx, ky);  // keep the winding
-    sx = d[kx] / d[kz], sy = d[ky] / d[kz], sz = 1.f / d[kz];
+    sx = d[kx] / d[kz], sy = d[ky] / d[kz];
     okx = _mm_set1_ps(r.origin[kx]), oky = _mm_set1_ps(r.origin[ky]), okz = _mm_set1_ps(r.origin[kz]);
     vsx = _mm_set1_ps(sx), vsy = _mm_set1_ps(sy);
   }
@@ -119,40 +121,83 @@ struct PreparedRay {
   return true;
 }
 
-/// A primitive with its own intersect(): a tie in t goes to the lower index.
-[[gnu::always_inline]] inline void testObject(const Object& obj, int prim, const Ray& ray, float tmin, Hit& hit,
-                                              int& best) {
-  Hit h = hit;
-  if (best >= 0 && prim < best) h.t = std::nextafter(hit.t, kInf);
-  if (obj.intersect(ray, tmin, h)) hit = h, best = prim;
+/// mollerTrumboreT() for the four lanes of a pack at once: the same float operations in the same order per
+/// lane (Eigen's cross products; its 3-term dot products sum as x + (y + z)), so t has the same bits; the
+/// edges b - a and c - a are recomputed from the vertices exactly as the build computed them. Returns the
+/// lanes where det != 0 (the others' t is meaningless).
+[[gnu::always_inline]] inline int packT(const PreparedRay& r, const TriPack& p, __m128& t) {
+  __m128 e1[3], e2[3], s[3];
+  for (int k = 0; k < 3; ++k) {
+    const __m128 a = _mm_load_ps(p.a[k]);
+    e1[k] = _mm_sub_ps(_mm_load_ps(p.b[k]), a), e2[k] = _mm_sub_ps(_mm_load_ps(p.c[k]), a);
+    s[k] = _mm_sub_ps(r.o[k], a);
+  }
+  auto cross = [](const __m128* x, const __m128* y, __m128* out) {
+    out[0] = _mm_sub_ps(_mm_mul_ps(x[1], y[2]), _mm_mul_ps(x[2], y[1]));
+    out[1] = _mm_sub_ps(_mm_mul_ps(x[2], y[0]), _mm_mul_ps(x[0], y[2]));
+    out[2] = _mm_sub_ps(_mm_mul_ps(x[0], y[1]), _mm_mul_ps(x[1], y[0]));
+  };
+  auto dot = [](const __m128* x, const __m128* y) {
+    return _mm_add_ps(_mm_mul_ps(x[0], y[0]), _mm_add_ps(_mm_mul_ps(x[1], y[1]), _mm_mul_ps(x[2], y[2])));
+  };
+  __m128 pv[3], q[3];
+  cross(r.dir, e2, pv);
+  const __m128 det = dot(e1, pv);
+  cross(s, e1, q);
+  t = _mm_mul_ps(dot(e2, q), _mm_div_ps(_mm_set1_ps(1.f), det));
+  return _mm_movemask_ps(_mm_cmpneq_ps(det, _mm_setzero_ps()));
 }
 
-/// A triangle the watertight test accepted: its Moller-Trumbore t, ties in t to the lower index.
-[[gnu::always_inline]] inline void acceptTriangle(const Item& it, const Ray& ray, float tmin, Hit& hit, int& best) {
-  float t;
-  if (!mollerTrumboreT(ray, it, t)) return;
+/// The closest hit so far: hit.t and best (flattened index, -1: none), and tri, its item when it is a triangle
+/// (-1: none or another primitive, whose intersect() filled hit's normal and material). A triangle's normal
+/// and material are filled in once, at the end, by finishClosest().
+[[gnu::always_inline]] inline void finishClosest(const Item* items, int tri, Hit& hit) {
+  if (tri < 0) return;
+  hit.normal = triangleNormal(items[tri].e1, items[tri].e2);
+  hit.material = items[tri].material;
+}
+
+/// A primitive with its own intersect(): a tie in t goes to the lower index.
+[[gnu::always_inline]] inline void testObject(const Object& obj, int prim, const Ray& ray, float tmin, Hit& hit,
+                                              int& best, int& tri) {
+  Hit h = hit;
+  if (best >= 0 && prim < best) h.t = std::nextafter(hit.t, kInf);
+  if (obj.intersect(ray, tmin, h)) hit = h, best = prim, tri = -1;
+}
+
+/// A triangle with t computed (det != 0): taken when tmin < t and (t, prim) is below (hit.t, best), i.e. ties
+/// in t to the lower index, so the result does not depend on the order triangles are tested in.
+[[gnu::always_inline]] inline void acceptT(float t, int prim, int item, float tmin, Hit& hit, int& best,
+                                           int& tri) {
   if (!(t > tmin)) return;
-  if (!(t < hit.t || (t == hit.t && best >= 0 && it.prim < best))) return;
-  hit.t = t;
-  hit.normal = triangleNormal(it.e1, it.e2);
-  hit.material = it.material;
-  best = it.prim;
+  if (!(t < hit.t || (t == hit.t && best >= 0 && prim < best))) return;
+  hit.t = t, best = prim, tri = item;
 }
 
 /// Closest hit within a leaf: child and count as a node stores them (count | kPacked: a TriPack).
 [[gnu::always_inline]] inline void leafClosest(int32_t child, uint32_t count, const PreparedRay& r,
                                                const Item* items, const TriPack* packs, float tmin, Hit& hit,
-                                               int& best) {
+                                               int& best, int& tri) {
   if (count & kPacked) {
     const TriPack& p = packs[child];
-    for (int mask = watertightHits(r, p, items); mask; mask &= mask - 1)  // lanes in item order
-      acceptTriangle(items[p.item[__builtin_ctz(mask)]], *r.ray, tmin, hit, best);
+    int mask = watertightHits(r, p, items);
+    if (!mask) return;
+    __m128 tv;
+    mask &= packT(r, p, tv);
+    alignas(16) float t[4];
+    _mm_store_ps(t, tv);
+    for (; mask; mask &= mask - 1) {
+      const int l = __builtin_ctz(mask);
+      acceptT(t[l], p.prim[l], p.item[l], tmin, hit, best, tri);
+    }
     return;
   }
   for (uint32_t e = 0; e < count; ++e) {
     const Item& it = items[child + e];
-    if (it.obj) testObject(*it.obj, it.prim, *r.ray, tmin, hit, best);
-    else if (watertightHit(r, it)) acceptTriangle(it, *r.ray, tmin, hit, best);
+    float t;
+    if (it.obj) testObject(*it.obj, it.prim, *r.ray, tmin, hit, best, tri);
+    else if (watertightHit(r, it) && mollerTrumboreT(*r.ray, it, t))
+      acceptT(t, it.prim, static_cast<int>(child + e), tmin, hit, best, tri);
   }
 }
 
@@ -162,11 +207,12 @@ struct PreparedRay {
   const Ray& ray = *r.ray;
   if (count & kPacked) {
     const TriPack& p = packs[child];
-    for (int mask = watertightHits(r, p, items); mask; mask &= mask - 1) {
-      float t;
-      if (mollerTrumboreT(ray, items[p.item[__builtin_ctz(mask)]], t) && t > tmin && t < tmax) return true;
-    }
-    return false;
+    int mask = watertightHits(r, p, items);
+    if (!mask) return false;
+    __m128 t;
+    mask &= packT(r, p, t);
+    const __m128 inside = _mm_and_ps(_mm_cmpgt_ps(t, _mm_set1_ps(tmin)), _mm_cmplt_ps(t, _mm_set1_ps(tmax)));
+    return (mask & _mm_movemask_ps(inside)) != 0;
   }
   for (uint32_t e = 0; e < count; ++e) {
     const Item& it = items[child + e];

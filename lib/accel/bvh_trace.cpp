@@ -8,6 +8,7 @@
 // depth first, out at the first hit.
 #include <xmmintrin.h>
 
+#include <cstddef>
 #include <stdexcept>
 
 #include "accel/bvh_leaf.h"
@@ -18,6 +19,19 @@ namespace {
 using namespace bvhimpl;
 
 constexpr int kStack = 128;
+
+/// The byte offsets in a Node4 of the planes a ray enters and leaves each slab through (lo, or hi for a negative
+/// direction), chosen once per ray.
+struct Planes4 {
+  int enter[3], exit[3];
+  explicit Planes4(const PreparedRay& r) {
+    for (int a = 0; a < 3; ++a) {
+      const int lo = static_cast<int>(offsetof(Node4, lo) + a * sizeof(Node4::lo[0]));
+      const int hi = static_cast<int>(offsetof(Node4, hi) + a * sizeof(Node4::hi[0]));
+      enter[a] = r.negative[a] ? hi : lo, exit[a] = r.negative[a] ? lo : hi;
+    }
+  }
+};
 
 bool cpuHasAvx2() {
   static const bool avx2 = __builtin_cpu_supports("avx2");
@@ -35,7 +49,8 @@ class Bvh final : public Aggregate {
 
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
     int best = -1;  // flattened index of the current closest primitive
-    for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best);
+    int none = -1;
+    for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best, none);
     if (!nodes8_.empty()) closestHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, hit, best);
     else if (!nodes_.empty()) closestHit4(ray, tmin, hit, best);
     if (best < 0) return false;
@@ -72,17 +87,17 @@ class Bvh final : public Aggregate {
  private:
   void closestHit4(const Ray& ray, float tmin, Hit& hit, int& best) const {
     const PreparedRay r(ray);
+    const Planes4 planes(r);
+    int tri = -1;
     int stack[kStack];
     float near[kStack];
-    int top = 0;
-    stack[top] = 0, near[top++] = -kInf;
-    while (top > 0) {
-      --top;
-      if (near[top] > hit.t) continue;
-      const Node4& n = nodes_[stack[top]];
+    int top = 0, cur = 0;  // cur: the node being visited
+    while (true) {
+      const Node4& n = nodes_[cur];
       float tn[4];
-      const int mask = boxes(n, r, tmin, hit.t, tn);
-      // Ordered: push hit children far to near, so the nearest is visited first
+      const int mask = boxes(n, r, planes, tmin, hit.t, tn);
+      // Ordered: hit inner children pushed far to near, the nearest visited next without a push (as if pushed and
+      // popped at once); the leaves among them opened at once
       int idx[4], k = 0;
       for (int c = 0; c < 4; ++c)
         if ((mask & (1 << c)) && n.child[c] >= 0) {
@@ -90,23 +105,41 @@ class Bvh final : public Aggregate {
           while (j > 0 && tn[idx[j - 1]] < tn[c]) idx[j] = idx[j - 1], --j;
           idx[j] = c;
         }
+      int next = -1;
       for (int m = 0; m < k; ++m) {
         const int c = idx[m];
-        if (n.count[c] == 0) stack[top] = n.child[c], near[top++] = tn[c];
-        else leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best);
+        if (n.count[c] != 0) {
+          leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
+          continue;
+        }
+        if (next >= 0) stack[top] = n.child[next], near[top++] = tn[next];
+        next = c;
       }
+      if (next >= 0 && !(tn[next] > hit.t)) {
+        cur = n.child[next];
+        continue;
+      }
+      do {  // pop the nearest node still in front of the closest hit
+        if (top == 0) {
+          finishClosest(items_.data(), tri, hit);
+          return;
+        }
+        --top;
+      } while (near[top] > hit.t);
+      cur = stack[top];
     }
   }
 
   bool anyHit4(const Ray& ray, float tmin, float tmax) const {
     const PreparedRay r(ray);
+    const Planes4 planes(r);
     int stack[kStack];
     int top = 0;
     stack[top++] = 0;
     while (top > 0) {
       const Node4& n = nodes_[stack[--top]];
       float tn[4];
-      const int mask = boxes(n, r, tmin, tmax, tn);
+      const int mask = boxes(n, r, planes, tmin, tmax, tn);
       for (int c = 0; c < 4; ++c) {
         if (!(mask & (1 << c)) || n.child[c] < 0) continue;
         if (n.count[c] == 0) stack[top++] = n.child[c];
@@ -118,14 +151,16 @@ class Bvh final : public Aggregate {
 
   /// Slab test of the four child boxes against (tmin, tmax); bit c of the
   /// result is set when child c is hit, tn[c] its entry distance.
-  static int boxes(const Node4& n, const PreparedRay& r, float tmin, float tmax, float* tn) {
+  static int boxes(const Node4& n, const PreparedRay& r, const Planes4& p, float tmin, float tmax, float* tn) {
+    const char* base = reinterpret_cast<const char*>(&n);
+    auto plane = [&](int offset) { return _mm_load_ps(reinterpret_cast<const float*>(base + offset)); };
     __m128 lo = _mm_set1_ps(tmin), hi = _mm_set1_ps(tmax);
-    for (int a = 0; a < 3; ++a) {  // entry through lo, exit through hi (swapped for a negative direction)
-      const float* enter = r.negative[a] ? n.hi[a] : n.lo[a];
-      const float* exit = r.negative[a] ? n.lo[a] : n.hi[a];
-      lo = _mm_max_ps(lo, _mm_mul_ps(_mm_sub_ps(_mm_load_ps(enter), r.o[a]), r.inv[a]));
-      hi = _mm_min_ps(hi, _mm_mul_ps(_mm_sub_ps(_mm_load_ps(exit), r.o[a]), r.inv[a]));
-    }
+    lo = _mm_max_ps(lo, _mm_mul_ps(_mm_sub_ps(plane(p.enter[0]), r.o[0]), r.inv[0]));
+    hi = _mm_min_ps(hi, _mm_mul_ps(_mm_sub_ps(plane(p.exit[0]), r.o[0]), r.inv[0]));
+    lo = _mm_max_ps(lo, _mm_mul_ps(_mm_sub_ps(plane(p.enter[1]), r.o[1]), r.inv[1]));
+    hi = _mm_min_ps(hi, _mm_mul_ps(_mm_sub_ps(plane(p.exit[1]), r.o[1]), r.inv[1]));
+    lo = _mm_max_ps(lo, _mm_mul_ps(_mm_sub_ps(plane(p.enter[2]), r.o[2]), r.inv[2]));
+    hi = _mm_min_ps(hi, _mm_mul_ps(_mm_sub_ps(plane(p.exit[2]), r.o[2]), r.inv[2]));
     _mm_storeu_ps(tn, lo);
     return _mm_movemask_ps(_mm_cmple_ps(lo, hi));
   }
