@@ -123,18 +123,8 @@ void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& s
 }
 
 SampleBuffer Work::gather() {
-  if (finished_) return std::move(final_);
-  SampleBuffer out(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample copied below
-  parallelFor(H_, threads_, [&](int j) {
-    for (int i = 0; i < W_; ++i) {
-      const size_t p = static_cast<size_t>(j) * W_ + i;
-      FilmSample* to = out.pixel(i, j);
-      for (const Round& r : rounds_)
-        to = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], to);
-    }
-  });
-  out.setAreaWeighted(true);
-  return out;
+  if (!finished_) throw std::logic_error("adaptive Work: gather() before the method's last round");
+  return std::move(final_);
 }
 
 bool Work::fullQuality(int n) const {

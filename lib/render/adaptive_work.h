@@ -71,8 +71,8 @@ class Work {
   /// Per pixel, per channel, the least and greatest radiance of its samples.
   void pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const;
 
-  /// Every pixel's samples, in round order, as one variable-count buffer (area-weighted); after a `last`
-  /// round, the buffer it wrote (moved out: call once).
+  /// Every pixel's samples, in round order, as one variable-count buffer (area-weighted): the buffer the
+  /// `last` round wrote (every method ends with one), moved out, so call once.
   SampleBuffer gather();
 
  private:

@@ -55,8 +55,6 @@ const std::string& csvHeader(bool motion) {
   return motion ? moving : still;
 }
 
-size_t csvColumnCount(bool motion) { return csvColumns().size() + (motion ? csvMotionColumns().size() : 0); }
-
 bool isStudyRow(const std::vector<std::string>& f) {
   return f.size() == csvColumnCount(false) || f.size() == csvColumnCount(true);
 }

@@ -112,7 +112,9 @@ const std::vector<std::string>& csvMotionColumns();
 /// Whether `fields` is a study row: the still columns, or the still and the motion columns.
 bool isStudyRow(const std::vector<std::string>& fields);
 /// The number of fields in a row: the still columns, plus the motion columns in a study with frames.
-size_t csvColumnCount(bool motion);
+inline size_t csvColumnCount(bool motion) {
+  return csvColumns().size() + (motion ? csvMotionColumns().size() : 0);
+}
 /// Index of the column `name` in csvColumns(); throws std::out_of_range when there is none.
 size_t csvColumn(const std::string& name);
 /// Indices of the timing columns (trace_ms, reconstruct_ms, cpu_ms, cpu_ms_se), which may differ between runs.
