@@ -70,6 +70,9 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
         for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
       }
       if (first[p] == first[p + 1]) continue;
+      // Two passes: the pixel's positions and weights, then its rays in one tight loop (the position
+      // arithmetic's values are not spilled and reloaded around every radianceAt call).
+      FilmSample* const begin = out;
       const float fi = static_cast<float>(i), topX = std::nextafter(static_cast<float>(i + 1), 0.f);
       for (size_t c = first[p]; c < first[p + 1]; ++c) {
         const Request r = cells[c];
@@ -80,24 +83,22 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
         for (const Sampler* sampler : plan[r.n]) {
           const int n = sampler->spp();
           sampler->generate(px, py, u.data());
-          for (int k = 0; k < n; ++k) {
+          for (int k = 0; k < n; ++k, ++out) {
             const Vec2 q = u[k];
-            FilmSample s;
             // The position i + (cx + q) * side, the sum in double rounded to float (inside), is computed in
             // float with the same bits: cx + q is a float either way; times a power of two it stays exact
             // unless the product is subnormal; and a sum of two floats (i is one below 2^24) rounded to double
             // and then to float is rounded once (53 >= 2 * 24 + 2 bits). Else in double, as written.
             const float tx = (r.cx + q.x()) * fside, ty = (r.cy + q.y()) * fside;
             if (inFloat && (tx == 0 || tx >= FLT_MIN) && (ty == 0 || ty >= FLT_MIN))
-              s.x = std::clamp(fi + tx, fi, topX), s.y = std::clamp(fj + ty, fj, topY);
+              out->x = std::clamp(fi + tx, fi, topX), out->y = std::clamp(fj + ty, fj, topY);
             else
-              s.x = inside(i + (r.cx + q.x()) * side, i, topX), s.y = inside(j + (r.cy + q.y()) * side, j, topY);
-            s.weight = r.weight;
-            s.L = tracer_.radianceAt(s.x, s.y, W_, H_);
-            *out++ = s;
+              out->x = inside(i + (r.cx + q.x()) * side, i, topX), out->y = inside(j + (r.cy + q.y()) * side, j, topY);
+            out->weight = r.weight;
           }
         }
       }
+      for (FilmSample* s = begin; s != out; ++s) s->L = tracer_.radianceAt(s->x, s->y, W_, H_);
     }
   });
   if (last) {
