@@ -1,6 +1,7 @@
 // The adaptive methods' shared state (adaptive_work.h): the samples of each round traced in parallel, the
 // budget spent, and the orders and summaries the methods ask of it.
 #include <algorithm>
+#include <bit>
 #include <cfloat>
 #include <cmath>
 #include <map>
@@ -12,6 +13,13 @@
 #include "render/adaptive_work.h"
 
 namespace aliaslab::adaptiveimpl {
+
+namespace {
+constexpr int kTile = 16;  ///< a round's tiles, kTile x kTile pixels
+
+/// The float below v (v >= 1): std::nextafter(float(v), 0) without the libm call.
+float below(int v) { return std::bit_cast<float>(std::bit_cast<uint32_t>(static_cast<float>(v)) - 1); }
+}  // namespace
 
 Work::Work(const Tracer& tracer, const AdaptiveSampler& a, int width, int height, int threads, const Progress& progress)
     : tracer_(tracer), a_(a), W_(width), H_(height), threads_(threads), progress_(progress),
@@ -59,47 +67,53 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   if (last) final_ = SampleBuffer(W_, H_, count_, SampleBuffer::Unwritten{});  // every sample written below
   else round.samples = SampleBuffer::Storage(static_cast<size_t>(total));
   const bool inFloat = W_ < (1 << 24) && H_ < (1 << 24);  // every pixel index a float
-  parallelFor(H_, threads_, [&](int j) {
-    std::vector<Vec2> u(static_cast<size_t>(most));
-    const float fj = static_cast<float>(j), topY = std::nextafter(static_cast<float>(j + 1), 0.f);
-    for (int i = 0; i < W_; ++i) {
-      const size_t p = static_cast<size_t>(j) * W_ + i;
-      FilmSample* out = round.samples.data() + round.start[p];
-      if (last) {
-        out = final_.pixel(i, j);
-        for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
-      }
-      if (first[p] == first[p + 1]) continue;
-      // Two passes: the pixel's positions and weights, then its rays in one tight loop (the position
-      // arithmetic's values are not spilled and reloaded around every radianceAt call).
-      FilmSample* const begin = out;
-      const float fi = static_cast<float>(i), topX = std::nextafter(static_cast<float>(i + 1), 0.f);
-      for (size_t c = first[p]; c < first[p + 1]; ++c) {
-        const Request r = cells[c];
-        if (r.n <= 0) continue;
-        const int px = (i << r.level) + r.cx, py = (j << r.level) + r.cy;
-        const double side = cellSide(r.level);  // 1 / 2^level
-        const float fside = static_cast<float>(side);  // a power of two: exact
-        for (const Sampler* sampler : plan[r.n]) {
-          const int n = sampler->spp();
-          sampler->generate(px, py, u.data());
-          for (int k = 0; k < n; ++k, ++out) {
-            const Vec2 q = u[k];
-            // The position i + (cx + q) * side, the sum in double rounded to float (inside), is computed in
-            // float with the same bits: cx + q is a float either way; times a power of two it stays exact
-            // unless the product is subnormal; and a sum of two floats (i is one below 2^24) rounded to double
-            // and then to float is rounded once (53 >= 2 * 24 + 2 bits). Else in double, as written.
-            const float tx = (r.cx + q.x()) * fside, ty = (r.cy + q.y()) * fside;
-            if (inFloat && (tx == 0 || tx >= FLT_MIN) && (ty == 0 || ty >= FLT_MIN))
-              out->x = std::clamp(fi + tx, fi, topX), out->y = std::clamp(fj + ty, fj, topY);
-            else
-              out->x = inside(i + (r.cx + q.x()) * side, i, topX), out->y = inside(j + (r.cy + q.y()) * side, j, topY);
-            out->weight = r.weight;
-          }
+  // One pixel's cells of the round, into its place (u: the worker's point array).
+  const auto tracePixel = [&](int i, int j, Vec2* u) {
+    const size_t p = static_cast<size_t>(j) * W_ + i;
+    FilmSample* out = round.samples.data() + round.start[p];
+    if (last) {
+      out = final_.pixel(i, j);
+      for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
+    }
+    if (first[p] == first[p + 1]) return;
+    // Two passes: the pixel's positions and weights, then its rays in one tight loop (the position arithmetic's
+    // values are not spilled and reloaded around every radianceAt call).
+    FilmSample* const begin = out;
+    const float fi = static_cast<float>(i), topX = below(i + 1), fj = static_cast<float>(j), topY = below(j + 1);
+    for (size_t c = first[p]; c < first[p + 1]; ++c) {
+      const Request r = cells[c];
+      if (r.n <= 0) continue;
+      const int px = (i << r.level) + r.cx, py = (j << r.level) + r.cy;
+      const double side = cellSide(r.level);  // 1 / 2^level
+      const float fside = static_cast<float>(side);  // a power of two: exact
+      for (const Sampler* sampler : plan[r.n]) {
+        const int n = sampler->spp();
+        sampler->generate(px, py, u);
+        for (int k = 0; k < n; ++k, ++out) {
+          const Vec2 q = u[k];
+          // The position i + (cx + q) * side, the sum in double rounded to float (inside), is computed in float
+          // with the same bits: cx + q is a float either way; times a power of two it stays exact unless the
+          // product is subnormal; and a sum of two floats (i is one below 2^24) rounded to double and then to
+          // float is rounded once (53 >= 2 * 24 + 2 bits). Else in double, as written.
+          const float tx = (r.cx + q.x()) * fside, ty = (r.cy + q.y()) * fside;
+          if (inFloat && (tx == 0 || tx >= FLT_MIN) && (ty == 0 || ty >= FLT_MIN))
+            out->x = std::clamp(fi + tx, fi, topX), out->y = std::clamp(fj + ty, fj, topY);
+          else
+            out->x = inside(i + (r.cx + q.x()) * side, i, topX), out->y = inside(j + (r.cy + q.y()) * side, j, topY);
+          out->weight = r.weight;
         }
       }
-      for (FilmSample* s = begin; s != out; ++s) s->L = tracer_.radianceAt(s->x, s->y, W_, H_);
     }
+    for (FilmSample* s = begin; s != out; ++s) s->L = tracer_.radianceAt(s->x, s->y, W_, H_);
+  };
+  // Tile by tile (kTile x kTile pixels, as traceSamples): a round's rays close together on the film, so the BVH
+  // nodes they visit stay in cache (row by row, a round's rays spread over whole rows of the scene).
+  const int tilesX = (W_ + kTile - 1) / kTile, tilesY = (H_ + kTile - 1) / kTile;
+  parallelFor(tilesX * tilesY, threads_, [&](int tile) {
+    std::vector<Vec2> u(static_cast<size_t>(most));
+    const int x0 = (tile % tilesX) * kTile, y0 = (tile / tilesX) * kTile;
+    for (int j = y0; j < std::min(y0 + kTile, H_); ++j)
+      for (int i = x0; i < std::min(x0 + kTile, W_); ++i) tracePixel(i, j, u.data());
   });
   if (last) {
     final_.setAreaWeighted(true);
