@@ -73,7 +73,8 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
     FilmSample* out = round.samples.data() + round.start[p];
     if (last) {
       out = final_.pixel(i, j);
-      for (const Round& r : rounds_) out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
+      for (const Round& r : rounds_)
+        out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
     }
     if (first[p] == first[p + 1]) return;
     // Two passes: the pixel's positions and weights, then its rays in one tight loop (the position arithmetic's
