@@ -96,8 +96,9 @@ class Bvh final : public Aggregate {
       const Node4& n = nodes_[cur];
       float tn[4];
       const int mask = boxes(n, r, planes, tmin, hit.t, tn);
-      // Ordered: hit inner children pushed far to near, the nearest visited next without a push (as if pushed and
-      // popped at once); the leaves among them opened at once
+      // Ordered: the leaves among the hit children opened at once, near to far, each only while its box is not
+      // beyond the closest hit so far; the inner ones pushed far to near, the nearest visited next without a
+      // push (as if pushed and popped at once)
       int idx[4], k = 0;
       for (int c = 0; c < 4; ++c)
         if ((mask & (1 << c)) && n.child[c] >= 0) {
@@ -105,13 +106,15 @@ class Bvh final : public Aggregate {
           while (j > 0 && tn[idx[j - 1]] < tn[c]) idx[j] = idx[j - 1], --j;
           idx[j] = c;
         }
+      for (int m = k - 1; m >= 0; --m) {
+        const int c = idx[m];
+        if (n.count[c] != 0 && !(tn[c] > hit.t))
+          leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
+      }
       int next = -1;
       for (int m = 0; m < k; ++m) {
         const int c = idx[m];
-        if (n.count[c] != 0) {
-          leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
-          continue;
-        }
+        if (n.count[c] != 0) continue;
         if (next >= 0) stack[top] = n.child[next], near[top++] = tn[next];
         next = c;
       }
