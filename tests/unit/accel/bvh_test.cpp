@@ -187,13 +187,20 @@ TEST_P(Bvh, BuildsNodesOfItsWidth) {
   EXPECT_EQ(makeBvh(*scene, width())->describe().rfind(wide, 0), 0u) << makeBvh(*scene, width())->describe();
 }
 
-// The automatic choice: 4-wide on every CPU (8-wide measured faster for closest hits only); 8-wide only where asked
-// and available.
-TEST(BvhWidthChoice, AutomaticIsFourWideAndEightWideNeedsAvx2) {
+// The automatic choice: with AVX2 both trees (8-wide for closest hits, 4-wide for any hits; same hits as brute
+// force), else 4-wide; 8-wide only where asked and available.
+TEST(BvhWidthChoice, AutomaticUsesBothWidthsWithAvx2AndEightWideNeedsAvx2) {
   const auto scene = randomScene(1, false);
-  const std::string d = makeBvh(*scene)->describe();
-  EXPECT_EQ(d.rfind("bvh 4-wide", 0), 0u) << d;
-  if (!bvhEightWideSupported()) {
+  const auto automatic = makeBvh(*scene);
+  const std::string d = automatic->describe();
+  if (bvhEightWideSupported()) {
+    EXPECT_EQ(d.rfind("bvh 8-wide closest, 4-wide any hits", 0), 0u) << d;
+    const auto four = makeBvh(*scene, BvhWidth::Four), eight = makeBvh(*scene, BvhWidth::Eight);
+    EXPECT_EQ(automatic->stats().nodes, four->stats().nodes + eight->stats().nodes);
+    const auto rays = randomRays(boundedBox(*scene), 2000, 5, {});
+    expectGridMatchesBruteForce(*makeBruteForce(*scene), *automatic, rays);
+  } else {
+    EXPECT_EQ(d.rfind("bvh 4-wide", 0), 0u) << d;
     EXPECT_THROW(makeBvh(*scene, BvhWidth::Eight), std::runtime_error);
   }
 }
