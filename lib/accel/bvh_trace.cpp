@@ -5,7 +5,8 @@
 // 8-wide nodes tested with AVX (bvh_trace_avx2.cpp, only where the CPU has AVX2). Both visit every node
 // whose padded box the ray's segment enters and run the same leaf tests, so they return the same hits.
 // Closest hit: ordered traversal (nearest child first, subtrees beyond the current hit skipped); any hit:
-// depth first, out at the first hit.
+// depth first, out at the first hit. BvhWidth::Automatic on an AVX2 CPU builds both trees and answers closest
+// hits with the 8-wide one, any hits with the 4-wide one (each the faster for its query, aggregate.h).
 #include <xmmintrin.h>
 
 #include <cstddef>
