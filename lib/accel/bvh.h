@@ -1,7 +1,8 @@
 // Private to accel/: the layout of the bounding volume hierarchy behind makeBvh(), built by buildBvh()
 // (bvh_build.cpp) and traversed by the Bvh aggregate (bvh_trace.cpp); the protocol is in aggregate.h.
 //
-// Build: a binary tree by binned SAH over primitive centroids (kBins bins
+// Build: a binary tree by binned SAH over reference centroids (a reference: a primitive's box, or for a
+// triangle that fills its box poorly one of several boxes around parts of it, bvh_presplit.cpp; kBins bins
 // per axis, leaves of at most kMaxLeaf primitives), collapsed into 4-wide
 // nodes (each node adopts the children of its largest-area inner children
 // until it has four), boxes stored axis by axis so one SSE instruction tests
@@ -67,6 +68,16 @@ struct BvhLayout {
   std::vector<TriPack> packs;  ///< the triangle-only leaves
   double buildSeconds = 0;
 };
+
+/// A box the build bins: all or part of item's primitive (pre-splitting, bvh_presplit.cpp).
+struct Reference {
+  BBox box;
+  int item;
+};
+
+/// The references of the bounded items (boxes[i]: item i's bounds): one per item, except that triangles with a
+/// box far larger than the mean get several, each bounding the part of the triangle in a half of the box.
+std::vector<Reference> presplit(const std::vector<Item>& items, const std::vector<BBox>& boxes);
 
 /// Binned SAH build over root's flattened primitives, collapsed into nodes of the given width (4 or 8).
 BvhLayout buildBvh(const Object& root, int width);

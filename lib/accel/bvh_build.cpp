@@ -61,17 +61,23 @@ class Builder {
     if (!items_.empty()) {
       const float maxAbs = std::max(world.min.cwiseAbs().maxCoeff(), world.max.cwiseAbs().maxCoeff());
       const float pad = 1e-5f * world.extent().norm() + 1e-6f * maxAbs + 1e-30f;
+      std::vector<int> itemOf;
+      {
+        const std::vector<Reference> refs = presplit(items_, boxes);
+        boxes.clear();
+        for (const Reference& r : refs) boxes.push_back(r.box), itemOf.push_back(r.item);
+      }
       for (auto& b : boxes) b.min.array() -= pad, b.max.array() += pad;
-      std::vector<int> order(items_.size());
+      std::vector<int> order(boxes.size());
       for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
       std::vector<Vec3> centroids(boxes.size());
       for (size_t i = 0; i < boxes.size(); ++i) centroids[i] = 0.5f * (boxes[i].min + boxes[i].max);
       std::vector<BinaryNode> bin;
-      bin.reserve(2 * items_.size());
+      bin.reserve(2 * boxes.size());
       bin.push_back({});
       split(0, 0, static_cast<int>(order.size()), order, boxes, centroids, bin);
-      std::vector<Item> sorted(items_.size());
-      for (size_t i = 0; i < order.size(); ++i) sorted[i] = items_[order[i]];
+      std::vector<Item> sorted(order.size());
+      for (size_t i = 0; i < order.size(); ++i) sorted[i] = items_[itemOf[order[i]]];
       items_.swap(sorted);
       if (width == 8) nodes8_.reserve(bin.size() / 4 + 1), collapse(0, bin, nodes8_);
       else nodes_.reserve(bin.size() / 2 + 1), collapse(0, bin, nodes_);

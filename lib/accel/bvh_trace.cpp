@@ -5,7 +5,8 @@
 // 8-wide nodes tested with AVX (bvh_trace_avx2.cpp, only where the CPU has AVX2). Both visit every node
 // whose padded box the ray's segment enters and run the same leaf tests, so they return the same hits.
 // Closest hit: ordered traversal (nearest child first, subtrees beyond the current hit skipped); any hit:
-// depth first, out at the first hit.
+// depth first, out at the first hit. BvhWidth::Automatic on an AVX2 CPU builds both trees and answers closest
+// hits with the 8-wide one, any hits with the 4-wide one (each the faster for its query, aggregate.h).
 #include <xmmintrin.h>
 
 #include <cstddef>
@@ -40,18 +41,29 @@ bool cpuHasAvx2() {
 
 class Bvh final : public Aggregate {
  public:
+  /// width 4 or 8: one tree of that width; 0: both, the 8-wide one for closest hits, the 4-wide one for any hits.
   Bvh(const Object& root, int width) : width_(width) {
-    BvhLayout layout = buildBvh(root, width);
-    prims_ = std::move(layout.prims), unbounded_ = std::move(layout.unbounded), items_ = std::move(layout.items);
-    nodes_ = std::move(layout.nodes), nodes8_ = std::move(layout.nodes8), packs_ = std::move(layout.packs);
-    buildSeconds_ = layout.buildSeconds;
+    if (width != 8) {
+      BvhLayout layout = buildBvh(root, 4);
+      prims_ = std::move(layout.prims), unbounded_ = std::move(layout.unbounded), items_ = std::move(layout.items);
+      nodes_ = std::move(layout.nodes), packs_ = std::move(layout.packs);
+      buildSeconds_ += layout.buildSeconds;
+    }
+    if (width != 4) {
+      BvhLayout layout = buildBvh(root, 8);
+      // the 8-wide items point into their own build's primitives (a second flattening when both are built)
+      (width == 8 ? prims_ : prims8_) = std::move(layout.prims);
+      unbounded_ = std::move(layout.unbounded), items8_ = std::move(layout.items);
+      nodes8_ = std::move(layout.nodes8), packs8_ = std::move(layout.packs);
+      buildSeconds_ += layout.buildSeconds;
+    }
   }
 
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
     int best = -1;  // flattened index of the current closest primitive
     int none = -1;
     for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best, none);
-    if (!nodes8_.empty()) closestHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, hit, best);
+    if (!nodes8_.empty()) closestHit8({items8_.data(), nodes8_.data(), packs8_.data()}, ray, tmin, hit, best);
     else if (!nodes_.empty()) closestHit4(ray, tmin, hit, best);
     if (best < 0) return false;
     hit.primitive = best;
@@ -64,24 +76,25 @@ class Bvh final : public Aggregate {
       h.t = tmax;
       if (prims_[i]->intersect(ray, tmin, h)) return true;
     }
-    if (!nodes8_.empty()) return anyHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, tmax);
-    return !nodes_.empty() && anyHit4(ray, tmin, tmax);
+    if (!nodes_.empty()) return anyHit4(ray, tmin, tmax);
+    return !nodes8_.empty() && anyHit8({items8_.data(), nodes8_.data(), packs8_.data()}, ray, tmin, tmax);
   }
 
   AggregateStats stats() const override {
     AggregateStats s;
     s.primitives = prims_.size();
     s.unbounded = unbounded_.size();
-    s.references = items_.size();
+    s.references = items_.size() + items8_.size();
     s.nodes = nodes_.size() + nodes8_.size();
     s.buildSeconds = buildSeconds_;
     return s;
   }
 
   std::string describe() const override {
-    return std::string(width_ == 8 ? "bvh 8-wide" : "bvh 4-wide") + ", " +
-           std::to_string(nodes_.size() + nodes8_.size()) + " nodes over " + std::to_string(items_.size()) +
-           " bounded prims + " + std::to_string(unbounded_.size()) + " unbounded";
+    const char* name = width_ == 8 ? "bvh 8-wide" : width_ == 4 ? "bvh 4-wide" : "bvh 8-wide closest, 4-wide any hits";
+    return std::string(name) + ", " + std::to_string(nodes_.size() + nodes8_.size()) + " nodes over " +
+           std::to_string(items_.size() + items8_.size()) + " bounded prims + " + std::to_string(unbounded_.size()) +
+           " unbounded";
   }
 
  private:
@@ -96,8 +109,9 @@ class Bvh final : public Aggregate {
       const Node4& n = nodes_[cur];
       float tn[4];
       const int mask = boxes(n, r, planes, tmin, hit.t, tn);
-      // Ordered: hit inner children pushed far to near, the nearest visited next without a push (as if pushed and
-      // popped at once); the leaves among them opened at once
+      // Ordered: the leaves among the hit children opened at once, near to far, each only while its box is not
+      // beyond the closest hit so far; the inner ones pushed far to near, the nearest visited next without a
+      // push (as if pushed and popped at once)
       int idx[4], k = 0;
       for (int c = 0; c < 4; ++c)
         if ((mask & (1 << c)) && n.child[c] >= 0) {
@@ -105,13 +119,15 @@ class Bvh final : public Aggregate {
           while (j > 0 && tn[idx[j - 1]] < tn[c]) idx[j] = idx[j - 1], --j;
           idx[j] = c;
         }
+      for (int m = k - 1; m >= 0; --m) {
+        const int c = idx[m];
+        if (n.count[c] != 0 && !(tn[c] > hit.t))
+          leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
+      }
       int next = -1;
       for (int m = 0; m < k; ++m) {
         const int c = idx[m];
-        if (n.count[c] != 0) {
-          leafClosest(n.child[c], n.count[c], r, items_.data(), packs_.data(), tmin, hit, best, tri);
-          continue;
-        }
+        if (n.count[c] != 0) continue;
         if (next >= 0) stack[top] = n.child[next], near[top++] = tn[next];
         next = c;
       }
@@ -167,11 +183,14 @@ class Bvh final : public Aggregate {
 
   int width_;
   ObjectList prims_;
+  ObjectList prims8_;  ///< with both trees: the primitives the 8-wide one's items point to
   std::vector<int> unbounded_;
-  std::vector<Item> items_;
-  std::vector<Node4> nodes_;   ///< the 4-wide nodes, or
-  std::vector<Node8> nodes8_;  ///< the 8-wide nodes
-  std::vector<TriPack> packs_;  ///< the triangle-only leaves
+  std::vector<Item> items_;     ///< the 4-wide tree (any hits, and closest hits without the 8-wide one)
+  std::vector<Node4> nodes_;
+  std::vector<TriPack> packs_;
+  std::vector<Item> items8_;    ///< the 8-wide tree (closest hits, and any hits without the 4-wide one)
+  std::vector<Node8> nodes8_;
+  std::vector<TriPack> packs8_;
   double buildSeconds_ = 0;
 };
 
@@ -182,6 +201,7 @@ bool bvhEightWideSupported() { return cpuHasAvx2(); }
 std::unique_ptr<Aggregate> makeBvh(const Object& root, BvhWidth width) {
   if (width == BvhWidth::Eight && !cpuHasAvx2())
     throw std::runtime_error("makeBvh: the 8-wide BVH needs a CPU with AVX2, and this one has none");
+  if (width == BvhWidth::Automatic) return std::make_unique<Bvh>(root, cpuHasAvx2() ? 0 : 4);
   return std::make_unique<Bvh>(root, width == BvhWidth::Eight ? 8 : 4);
 }
 
