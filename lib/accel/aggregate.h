@@ -47,8 +47,8 @@ std::unique_ptr<Aggregate> makeGrid(const Object& root, int nx = 0, int ny = 0, 
 /// Node width of the BVH: Four (SSE, any x86-64-v2 CPU), Eight (AVX2; only on a CPU that has it, else
 /// makeBvh throws) or Automatic, the default: on a CPU with AVX2 both trees, the 8-wide one answering closest
 /// hits and the 4-wide one any hits (each measured the faster for its query on three or four mesh scenes of four,
-/// results/tracing_speed.md, 2026-11-27, 04:20 UTC; twice the nodes and build time), else Four. All give the
-/// same hits.
+/// results/tracing_speed.md, 2026-11-27, 04:20 UTC; one SAH build collapsed twice, sharing the primitives: twice
+/// the nodes), else Four. All give the same hits.
 enum class BvhWidth { Automatic, Four, Eight };
 
 /// Whether this CPU runs the 8-wide BVH (has AVX2).

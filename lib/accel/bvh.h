@@ -57,14 +57,15 @@ struct alignas(64) TriPack {
 constexpr uint32_t kPacked = 0x80000000u;  ///< in Node4::count: child is a TriPack index, low bits the count
 
 /// The hierarchy: the flattened primitives, the unbounded ones (indices into prims, tested before the
-/// nodes), the bounded ones as items in leaf order, the 4- or 8-wide nodes (node 0 the root; none when no
-/// primitive is bounded) and the triangle-only leaves.
+/// nodes), the bounded ones as items in leaf order, the 4-wide and/or 8-wide nodes (node 0 the root; none
+/// when no primitive is bounded), collapsed from one binary tree so that both share the items, and the
+/// triangle-only leaves (each width's packs in its own visiting order, the 8-wide ones after the 4-wide).
 struct BvhLayout {
   ObjectList prims;
   std::vector<int> unbounded;
   std::vector<Item> items;
-  std::vector<Node4> nodes;    ///< the 4-wide nodes (width 4), else empty
-  std::vector<Node8> nodes8;   ///< the 8-wide nodes (width 8), else empty
+  std::vector<Node4> nodes;    ///< the 4-wide nodes (width 4 or 0), else empty
+  std::vector<Node8> nodes8;   ///< the 8-wide nodes (width 8 or 0), else empty
   std::vector<TriPack> packs;  ///< the triangle-only leaves
   double buildSeconds = 0;
 };
@@ -79,7 +80,8 @@ struct Reference {
 /// box far larger than the mean get several, each bounding the part of the triangle in a half of the box.
 std::vector<Reference> presplit(const std::vector<Item>& items, const std::vector<BBox>& boxes);
 
-/// Binned SAH build over root's flattened primitives, collapsed into nodes of the given width (4 or 8).
+/// Binned SAH build over root's flattened primitives, collapsed into nodes of the given width (4 or 8), or
+/// into both (width 0).
 BvhLayout buildBvh(const Object& root, int width);
 
 /// The 8-wide traversal (bvh_trace_avx2.cpp, built with -mavx2): call only where the CPU has AVX2. Raw

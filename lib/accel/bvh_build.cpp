@@ -79,8 +79,10 @@ class Builder {
       std::vector<Item> sorted(order.size());
       for (size_t i = 0; i < order.size(); ++i) sorted[i] = items_[itemOf[order[i]]];
       items_.swap(sorted);
-      if (width == 8) nodes8_.reserve(bin.size() / 4 + 1), collapse(0, bin, nodes8_);
-      else nodes_.reserve(bin.size() / 2 + 1), collapse(0, bin, nodes_);
+      // one binary tree, collapsed into the width(s) asked for: both share the items; each appends its own packs
+      // (in its own visiting order, as when built alone)
+      if (width != 8) nodes_.reserve(bin.size() / 2 + 1), collapse(0, bin, nodes_);
+      if (width != 4) nodes8_.reserve(bin.size() / 4 + 1), collapse(0, bin, nodes8_);
     }
     buildSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }

@@ -43,27 +43,17 @@ class Bvh final : public Aggregate {
  public:
   /// width 4 or 8: one tree of that width; 0: both, the 8-wide one for closest hits, the 4-wide one for any hits.
   Bvh(const Object& root, int width) : width_(width) {
-    if (width != 8) {
-      BvhLayout layout = buildBvh(root, 4);
-      prims_ = std::move(layout.prims), unbounded_ = std::move(layout.unbounded), items_ = std::move(layout.items);
-      nodes_ = std::move(layout.nodes), packs_ = std::move(layout.packs);
-      buildSeconds_ += layout.buildSeconds;
-    }
-    if (width != 4) {
-      BvhLayout layout = buildBvh(root, 8);
-      // the 8-wide items point into their own build's primitives (a second flattening when both are built)
-      (width == 8 ? prims_ : prims8_) = std::move(layout.prims);
-      unbounded_ = std::move(layout.unbounded), items8_ = std::move(layout.items);
-      nodes8_ = std::move(layout.nodes8), packs8_ = std::move(layout.packs);
-      buildSeconds_ += layout.buildSeconds;
-    }
+    BvhLayout layout = buildBvh(root, width);
+    prims_ = std::move(layout.prims), unbounded_ = std::move(layout.unbounded), items_ = std::move(layout.items);
+    nodes_ = std::move(layout.nodes), nodes8_ = std::move(layout.nodes8), packs_ = std::move(layout.packs);
+    buildSeconds_ = layout.buildSeconds;
   }
 
   bool intersect(const Ray& ray, float tmin, Hit& hit) const override {
     int best = -1;  // flattened index of the current closest primitive
     int none = -1;
     for (int i : unbounded_) testObject(*prims_[i], i, ray, tmin, hit, best, none);
-    if (!nodes8_.empty()) closestHit8({items8_.data(), nodes8_.data(), packs8_.data()}, ray, tmin, hit, best);
+    if (!nodes8_.empty()) closestHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, hit, best);
     else if (!nodes_.empty()) closestHit4(ray, tmin, hit, best);
     if (best < 0) return false;
     hit.primitive = best;
@@ -77,14 +67,14 @@ class Bvh final : public Aggregate {
       if (prims_[i]->intersect(ray, tmin, h)) return true;
     }
     if (!nodes_.empty()) return anyHit4(ray, tmin, tmax);
-    return !nodes8_.empty() && anyHit8({items8_.data(), nodes8_.data(), packs8_.data()}, ray, tmin, tmax);
+    return !nodes8_.empty() && anyHit8({items_.data(), nodes8_.data(), packs_.data()}, ray, tmin, tmax);
   }
 
   AggregateStats stats() const override {
     AggregateStats s;
     s.primitives = prims_.size();
     s.unbounded = unbounded_.size();
-    s.references = items_.size() + items8_.size();
+    s.references = items_.size();
     s.nodes = nodes_.size() + nodes8_.size();
     s.buildSeconds = buildSeconds_;
     return s;
@@ -93,7 +83,7 @@ class Bvh final : public Aggregate {
   std::string describe() const override {
     const char* name = width_ == 8 ? "bvh 8-wide" : width_ == 4 ? "bvh 4-wide" : "bvh 8-wide closest, 4-wide any hits";
     return std::string(name) + ", " + std::to_string(nodes_.size() + nodes8_.size()) + " nodes over " +
-           std::to_string(items_.size() + items8_.size()) + " bounded prims + " + std::to_string(unbounded_.size()) +
+           std::to_string(items_.size()) + " bounded prims + " + std::to_string(unbounded_.size()) +
            " unbounded";
   }
 
@@ -183,14 +173,11 @@ class Bvh final : public Aggregate {
 
   int width_;
   ObjectList prims_;
-  ObjectList prims8_;  ///< with both trees: the primitives the 8-wide one's items point to
   std::vector<int> unbounded_;
-  std::vector<Item> items_;     ///< the 4-wide tree (any hits, and closest hits without the 8-wide one)
-  std::vector<Node4> nodes_;
-  std::vector<TriPack> packs_;
-  std::vector<Item> items8_;    ///< the 8-wide tree (closest hits, and any hits without the 4-wide one)
-  std::vector<Node8> nodes8_;
-  std::vector<TriPack> packs8_;
+  std::vector<Item> items_;      ///< in leaf order, shared by both trees
+  std::vector<Node4> nodes_;     ///< the 4-wide tree (any hits, and closest hits without the 8-wide one)
+  std::vector<Node8> nodes8_;    ///< the 8-wide tree (closest hits, and any hits without the 4-wide one)
+  std::vector<TriPack> packs_;   ///< the triangle-only leaves, each tree's own
   double buildSeconds_ = 0;
 };
 
