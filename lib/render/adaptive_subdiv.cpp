@@ -7,6 +7,7 @@
 // E[V_c] = the cell's mean whatever the decisions: the decision to split reads D_c (and the samples of its
 // ancestors inside it), and only changes how X_c is formed, from samples not yet drawn.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 
@@ -37,9 +38,10 @@ struct Bounds {
   float fx0, fx1, fy0, fy1;
   bool exact;
   Bounds() = default;
-  Bounds(const Work& w, const Cell& c) {
+  Bounds(const Work& w, const Cell& c) : Bounds(c.p % w.width(), c.p / w.width(), c) {}
+  Bounds(int i, int j, const Cell& c) {  // (i, j): c's pixel
     const double side = cellSide(c.level);
-    x0 = static_cast<double>(c.p % w.width()) + c.cx * side, y0 = static_cast<double>(c.p / w.width()) + c.cy * side;
+    x0 = static_cast<double>(i) + c.cx * side, y0 = static_cast<double>(j) + c.cy * side;
     x1 = x0 + side, y1 = y0 + side;
     fx0 = static_cast<float>(x0), fx1 = static_cast<float>(x1);
     fy0 = static_cast<float>(y0), fy1 = static_cast<float>(y1);
@@ -47,32 +49,92 @@ struct Bounds {
   }
 };
 
-/// Max over channels of (max - min) of the pixel's samples inside each of the cells c[0 .. n), all of one pixel
-/// (0 with fewer than 2), into diff[0 .. n): one pass over the pixel's samples for the n cells.
-template <int n>
-void spreadIn(const Work& w, const Cell* c, double* diff) {
-  Bounds b[n] = {Bounds(w, c[0])};
-  bool exact = b[0].exact;
-  for (int k = 1; k < n; ++k) b[k] = Bounds(w, c[k]), exact = exact && b[k].exact;
-  Color lo[n], hi[n];
-  int in[n];
-  for (int k = 0; k < n; ++k) lo[k] = Color::Constant(INFINITY), hi[k] = Color::Constant(-INFINITY), in[k] = 0;
-  w.forSamples(c[0].p, [&](const FilmSample& s) {
-    if (!s.L.allFinite()) return;
-    for (int k = 0; k < n; ++k)
-      if (exact ? s.x >= b[k].fx0 && s.x < b[k].fx1 && s.y >= b[k].fy0 && s.y < b[k].fy1
-                : s.x >= b[k].x0 && s.x < b[k].x1 && s.y >= b[k].y0 && s.y < b[k].y1)
-        lo[k] = lo[k].min(s.L), hi[k] = hi[k].max(s.L), ++in[k];
+/// Max over channels of (max - min) of pixel p's finite samples for which inside(s) holds (0 with fewer than 2).
+template <class Inside>
+double spreadWhere(const Work& w, long long p, Inside inside) {
+  Color lo = Color::Constant(INFINITY), hi = Color::Constant(-INFINITY);
+  int in = 0;
+  w.forSamples(p, [&](const FilmSample& s) {
+    if (s.L.allFinite() && inside(s)) lo = lo.min(s.L), hi = hi.max(s.L), ++in;
   });
-  for (int k = 0; k < n; ++k) diff[k] = in[k] >= 2 ? static_cast<double>((hi[k] - lo[k]).maxCoeff()) : 0.0;
+  return in >= 2 ? static_cast<double>((hi - lo).maxCoeff()) : 0.0;
+}
+
+/// The spread of the samples inside cell c.
+double spreadIn(const Work& w, const Cell& c) {
+  const Bounds b(w, c);
+  if (b.exact) return spreadWhere(w, c.p, [&](const FilmSample& s) {
+    return s.x >= b.fx0 && s.x < b.fx1 && s.y >= b.fy0 && s.y < b.fy1;
+  });
+  return spreadWhere(w, c.p, [&](const FilmSample& s) {
+    return s.x >= b.x0 && s.x < b.x1 && s.y >= b.y0 && s.y < b.y1;
+  });
+}
+
+/// The same for the 4 children q[0 .. 4) of one split cell, side by side (q[k] at 2 cx + (k & 1), 2 cy + (k >> 1)),
+/// into diff[0 .. 4), in one pass over the pixel's samples: a sample inside the parent is placed by comparing it
+/// with the midlines, which are the children's shared bounds (q[0]'s upper, q[3]'s lower), so each sample lands in
+/// the child whose own bounds hold it, as testing the four would give.
+void spreadInQuadrants(const Work& w, const Cell* q, double* diff) {
+  const int i = q[0].p % w.width(), j = q[0].p / w.width();
+  const Bounds a(i, j, q[0]), b(i, j, q[3]);  // a = [x0, xm) x [y0, ym), b = [xm, x1) x [ym, y1)
+  Color lo[4], hi[4];
+  int in[4] = {0, 0, 0, 0};
+  for (int k = 0; k < 4; ++k) lo[k] = Color::Constant(INFINITY), hi[k] = Color::Constant(-INFINITY);
+  const auto add = [&](int k, const Color& L) { lo[k] = lo[k].min(L), hi[k] = hi[k].max(L), ++in[k]; };
+  if (a.exact && b.exact)  // every bound of the four children is one of these (see Bounds)
+    w.forSamples(q[0].p, [&](const FilmSample& s) {
+      if (s.L.allFinite() && s.x >= a.fx0 && s.x < b.fx1 && s.y >= a.fy0 && s.y < b.fy1)
+        add((s.x >= b.fx0) + 2 * (s.y >= b.fy0), s.L);
+    });
+  else
+    w.forSamples(q[0].p, [&](const FilmSample& s) {
+      if (s.L.allFinite() && s.x >= a.x0 && s.x < b.x1 && s.y >= a.y0 && s.y < b.y1)
+        add((s.x >= b.x0) + 2 * (s.y >= b.y0), s.L);
+    });
+  for (int k = 0; k < 4; ++k) diff[k] = in[k] >= 2 ? static_cast<double>((hi[k] - lo[k]).maxCoeff()) : 0.0;
 }
 
 /// A split candidate: the sort key and where the cell is in its level.
 struct Key {
-  double diff;
+  uint64_t diff;  ///< the bits of a difference > threshold > 0: positive doubles order as their bits
   uint64_t hash;
   uint32_t k;
 };
+
+/// "x before y": largest difference first; equal ones in the pixel-hash order (no bias towards the first rows),
+/// then in the level's order. A strict order, so any sort gives the order a stable sort by (difference, hash) would.
+bool before(const Key& x, const Key& y) {
+  if (x.diff != y.diff) return x.diff > y.diff;
+  return x.hash != y.hash ? x.hash < y.hash : x.k < y.k;
+}
+
+/// Sorts keys (listed in k order) by before(). The differences often take a few values (flat colours: 1 or 2 on
+/// fence and checker_horizon), the hashes are uniform: then by a counting sort into buckets of (difference, top
+/// bits of the hash), stable, so k order holds within each, and an insertion sort of each bucket by hash (about
+/// one key per bucket); else by std::sort. `count`: scratch.
+void sortKeys(std::vector<Key>& keys, std::vector<Key>& scratch, std::vector<uint32_t>& count) {
+  constexpr size_t kFewDiffs = 8;
+  std::vector<uint64_t> diffs;
+  for (size_t i = 0; i < keys.size() && diffs.size() <= kFewDiffs; ++i)
+    if (std::find(diffs.begin(), diffs.end(), keys[i].diff) == diffs.end()) diffs.push_back(keys[i].diff);
+  if (diffs.size() > kFewDiffs || keys.size() < 64) return std::sort(keys.begin(), keys.end(), before);
+  std::sort(diffs.begin(), diffs.end(), std::greater<>());
+  const int bits = std::bit_width(keys.size());  // about one key per bucket of each difference
+  const auto bucket = [&](const Key& key) {
+    const size_t d = static_cast<size_t>(std::find(diffs.begin(), diffs.end(), key.diff) - diffs.begin());
+    return (d << bits) + static_cast<size_t>(key.hash >> (64 - bits));
+  };
+  count.assign((diffs.size() << bits) + 1, 0);
+  for (const Key& key : keys) ++count[bucket(key) + 1];
+  for (size_t b = 1; b < count.size(); ++b) count[b] += count[b - 1];
+  scratch.resize(keys.size());
+  for (const Key& key : keys) scratch[count[bucket(key)]++] = key;  // count[b] ends at bucket b + 1's start
+  for (size_t b = 0, from = 0; b + 1 < count.size(); from = count[b++])
+    for (size_t i = from + 1; i < count[b]; ++i)  // within the bucket: same difference, k ascending
+      for (size_t j = i; j > from && scratch[j].hash < scratch[j - 1].hash; --j) std::swap(scratch[j], scratch[j - 1]);
+  std::swap(keys, scratch);
+}
 
 }  // namespace
 
@@ -89,16 +151,24 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   std::vector<Cell> leaves, level, next;
   std::vector<double> diff;
   std::vector<uint32_t> byPixel, order;
-  std::vector<Key> split;
+  std::vector<Key> split, scratch;
+  std::vector<uint32_t> buckets;
   std::vector<std::pair<long long, Request>> requests;
-  leaves.reserve(static_cast<size_t>(w.pixels())), level.reserve(static_cast<size_t>(w.pixels()));
-  for (long long p = 0; p < w.pixels(); ++p) level.push_back({1.0, static_cast<int>(p), 0, 0, 0});
   w.tracePixels(std::vector<int>(w.pixels(), 4), std::vector<double>(w.pixels(), alpha0));
   long long free = w.left() - w.pixels();  // beyond the fresh samples every leaf keeps
+  // a split costs at least 16 + 4 * kChildFresh - kChildFresh samples of `free`, and adds 3 leaves
+  const size_t splitsAtMost = static_cast<size_t>(free / (16 + 3 * kChildFresh));
+  leaves.reserve(static_cast<size_t>(w.pixels()) + 3 * splitsAtMost);
+  level.resize(static_cast<size_t>(w.pixels()));
+  for (long long p = 0; p < w.pixels(); ++p) level[p] = {1.0, static_cast<int>(p), 0, 0, 0};
   for (int d = 0; d <= depth && !level.empty(); ++d) {
     diff.assign(level.size(), 0.0);
     if (d == 0 && d < depth) {
-      for (size_t k = 0; k < level.size(); ++k) spreadIn<1>(w, &level[k], &diff[k]);
+      // a pixel's cell holds every sample of the pixel (Work clamps each position inside its pixel, whose bounds
+      // are floats on films narrower than 2^24 pixels): nothing to test there
+      const bool whole = w.width() < (1 << 24) && w.pixels() / w.width() < (1 << 24);
+      for (size_t k = 0; k < level.size(); ++k)
+        diff[k] = whole ? spreadWhere(w, level[k].p, [](const FilmSample&) { return true; }) : spreadIn(w, level[k]);
     } else if (d < depth) {
       // below the pixel the level is made of the 4 children of each split cell, side by side, in the order of
       // the splits; visited in pixel order (counting sort), the 4 in one pass over the pixel's samples, so a
@@ -109,28 +179,17 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
       for (size_t g = 0; g < groups; ++g) ++byPixel[static_cast<size_t>(level[4 * g].p) + 1];
       for (long long p = 0; p < w.pixels(); ++p) byPixel[p + 1] += byPixel[p];
       for (size_t g = 0; g < groups; ++g) order[byPixel[level[4 * g].p]++] = static_cast<uint32_t>(g);
-      for (uint32_t g : order) spreadIn<4>(w, &level[4 * size_t(g)], &diff[4 * size_t(g)]);
+      for (uint32_t g : order) spreadInQuadrants(w, &level[4 * size_t(g)], &diff[4 * size_t(g)]);
     }
-    if (d == 0) {  // a pixel also splits when a neighbour's samples differ: an edge missed by its own 4 is seen
-      const std::vector<double> own(diff);
-      const int W = w.width(), H = static_cast<int>(w.pixels() / W);
-      for (int j = 0; j < H; ++j)
-        for (int i = 0; i < W; ++i)
-          for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
-            for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x)
-              diff[size_t(j) * W + i] = std::max(diff[size_t(j) * W + i], own[size_t(y) * W + x]);
-    }
+    // a pixel also splits when a neighbour's samples differ: an edge missed by its own 4 is seen
+    if (d == 0) diff = dilate(diff, w.width(), static_cast<int>(w.pixels() / w.width()));
     split.clear();
     for (size_t k = 0; k < level.size(); ++k)
-      if (diff[k] > threshold) split.push_back({diff[k], w.hash(level[k].p), static_cast<uint32_t>(k)});
-      else leaves.push_back(level[k]);
-    // largest difference first; equal ones in the pixel-hash order (no bias towards the first rows), then in
-    // the level's order: a strict order, so the unstable sort of 24-byte keys gives the order a stable sort of
-    // the cells by (difference, hash) would
-    std::sort(split.begin(), split.end(), [](const Key& x, const Key& y) {
-      if (x.diff != y.diff) return x.diff > y.diff;
-      return x.hash != y.hash ? x.hash < y.hash : x.k < y.k;
-    });
+      if (diff[k] > threshold)
+        split.push_back({std::bit_cast<uint64_t>(diff[k]), w.hash(level[k].p), static_cast<uint32_t>(k)});
+      else
+        leaves.push_back(level[k]);
+    sortKeys(split, scratch, buckets);
     // a split costs 16 decision samples and the fresh samples its children keep (4 each, matching their
     // alpha = 1/2: as many fresh as decision samples), less the parent's own
     requests.clear(), next.clear();
@@ -160,21 +219,25 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   for (const Cell& c : leaves) total += c.mass * (1 - alphaOf(c));
   std::vector<int> n(leaves.size());
   for (size_t k = 0; k < leaves.size(); ++k) n[k] = keep(leaves[k]);
-  std::vector<std::pair<double, size_t>> rest;
-  rest.reserve(leaves.size());
+  std::vector<double> rest(leaves.size());
   long long given = 0;
   for (size_t k = 0; k < leaves.size(); ++k) {
     const double share = static_cast<double>(free) * leaves[k].mass * (1 - alphaOf(leaves[k])) / total;
     const long long whole = static_cast<long long>(std::floor(share));
     n[k] += static_cast<int>(whole), given += whole;
-    rest.push_back({share - static_cast<double>(whole), k});
+    rest[k] = share - static_cast<double>(whole);
   }
-  // the (free - given) largest remainders, ties to the earlier leaf: a strict order, so the set is unique and
-  // only it is needed (a selection, not a sort of every leaf)
-  const auto larger = [](const auto& x, const auto& y) { return x.first != y.first ? x.first > y.first : x.second < y.second; };
-  const size_t more = static_cast<size_t>(std::clamp<long long>(free - given, 0, static_cast<long long>(rest.size())));
-  if (more < rest.size()) std::nth_element(rest.begin(), rest.begin() + static_cast<long long>(more), rest.end(), larger);
-  for (size_t k = 0; k < more; ++k) ++n[rest[k].second], ++given;
+  // one more to each of the (free - given) largest remainders, ties to the earlier leaf (a strict order, so the
+  // set is unique): value by value, largest first, each value's leaves in leaf order. A cell's mass, so its share
+  // and remainder, follows from its level: at most depth + 1 values, each a pass over the leaves.
+  long long more = std::clamp<long long>(free - given, 0, static_cast<long long>(leaves.size()));
+  std::vector<double> values;
+  for (double r : rest)
+    if (std::find(values.begin(), values.end(), r) == values.end()) values.push_back(r);
+  std::sort(values.begin(), values.end(), std::greater<>());
+  for (size_t v = 0; more > 0 && v < values.size(); ++v)
+    for (size_t k = 0; more > 0 && k < leaves.size(); ++k)
+      if (rest[k] == values[v]) ++n[k], ++given, --more;
   for (size_t k = 0; given > free && k < n.size(); ++k)  // rounding of the shares: never past the budget
     if (n[k] > keep(leaves[k])) --n[k], --given;
   requests.clear();

@@ -17,6 +17,7 @@ namespace aliaslab {
 
 namespace {
 
+using adaptiveimpl::dilate;
 using adaptiveimpl::Work;
 
 /// Fresh samples per pixel allowed at most: cap * spp in all, less the pilot (at least 1).
@@ -35,19 +36,6 @@ double tracePilot(Work& w, const AdaptiveSampler& a, int n0) {
 /// The fresh round, the last: fresh[p] >= 1 samples in every pixel sharing 1 - alpha of its estimate.
 void traceFresh(Work& w, const std::vector<int>& fresh, double alpha) {
   w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - alpha), true);
-}
-
-/// The largest value over each pixel's 3 x 3 neighbourhood.
-std::vector<double> dilate(const std::vector<double>& v, int W, int H) {
-  std::vector<double> out(v.size(), 0.0);
-  for (int j = 0; j < H; ++j)
-    for (int i = 0; i < W; ++i) {
-      double m = 0;
-      for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
-        for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) m = std::max(m, v[size_t(y) * W + x]);
-      out[size_t(j) * W + i] = m;
-    }
-  return out;
 }
 
 // Mitchell: contrast of the 3x3 neighbourhood of the pilot against per-channel thresholds.

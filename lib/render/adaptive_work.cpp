@@ -36,8 +36,13 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   std::vector<size_t> first(static_cast<size_t>(N_) + 1, 0);
   for (const auto& [p, r] : requests) ++first[p + 1], round.start[p + 1] += static_cast<size_t>(std::max(0, r.n));
   for (long long p = 0; p < N_; ++p) first[p + 1] += first[p], round.start[p + 1] += round.start[p];
-  std::vector<Request> cells(requests.size());
-  {
+  std::vector<Request> cells;
+  cells.reserve(requests.size());
+  const auto byPixel = [](const auto& x, const auto& y) { return x.first < y.first; };
+  if (std::is_sorted(requests.begin(), requests.end(), byPixel)) {  // grouped already (tracePixels)
+    for (const auto& pr : requests) cells.push_back(pr.second);
+  } else {
+    cells.resize(requests.size());
     std::vector<size_t> at(first.begin(), first.end() - 1);
     for (const auto& [p, r] : requests) cells[at[p]++] = r;
   }
@@ -190,6 +195,24 @@ std::vector<int> Work::evenly(long long amount, const std::vector<double>& prior
     for (long long k = 0; k < extra; ++k) ++add[order[k]];
   }
   return add;
+}
+
+std::vector<double> dilate(const std::vector<double>& v, int W, int H) {
+  std::vector<double> rows(v.size()), out(v.size());
+  for (int j = 0; j < H; ++j) {
+    const double* in = v.data() + size_t(j) * W;
+    double* r = rows.data() + size_t(j) * W;
+    for (int i = 0; i < W; ++i)
+      r[i] = std::max({0.0, i > 0 ? in[i - 1] : 0.0, in[i], i + 1 < W ? in[i + 1] : 0.0});
+  }
+  for (int j = 0; j < H; ++j) {
+    const double* up = rows.data() + size_t(std::max(0, j - 1)) * W;
+    const double* mid = rows.data() + size_t(j) * W;
+    const double* down = rows.data() + size_t(std::min(H - 1, j + 1)) * W;
+    double* o = out.data() + size_t(j) * W;
+    for (int i = 0; i < W; ++i) o[i] = std::max({up[i], mid[i], down[i]});
+  }
+  return out;
 }
 
 void Work::pixelRanges(std::vector<Color>& lo, std::vector<Color>& hi) const {

@@ -99,6 +99,10 @@ class Work {
   bool fullQuality(int n) const;
 };
 
+/// The largest value over each pixel's 3 x 3 neighbourhood (and 0) of a W x H image of values >= 0: a row pass
+/// then a column pass (max is exact and its order free, so the same values as the 9-neighbour loop).
+std::vector<double> dilate(const std::vector<double>& v, int W, int H);
+
 /// Whitted's subdivision with fresh leaf samples (adaptive_subdiv.cpp); traces the whole budget.
 void runSubdivision(Work& w, const AdaptiveSampler& a);
 

@@ -1,11 +1,14 @@
 // Trace time of the adaptive samplers against their base sampler for the same number of rays (issue: at most
 // about 1.3x): traceSamples(jittered) and traceAdaptive(adaptive-METHOD:jittered) on fence, checker_horizon and
 // scenes/controls/edge.txt at 128 x 128, 16 samples per pixel (262,144 rays either way), one thread, the
-// default aggregate. items/s is rays per second. Retrace/NAME/SCENE traces the very rays of one adaptive sample
-// set (its positions, computed before the timing) in pixel order, writing a buffer: the cost of those rays
-// without the method's bookkeeping, since adaptive rays are not average rays (they crowd where the geometry is:
-// on fence they are about 2x dearer than the base sampler's). RetraceRounds/NAME/SCENE (contrast, error) traces
-// them in the method's order instead (the pilot round, then the rest, each tile by tile). For same-run ratios run with
+// default aggregate. items/s is rays per second. Retrace/NAME/SCENE traces the very rays of one sample set of
+// NAME (its positions, computed before the timing) in pixel order, writing a buffer: the cost of those rays without
+// the sampler's own work, since adaptive rays are not average rays (they crowd where the geometry is: on fence
+// they are dearer than the base sampler's); Retrace/jittered/SCENE does the same for the base sampler's rays, so
+// what each sampler adds beyond its rays is Trace - Retrace, for the base (its point generation and positions) as
+// for the adaptive methods. RetraceRounds/NAME/SCENE traces the adaptive rays in the method's own order instead,
+// recorded from the camera's calls while the method traced them (its rounds one after another, each tile by
+// tile), so the cost of that order is told from the cost of the bookkeeping. For same-run ratios run with
 // --benchmark_repetitions=N --benchmark_enable_random_interleaving=true (the machine is shared). The process keeps
 // freed medium blocks in its heap (keepMediumBlocks(), core/huge_pages.h) as the sweep does (study/sweep.cpp):
 // otherwise glibc returns the rounds' buffers (0.1 to 2 MB) to the kernel after every trace and the next one
@@ -13,12 +16,15 @@
 #include "aliaslab_paths.h"
 #include <benchmark/benchmark.h>
 
+#include <bit>
 #include <map>
+#include <unordered_map>
 
 #include "accel/aggregate.h"
 #include "core/huge_pages.h"
 #include "render/adaptive.h"
 #include "render/render.h"
+#include "scene/camera.h"
 #include "scene/scene.h"
 
 namespace aliaslab {
@@ -32,15 +38,60 @@ struct Loaded {
   std::unique_ptr<Tracer> tracer;
 };
 
-const Tracer& tracerFor(const std::string& file) {
+Loaded& loaded(const std::string& file) {
   static std::map<std::string, Loaded> cache;
   auto it = cache.find(file);
-  if (it != cache.end()) return *it->second.tracer;
+  if (it != cache.end()) return it->second;
   Loaded& l = cache[file];
   l.scene = parseScene(std::string(ALIASLAB_SOURCE_DIR) + "/scenes/" + file);
   l.aggregate = makeDefaultAggregate(*l.scene.root);
   l.tracer = std::make_unique<Tracer>(l.scene, *l.aggregate, TraceOptions{});
-  return *l.tracer;
+  return l;
+}
+
+const Tracer& tracerFor(const std::string& file) { return *loaded(file).tracer; }
+
+/// A camera that passes every call on to `real` and logs the screen points of its rays in call order.
+class RecordingCamera final : public Camera {
+ public:
+  RecordingCamera(const Camera& real, std::vector<Vec2>& log) : real_(real), log_(log) {}
+  Ray generateRay(const Vec2& screen) const override { return log_.push_back(screen), real_.generateRay(screen); }
+  RayDerivatives rayDerivatives(const Vec2& screen) const override { return real_.rayDerivatives(screen); }
+  float tMin() const override { return real_.tMin(); }
+  std::string describe() const override { return real_.describe(); }
+
+ private:
+  const Camera& real_;
+  std::vector<Vec2>& log_;
+};
+
+/// One adaptive sample set and the order its samples were traced in (indices into its buffer; one thread).
+struct Traced {
+  SampleBuffer rays;
+  std::vector<size_t> order;
+};
+
+Traced tracedInOrder(const std::string& file, const std::string& name) {
+  Loaded& l = loaded(file);
+  std::vector<Vec2> log;
+  std::unique_ptr<Camera> real = std::move(l.scene.camera);
+  l.scene.camera = std::make_unique<RecordingCamera>(*real, log);
+  Traced t{traceAdaptive(*l.tracer, *makeAdaptiveSampler(name, kSpp, 1), kSize, kSize, 1), {}};
+  l.scene.camera = std::move(real);
+  // each logged screen point back to a sample of the buffer with that point (equal points: equal rays)
+  const auto key = [](const Vec2& v) {
+    return uint64_t{std::bit_cast<uint32_t>(v.x())} << 32 | std::bit_cast<uint32_t>(v.y());
+  };
+  std::unordered_map<uint64_t, std::vector<size_t>> at;
+  const auto& samples = t.rays.samples();
+  for (size_t k = 0; k < samples.size(); ++k)
+    at[key(filmToScreen(samples[k].x, samples[k].y, kSize, kSize))].push_back(k);
+  if (log.size() != samples.size()) throw std::runtime_error("adaptive_bench: rays traced != samples");
+  for (const Vec2& v : log) {
+    auto& left = at.at(key(v));
+    t.order.push_back(left.back()), left.pop_back();
+  }
+  return t;
 }
 
 void base(benchmark::State& state, std::string file) {
@@ -59,7 +110,9 @@ void adaptive(benchmark::State& state, std::string file, std::string name) {
 
 void retrace(benchmark::State& state, std::string file, std::string name) {
   const Tracer& t = tracerFor(file);
-  const SampleBuffer rays = traceAdaptive(t, *makeAdaptiveSampler(name, kSpp, 1), kSize, kSize, 1);
+  const SampleBuffer rays = isAdaptiveSamplerName(name)
+                                ? traceAdaptive(t, *makeAdaptiveSampler(name, kSpp, 1), kSize, kSize, 1)
+                                : traceSamples(t, *makeSampler(name, kSpp, 1), kSize, kSize, 1);
   for (auto _ : state) {
     std::vector<FilmSample> out(rays.samples().size());
     for (size_t k = 0; k < out.size(); ++k) {
@@ -71,27 +124,17 @@ void retrace(benchmark::State& state, std::string file, std::string name) {
   state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
 }
 
-// RetraceRounds: the same rays in the order the method traces them (contrast and error: the pilot, 4 per pixel
-// at 16 spp, then the rest; each round tile by tile, 16 x 16 pixels, as Work::trace), to tell the cost of the
-// order from the cost of the bookkeeping.
+// RetraceRounds: the same rays in the order the method traced them (tracedInOrder).
 void retraceRounds(benchmark::State& state, std::string file, std::string name) {
   const Tracer& t = tracerFor(file);
-  const SampleBuffer rays = traceAdaptive(t, *makeAdaptiveSampler(name, kSpp, 1), kSize, kSize, 1);
-  constexpr int kPilot = 4, kTile = 16;
+  const Traced traced = tracedInOrder(file, name);
+  const auto& in = traced.rays.samples();
   for (auto _ : state) {
-    std::vector<FilmSample> out(rays.samples().size());
-    for (int pass = 0; pass < 2; ++pass)
-      for (int tile = 0; tile < (kSize / kTile) * (kSize / kTile); ++tile)
-        for (int j = tile / (kSize / kTile) * kTile; j < (tile / (kSize / kTile) + 1) * kTile; ++j)
-          for (int i = tile % (kSize / kTile) * kTile; i < (tile % (kSize / kTile) + 1) * kTile; ++i) {
-            const FilmSample* in = rays.pixel(i, j);
-            const size_t at = static_cast<size_t>(in - rays.samples().data());
-            const int from = pass == 0 ? 0 : kPilot, to = pass == 0 ? kPilot : rays.count(i, j);
-            for (int k = from; k < to; ++k) {
-              out[at + k] = in[k];
-              out[at + k].L = t.radianceAt(in[k].x, in[k].y, kSize, kSize);
-            }
-          }
+    std::vector<FilmSample> out(in.size());
+    for (size_t k : traced.order) {
+      out[k] = in[k];
+      out[k].L = t.radianceAt(in[k].x, in[k].y, kSize, kSize);
+    }
     benchmark::DoNotOptimize(out.data());
   }
   state.SetItemsProcessed(state.iterations() * kSize * kSize * kSpp);
@@ -107,13 +150,15 @@ const int registered = [] {
       benchmark::RegisterBenchmark(("Trace/adaptive-" + m + ":jittered/" + stem).c_str(), adaptive, std::string(file),
                                    "adaptive-" + m + ":jittered")
           ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("Retrace/jittered/" + stem).c_str(), retrace, std::string(file), "jittered")
+        ->Unit(benchmark::kMillisecond);
     for (const std::string& m : adaptiveMethodNames())
       benchmark::RegisterBenchmark(("Retrace/adaptive-" + m + ":jittered/" + stem).c_str(), retrace, std::string(file),
                                    "adaptive-" + m + ":jittered")
           ->Unit(benchmark::kMillisecond);
-    for (const char* m : {"contrast", "error"})
-      benchmark::RegisterBenchmark(("RetraceRounds/adaptive-" + std::string(m) + ":jittered/" + stem).c_str(),
-                                   retraceRounds, std::string(file), "adaptive-" + std::string(m) + ":jittered")
+    for (const std::string& m : adaptiveMethodNames())
+      benchmark::RegisterBenchmark(("RetraceRounds/adaptive-" + m + ":jittered/" + stem).c_str(), retraceRounds,
+                                   std::string(file), "adaptive-" + m + ":jittered")
           ->Unit(benchmark::kMillisecond);
   }
   return 0;
