@@ -36,16 +36,10 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   std::vector<size_t> first(static_cast<size_t>(N_) + 1, 0);
   for (const auto& [p, r] : requests) ++first[p + 1], round.start[p + 1] += static_cast<size_t>(std::max(0, r.n));
   for (long long p = 0; p < N_; ++p) first[p + 1] += first[p], round.start[p + 1] += round.start[p];
-  std::vector<Request> cells;
-  cells.reserve(requests.size());
-  const auto byPixel = [](const auto& x, const auto& y) { return x.first < y.first; };
-  if (std::is_sorted(requests.begin(), requests.end(), byPixel)) {  // grouped already (tracePixels)
-    for (const auto& pr : requests) cells.push_back(pr.second);
-  } else {
-    cells.resize(requests.size());
-    std::vector<size_t> at(first.begin(), first.end() - 1);
-    for (const auto& [p, r] : requests) cells[at[p]++] = r;
-  }
+  std::vector<Request> cells(requests.size());
+  for (const auto& [p, r] : requests) cells[first[p]++] = r;  // first[p] ends where pixel p + 1's cells start
+  for (long long p = N_; p > 0; --p) first[p] = first[p - 1];
+  first[0] = 0;
   const long long total = static_cast<long long>(round.start[N_]);
   // Before the parallel part: for every count n requested, the samplers of its parts (by part count and the
   // index of the part among equal counts, which goes into the seed so two parts of one count in a cell are
