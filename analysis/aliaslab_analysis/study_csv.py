@@ -35,7 +35,11 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
                     "blur_ratio_0.5", "blur_ratio_0.5_se", "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2",
                     "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
                     # issue 31: NaN / infinite samples left out of the images (absent: unknown)
-                    "nonfinite_samples"]
+                    "nonfinite_samples",
+                    # issue 44: the filter's natural radius; the fixed grid's error over K sub-pixel camera
+                    # offsets (references moved with the camera), on the fixed grid's rows only
+                    "natural_radius", "align_offsets", "align_mse_target", "align_mse_target_sd",
+                    "align_mse_target_se"]
 # Key and count columns, which must be finite; values beyond ABSURD in any other numeric column are
 # beyond what float images can give (their squared differences stay below about 1e77): such a value is
 # treated as unknown (NaN) with a note, so charts and rankings leave it out instead of overflowing.

@@ -1,12 +1,12 @@
-"""Tie groups (issue 29 item 2) on constructed rows with known means and standard errors: what is tied,
-what is not, paired against unpaired comparisons, undetermined rows, the across-scene record with its
-seeded bootstrap, and the fronts with ties."""
+"""Tie groups (stats/ties.py: the motion section's top groups) on constructed rows with known means and
+standard errors: what is tied, what is not, paired against unpaired comparisons, undetermined rows; and the
+seeded bootstrap over scenes (stats/bootstrap.py)."""
 import unittest
 
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis.stats import bootstrap, fronts, rankings, ties
+from ..aliaslab_analysis.stats import bootstrap, ties
 
 
 def row(sampler, error, se, filt="box", radius=0.5, seeds=None, scene="s", spp=16, flagged=0, cost=10.0,
@@ -85,34 +85,6 @@ class TieGroups(unittest.TestCase):
 
 
 class AcrossScenes(unittest.TestCase):
-    def study(self):
-        rows = []
-        for k, scene in enumerate("abcdefghij"):
-            rows.append(row("good", 1.0, 0.01, scene=scene))
-            rows.append(row("close", 1.01 if k < 9 else 1.5, 0.01, scene=scene))
-            rows.append(row("bad", 2.0, 0.01, scene=scene, flagged=int(k < 2)))
-            rows.append(row("grid", 0.5, 0.0, scene=scene, deterministic=True))
-        return frame(*rows)
-
-    def test_counts_and_medians_are_over_the_true_number_of_scenes(self):
-        ranked = rankings.cells(self.study())
-        grid = ranked[ranked["sampler"] == "grid"]  # deterministic: kept with its ratio, never in a top group
-        self.assertEqual(len(grid), 10)
-        self.assertFalse(grid["top"].any())
-        self.assertTrue((grid["ratio"] == 0.5).all())
-        self.assertTrue(ranked[ranked["sampler"] == "good"]["best"].all())
-        table = rankings.across_scenes(ranked).set_index("sampler")
-        self.assertEqual(table.loc["grid", "in_top"], 0)
-        self.assertEqual(table.loc["good", "in_top"], 10)
-        self.assertEqual(table.loc["close", "in_top"], 9)  # 0.01 apart with se 0.014: tied; 0.5 apart: not
-        self.assertEqual(table.loc["bad", "scenes"], 10)  # flagged in 2 scenes, still counted
-        self.assertEqual(table.loc["bad", "flagged"], 2)
-        self.assertAlmostEqual(table.loc["close", "median_ratio"], 1.01)
-        answer = rankings.answer(rankings.across_scenes(ranked), 10)[("box:0.5", 16)]
-        self.assertEqual(list(answer["sampler"]), ["good", "close"])
-        eq = fronts.equal_time(ranked)
-        self.assertNotIn("grid", set(eq["sampler"]))
-
     def test_the_bootstrap_is_seeded_and_brackets_the_median(self):
         v = np.array([1.0, 1.1, 1.3, 1.05, 2.0, 1.2, 1.01, 1.4])
         lo, hi = bootstrap.interval(v)
@@ -120,45 +92,6 @@ class AcrossScenes(unittest.TestCase):
         self.assertLessEqual(lo, np.median(v))
         self.assertGreaterEqual(hi, np.median(v))
         self.assertEqual(bootstrap.interval([3.0]), (3.0, 3.0))
-
-
-class Fronts(unittest.TestCase):
-    def test_a_point_leaves_the_front_only_when_another_is_significantly_better_and_not_slower(self):
-        rows = frame(row("a", 1.0, 0.1, cost=10.0, cost_se=0.5),
-                     row("b", 2.0, 0.1, cost=10.5, cost_se=0.5),   # a is better and not significantly slower
-                     row("c", 2.0, 0.1, cost=5.0, cost_se=0.5),    # a is significantly slower than c
-                     row("d", 1.1, 0.1, cost=12.0, cost_se=0.5))   # tied with a in error: stays
-        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, True])
-
-    def test_an_undetermined_row_is_not_a_front_point_a_nearly_exact_one_is(self):
-        rows = frame(row("a", 1.0, 0.1, cost=10.0), row("huge", 500.0, 400.0, cost=9.0, flagged=1),
-                     row("exact", 0.001, 0.001, cost=12.0, flagged=1), row("slow", 0.5, 0.1, cost=20.0))
-        # "huge" is the fastest, yet undetermined: off the front; "exact" is below every upper bound: on it
-        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True, False])
-
-    def test_across_scenes_a_point_leaves_only_when_beaten_in_most_scenes_with_confidence(self):
-        rng = np.random.default_rng(3)
-        base = rng.normal(0, 0.5, 10)                      # scene difficulty, shared: pairing removes it
-        logs = np.vstack([base,                            # a: cost 1
-                          base + 0.3,                      # b: cost 2, worse in every scene: beaten by a
-                          base + rng.normal(0.1, 0.5, 10),  # c: cost 0.5, faster: stays
-                          base + np.array([0.02, -0.02, 0.01, -0.01, 0.03, -0.03, 0.0, 0.01, -0.01, 0.005])])
-        # d: cost 2, better than a in 4 scenes and worse in 5 (median +0.0025): tied with a, stays
-        pts = pd.DataFrame(dict(median_ratio=np.exp(np.median(logs - base.min(), axis=1)), cost=[1.0, 2.0, 0.5, 2.0],
-                                cost_se=[0.0] * 4))
-        self.assertEqual(list(fronts.summary_front_mask(pts, logs)), [True, False, True, True])
-
-    def test_without_spreads_it_is_the_usual_pareto_front(self):
-        rows = frame(row("a", 1.0, 0.0, cost=10.0), row("b", 2.0, 0.0, cost=10.5), row("c", 2.0, 0.0, cost=5.0))
-        self.assertEqual(list(fronts.front_mask(rows)), [True, False, True])
-
-    def test_equal_time_candidates_stay_within_the_budget(self):
-        rows = frame(row("a", 1.0, 0.01, cost=100.0, spp=64), row("b", 2.0, 0.01, cost=10.0, spp=16),
-                     row("c", 2.01, 0.01, cost=11.0, spp=16, cost_se=1.0), row("d", 3.0, 0.01, cost=9.0, spp=16))
-        eq = fronts.equal_time(rows)
-        at16 = eq[eq["budget_spp"] == 16]
-        self.assertEqual(set(at16["sampler"]), {"b", "c", "d"})  # a costs 100 ms: beyond the 10-ms budget
-        self.assertEqual(set(at16[at16["top"]]["sampler"]), {"b", "c"})
 
 
 if __name__ == "__main__":

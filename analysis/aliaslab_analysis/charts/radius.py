@@ -87,7 +87,7 @@ def radius_tradeoff(df, out_dir):
                                       label=f"degenerate, off the scale\n({degenerate.RULE})"))
         fig.legend(handles=handles, loc="lower center", bbox_to_anchor=(0.5, 0.0), fontsize=8, frameon=False,
                    ncol=min(4, len(handles)))
-        fig.suptitle(f"Radius trade-off: {scene}, sampler {sampler} (that of the best method), {recon}: "
-                     "a wider filter lowers noise and adds blur", fontsize=10)
+        fig.suptitle(f"Radius trade-off: {scene}, sampler {sampler} (that of the best method), {recon}; r is the "
+                     "kernel's width: below its natural radius a kernel is squeezed", fontsize=10)
         fig.tight_layout(rect=(0, 0.04 + 0.02 * ((len(handles) + 3) // 4), 1, 1))
         figures.save_figure(fig, out_dir, f"radius_{figures.slug(scene)}")

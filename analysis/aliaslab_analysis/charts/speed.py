@@ -1,8 +1,8 @@
 """speed_accuracy_<scene>: error against the target vs time per image (cost: cpu_ms, else wall time), log-log,
-with the numbered front with ties (stats/fronts.front_mask: a point leaves it only when another is
-significantly better and not significantly slower); colour = sampler, marker = filter, pre-filtered rows
+with the numbered front (stats/fronts.front_mask: the points no other point beats in both error and time;
+colour = sampler, marker = filter, pre-filtered rows
 ringed, flagged rows hollow and kept (on the front when nothing beats them), the fixed grid (deterministic,
-not ranked) as crosses; writes pareto.csv, the front of every scene."""
+ranked like any method) as crosses; writes pareto.csv, the front of every scene."""
 import os
 
 import numpy as np
@@ -51,7 +51,7 @@ def speed_accuracy(df, out_dir):
         if det.any():
             g = sd[det]
             ax.scatter(g["cost"], g["error"], marker="x", s=30, color=[colours[x] for x in g["sampler"]], zorder=2)
-        ok = timed[~timed["deterministic"].to_numpy(dtype=bool)].reset_index(drop=True)
+        ok = timed.reset_index(drop=True)
         lines = []
         bottom = float(sd["error"].min()) / 1.6
         if len(low):
@@ -79,7 +79,7 @@ def speed_accuracy(df, out_dir):
         ax.grid(True, which="major", alpha=0.3)
         handles = [plt.Line2D([], [], ls="", marker="o", color=colours[s], label=s) for s in samplers]
         handles += [plt.Line2D([], [], ls="", marker=markers[f], color="grey", label=f) for f in filters]
-        handles += [plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"),
+        handles += [plt.Line2D([], [], ls="--", color="k", label="front (numbered)"),
                     plt.Line2D([], [], ls="", marker="o", mfc="none", color="grey", label="flagged (kept)")]
         if det.any():
             handles.append(plt.Line2D([], [], ls="", marker="x", color="grey", label="fixed grid (deterministic)"))
@@ -97,7 +97,7 @@ def speed_accuracy(df, out_dir):
             shown = lines[:25] + ([f"... {len(lines) - 25} more in pareto.csv"] if len(lines) > 25 else [])
             per = 9  # below the chart, in columns: beside it the legend would cover them
             for c in range(0, len(shown), per):
-                ax.text(0.5 * (c // per), -0.11, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+                ax.text(0.5 * (c // per), -0.11, ("Front:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
                         transform=ax.transAxes, fontsize=7, va="top", ha="left", family="monospace")
         figures.save_figure(fig, out_dir, f"speed_accuracy_{figures.slug(scene)}")
     cols = ["scene"] + METHOD + ["spp", "time_ms", "cost", "cost_se", "error", "error_se", "flagged"]

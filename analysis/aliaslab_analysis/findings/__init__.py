@@ -9,23 +9,28 @@ over csv rows, no pandas groupby) and compare.
 
   study.py    Study: the loaded rows and what every finding shares (targets, top groups, across-scene
               records), and the finding that says what study this is
-  answer.py   the answer under each target (top groups per spp) and what holds under all targets
-  time.py     the front with ties across scenes, and the top groups at equal time
-  terms.py    where the error comes from, what an own-mse ranking would pick, aliasing within error,
-              flagged and undetermined rows
-  grid.py     the fixed and the shifted grid; samplers against random
+  answer.py   the answer under each target by factor: the samplers equivalent to each scene's best (each at
+              its best filter and radius, families named), jittered and random against them, what changes
+              from the lowest to the highest spp
+  factors.py  the filter and radius under each target, and what holds under every target
+  time.py     what sets the cost (spp, or the method), the strict front across scenes
+  terms.py    where the error comes from under every target, what an own-mse ranking would pick, aliasing
+              within error, flagged and heavy-tailed rows
+  grid.py     the fixed grid ranked as deterministic, its alignment, the shifted grid; samplers against random
   prefilter.py  pre-filtering against plain sampling (studies with pre-filtered rows)
   render.py   the findings as HTML paragraphs or a Markdown section
 """
-from . import answer, grid, prefilter, study, terms, time
+from . import answer, factors, grid, prefilter, study, terms, time
 from .study import Finding, Study
 
 
-def compute(df, notes, s=None):
-    """Every finding of the study, in the order the page shows them (s: a Study of df, made when None)."""
-    s = s or Study(df, notes)
+def compute(df, notes, s=None, margin=None):
+    """Every finding of the study, in the order the page shows them (s: a Study of df, made when None, with
+    the margin of equivalence `margin`, default stats/effect.MARGIN)."""
+    s = s or (Study(df, notes) if margin is None else Study(df, notes, margin))
     out = [study.describe(s)]
     out += answer.findings(s)
+    out += factors.findings(s)
     out += time.findings(s)
     out += terms.findings(s)
     out += grid.findings(s)

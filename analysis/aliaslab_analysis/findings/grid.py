@@ -1,39 +1,81 @@
-"""The grid (issue 29 item 5) and the samplers against random: the fixed grid is deterministic (the same
-image for every seed) and not ranked; the shifted grid ranks in its place. Ratios here are medians over
-scenes of per-scene ratios (never ratios of medians), against the primary target, with the target's own
-filter when the study has it (box r = 0.5), else each sampler's lowest error."""
+"""The grid (docs/science.md "The grid and alignment") and the samplers against random, against the primary
+target. The fixed grid (`uniform`, deterministic) is ranked like any method: its interval holds the references'
+error only. Its alignment, when the CSV has it (align_* columns on the fixed grid's rows: the mean error over K
+seeded sub-pixel camera offsets with references moved with the camera, and its spread), is stated beside it:
+per spp, at the grid's representative configuration, the medians over scenes of align_mse_target / mse_target
+(the mean over alignments against the centred one) and of align_mse_target / the scene's best. The shifted grid
+is a randomised (Cranley-Patterson rotated) lattice, a sampler of its own. Ratios against random are medians
+over scenes of per-scene ratios (never ratios of medians), box r = 0.5 when the study has it, else each
+sampler's lowest error."""
 import numpy as np
 
+from .answer import config, record
 from .study import Finding, fmt
 
-SHIFTED = "uniform-shifted"
+FIXED, SHIFTED = "uniform", "uniform-shifted"
+ALIGN = ["align_offsets", "align_mse_target", "align_mse_target_sd", "align_mse_target_se"]
+
+
+def alignment(s, spp):
+    """(median of align / centred, median of align / best, median sd / mean, scenes, K) at the grid's pick, or
+    None when the CSV has no alignment columns there."""
+    if not all(c in s.df.columns for c in ALIGN):
+        return None
+    p = s.pick(s.primary, spp, FIXED)
+    if p is None:
+        return None
+    r = s.ranked
+    r = r[(r["target"].astype(str) == s.primary) & (r["spp"] == spp) & (r["sampler"] == FIXED)
+          & (r["filter_name"] == p["filter_name"]) & (r["radius"] == p["radius"])
+          & (r["filter_params"] == p["filter_params"])]
+    r = r[np.isfinite(r["align_mse_target"].to_numpy(dtype=float))]
+    if r.empty:
+        return None
+    a = r["align_mse_target"].to_numpy(dtype=float)
+    best = r["error"].to_numpy(dtype=float) / r["ratio"].to_numpy(dtype=float)
+    return (float(np.median(a / r["error"].to_numpy(dtype=float))), float(np.nanmedian(a / best)),
+            float(np.median(r["align_mse_target_sd"].to_numpy(dtype=float) / a)), len(r),
+            int(r["align_offsets"].max()))
 
 
 def grid(s):
     det = s.rows()[s.rows()["deterministic"]]
-    if det.empty:
-        return None
-    samplers = ", ".join(f"`{x}`" for x in sorted(det["sampler"].unique()))
-    text = (f"The fixed grid ({samplers}) gives the same image for every seed: its error is shown as "
-            "`deterministic` (no standard error), one alignment of the grid with the scene, lucky or not; it is "
-            "shown on the charts but not ranked. ")
     claims = [dict(kind="deterministic_rows", value=len(det))]
-    if (s.df["sampler"] == SHIFTED).any():
-        text += (f"Rankings use `{SHIFTED}` instead: one seeded offset of the whole grid per seed, so its error and "
-                 "standard error are the expectation over alignments. Its structured error then changes from seed "
-                 "to seed and the decomposition counts it as noise; the error spectrum still shows it as structure.")
-        ratios = []
+    parts = []
+    if len(det):
+        parts.append(f"The fixed grid (`{FIXED}`) gives the same image for every seed: it is ranked like any method, "
+                     "as deterministic (its interval holds the references' error only). With the box filter it is the "
+                     "midpoint rule: on content smooth within a pixel its error is second order, a property of the "
+                     "method; what it depends on is where the scene's features fall against the pixels.")
+        per = []
         for spp in s.levels:
-            v = sampler_ratio(s, "uniform", SHIFTED, spp)
-            if v is not None:
-                ratios.append((spp, v))
-                claims.append(dict(kind="fixed_over_shifted", spp=spp, value=v[0], scenes=v[1]))
-        if ratios:
-            text += (" Fixed over shifted (median of per-scene ratios): "
-                     + ", ".join(f"{fmt(v[0])} at {spp} spp ({v[1]} scenes)" for spp, v in ratios) + ".")
-    else:
-        text += f"This study has no `{SHIFTED}` rows, so the grid is not ranked at all."
-    return Finding("grid", "The grid", text, claims)
+            p = s.pick(s.primary, spp, FIXED)
+            if p is None:
+                continue
+            text = f"at {spp} spp {config(p)} ({record(p, len(s.scenes))})"
+            claims += [dict(kind="pick_median_ratio", target=s.primary, spp=spp, sampler=FIXED, value=float(p["median_ratio"])),
+                       dict(kind="pick_equivalent", target=s.primary, spp=spp, sampler=FIXED, value=float(p["equivalent"]))]
+            a = alignment(s, spp)
+            if a is not None:
+                text += (f"; over {a[4]} camera offsets (references moved with the camera) its mean error is "
+                         f"{fmt(a[0])}x the centred one and {fmt(a[1])}x the best, spread {fmt(100 * a[2], 2)} % "
+                         f"(medians over {a[3]} scenes)")
+                claims += [dict(kind="align_over_centred", spp=spp, value=a[0]),
+                           dict(kind="align_over_best", spp=spp, value=a[1])]
+            per.append(text)
+        if per:
+            parts.append(f"Against `{s.primary}`: " + "; ".join(per) + ".")
+        if not all(c in s.df.columns for c in ALIGN):
+            parts.append("This CSV has no alignment columns (align_mse_target: the grid's mean over sub-pixel camera "
+                         "offsets), so its spread over alignments is not measured here.")
+    if (s.df["sampler"] == SHIFTED).any():
+        parts.append(f"`{SHIFTED}` is not the grid's expectation over alignments: it moves every cell's point by one "
+                     "random offset per image (a Cranley-Patterson rotation), a randomised lattice, unbiased but "
+                     "without the midpoint rule's symmetry, so on smooth content its variance falls only as 1/N. "
+                     "It is ranked as a sampler of its own.")
+    if not parts:
+        return None
+    return Finding("grid", "The grid", " ".join(parts), claims)
 
 
 def per_scene_error(s, sampler, spp):

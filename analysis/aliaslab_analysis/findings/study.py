@@ -9,7 +9,7 @@ import numpy as np
 
 from .. import study_rows
 from ..charts import axes
-from ..stats import fronts, rankings, ties
+from ..stats import effect, equivalence, factors, fronts, rankings
 
 TRUSTED_SIZE = 256
 TRUSTED_REF_FACTOR = 64
@@ -40,18 +40,23 @@ def fmt(v, digits=3):
 
 
 class Study:
-    def __init__(self, df, notes):
+    """What every finding shares, computed once: the rows with their ratio to each scene's best, interval and
+    verdict at the margin (stats/equivalence.per_scene), the across-scene records (`summary`), each sampler's
+    representative (`picks`), the leading samplers per (target, spp) (`leaders`) and answer.csv (`answer`)."""
+
+    def __init__(self, df, notes, margin=effect.MARGIN):
         self.df = df
         self.notes = notes
+        self.margin = float(margin)
         self.targets = study_rows.targets(df)
         self.primary = self.targets[0]
         self.scenes = sorted(df["scene"].unique())
         self.levels = sorted(int(s) for s in df["spp"].unique())
-        self.ranked = rankings.cells(df)
-        self.summary = rankings.across_scenes(self.ranked)
-        self.answer = rankings.answer(self.summary, len(self.scenes))
-        self.majority = rankings.majority(len(self.scenes))
-        self.z = ties.Z
+        self.ranked = equivalence.per_scene(df, self.margin)
+        self.summary = equivalence.across(self.ranked, self.margin)
+        self.picks = factors.sampler_picks(self.summary)
+        self.leaders = factors.leaders(self.picks, len(self.scenes))
+        self.answer = equivalence.table(self.ranked, self.summary, self.margin)
         self._points = None
 
     def points(self):
@@ -64,6 +69,12 @@ class Study:
     def rows(self, target=None):
         """The rows against one target (the primary by default): the target-independent columns once."""
         return self.df[self.df["target"].astype(str) == (target or self.primary)]
+
+    def pick(self, target, spp, sampler):
+        """The representative record of `sampler` at (target, spp) (stats/factors.sampler_picks), or None."""
+        p = self.picks
+        p = p[(p["target"] == target) & (p["spp"] == spp) & (p["sampler"] == sampler)]
+        return p.iloc[0] if len(p) else None
 
 
 def facts(df):

@@ -1,31 +1,41 @@
 """Where the error comes from, what an own-mse ranking would pick, aliasing within error, and the rows that
-cannot be ranked (flagged: unstable or reference-limited, stats/flags.py; undetermined): all against the primary target, counts over its rows (the
-target-independent columns repeat once per target)."""
+cannot be ranked (flagged: unstable or reference-limited, stats/flags.py; heavy-tailed, stats/tails.py). Where the error
+comes from is stated under every target; the rest against the primary target, counts over its rows (the target-independent
+columns repeat once per target)."""
 import numpy as np
 
 from ..charts.decomposition import components
-from ..stats import flags
+from ..stats import flags, tails
 from .study import Finding, fmt, method_name
 
 WORDS = {"noise": "noise", "aliasing": "aliasing", "blur": "blur", "cross": "the cross term",
          "blur_cross": "blur with the cross term"}
+PIXEL_AREA = "box:0.5"
+KERNEL_SHARE = 0.5  # blur's share of the best's error above which the page says the target ranks kernels
 
 
-def shares(s):
+def shares(s, target):
+    """Where the error of each scene's best at the highest spp comes from, against `target`."""
     top_spp = s.levels[-1]
-    r = s.ranked[(s.ranked["target"].astype(str) == s.primary) & (s.ranked["spp"] == top_spp) & s.ranked["best"]]
+    r = s.ranked[(s.ranked["target"].astype(str) == target) & (s.ranked["spp"] == top_spp) & s.ranked["best"]]
     if r.empty:
         return None
     terms = [c for c, _ in components(s.df)]
     claims, parts = [], []
+    blur = None
     for c in terms:
         with np.errstate(divide="ignore", invalid="ignore"):
             v = float(np.nanmedian(r[c].to_numpy(dtype=float) / r["error"].to_numpy(dtype=float)))
-        claims.append(dict(kind="share", target=s.primary, spp=top_spp, term=c, value=v))
+        claims.append(dict(kind="share", target=target, spp=top_spp, term=c, value=v))
         parts.append(f"{WORDS[c]} {100 * v:.0f} %")
-    text = (f"Where the error of each scene's best method at {top_spp} spp comes from (median share over "
-            f"{len(r)} scenes): " + ", ".join(parts) + ".")
-    return Finding("shares", "Where the error comes from", text, claims)
+        blur = v if c in ("blur", "blur_cross") else blur
+    text = (f"Where the error of each scene's best method against `{target}` at {top_spp} spp comes from (median "
+            f"share over {len(r)} scenes): " + ", ".join(parts) + ".")
+    if target != PIXEL_AREA and blur is not None and blur >= KERNEL_SHARE:
+        text += (" Most of it is blur, the distance between the filter's own reference and the target: against this "
+                 "target a ranking at high spp mostly measures how close a kernel is to the target's kernel (see the "
+                 "trade-off charts: noise plus aliasing against blur).")
+    return Finding(f"shares:{target}", f"Where the error comes from ({target})", text, claims)
 
 
 def own_mse(s):
@@ -76,8 +86,8 @@ def unrankable(s):
     by = unstable.groupby(["filter_name", "radius"]).size().sort_values(ascending=False, kind="stable")
     for (name, radius), n in by.items():
         claims.append(dict(kind="unstable_filter", filter=name, radius=float(radius), value=int(n)))
-    und = s.ranked[s.ranked["undetermined"]]
-    claims.append(dict(kind="undetermined", value=len(und)))
+    heavy = int(s.ranked["heavy_tailed"].sum())
+    claims.append(dict(kind="heavy_tailed_rows", value=heavy))
     text = (f"{n_flag} of {len(df)} rows are flagged by the sweep: their error against the target is within two "
             f"standard errors of zero (docs/science.md). {len(unstable)} of them are unstable: their error is more "
             f"than {flags.REF_LIMIT:g}x what the target reference's own error explains, so certainly not small, "
@@ -85,10 +95,11 @@ def unrankable(s):
             + (": " + ", ".join(f"{name} r={radius:g} {int(n)}" for (name, radius), n in by.items()) if len(by) else "")
             + f". {n_ref} are reference-limited (error within {flags.REF_LIMIT:g}x the reference's own). "
             "Flagged rows are drawn hollow on every chart. "
-            f"{len(und)} row(s) are undetermined (error not told from zero and too uncertain to be a tie for the "
-            "top): shown, not ranked.")
+            f"Apart from the flag, {heavy} of {len(df)} rows are heavy-tailed (their largest seed carries more than "
+            f"{tails.SHARE_FACTOR:g}x an equal share of their summed error): their interval is a bootstrap over seeds "
+            "and they are never equivalent to the best.")
     return Finding("flagged", "Flagged rows: unstable or reference-limited", text, claims)
 
 
 def findings(s):
-    return [shares(s), own_mse(s), aliasing_zero(s), unrankable(s)]
+    return [shares(s, t) for t in s.targets] + [own_mse(s), aliasing_zero(s), unrankable(s)]

@@ -1,26 +1,47 @@
-"""For the time spent: the error-vs-time front with ties across scenes (stats/fronts.summary_front_mask)
-and the top groups at equal time (stats/fronts.equal_time), against the primary target."""
-import numpy as np
-
-from ..stats import fronts, rankings
+"""For the time spent, against the primary target: whether cost is set by spp (stats/fronts.cost_by_spp) and
+the strict front across scenes (stats/fronts.summary_points: no point beaten in both median ratio and mean
+cost)."""
+from ..stats import fronts
 from .study import Finding, fmt, method_key, method_name
+
+
+def timing(s):
+    return "thread CPU time" if "cpu_ms" in s.df.columns else "wall time (no measured spread)"
+
+
+def cost_finding(s):
+    levels = fronts.cost_by_spp(s.points())
+    if not levels:
+        return None
+    parts, claims = [], []
+    for x in levels:
+        parts.append(f"at {x['spp']} spp {fmt(x['low'])}-{fmt(x['high'])} ms (spread {fmt(x['spread'])} ms: "
+                     + ("within it" if x["set_by_spp"] else "beyond it") + ")")
+        claims += [dict(kind="cost_low", spp=x["spp"], value=x["low"]), dict(kind="cost_high", spp=x["spp"], value=x["high"]),
+                   dict(kind="set_by_spp", spp=x["spp"], value=int(x["set_by_spp"]))]
+    every = all(x["set_by_spp"] for x in levels)
+    text = (f"Time ({timing(s)}, mean over scenes per method) from the cheapest to the dearest method: "
+            + "; ".join(parts) + " (spread: 2 standard errors of the difference of the two, each with the 15 % "
+            "run-to-run floor). ")
+    text += ("At every spp level the methods' times differ by less than that spread: **the cost is set by spp**, "
+             "and at equal time the answer is the answer at equal spp." if every else
+             "Where the range is beyond the spread the choice of method changes the cost at that spp; elsewhere "
+             "the cost is set by spp.")
+    return Finding("cost", "What sets the cost", text, claims)
 
 
 def front_finding(s):
     pts = s.points()
-    pts = pts[~pts["deterministic"].astype(bool)]
     front = pts[pts["front"]].sort_values(["cost", "median_ratio"])
     if front.empty:
         return None
     first, last = front.iloc[0], front.iloc[-1]
-    timing = "thread CPU time" if "cpu_ms" in s.df.columns else "wall time (no measured spread)"
-    text = (f"For the time spent ({timing}, mean over scenes), {len(front)} of {len(pts)} (method, spp) points are "
-            f"on the front with ties: from **{method_name(first)} at {int(first['spp'])} spp** ({fmt(first['cost'])} ms, "
-            f"median {fmt(first['median_ratio'])}x each scene's best) to **{method_name(last)} at {int(last['spp'])} "
-            f"spp** ({fmt(last['cost'])} ms, {fmt(last['median_ratio'])}x). A point leaves the front only when another, "
-            "not significantly slower (beyond 2 standard errors of the time difference), is significantly better "
-            "across scenes (a paired bootstrap over scenes of the median log ratio between the two excludes 0); "
-            "every method stays on the chart.")
+    text = (f"Error against time ({timing(s)}, mean over scenes): {len(front)} of {len(pts)} (method, spp) points "
+            "are on the front, where no other point has both a lower (or equal) median ratio and a lower (or equal) "
+            f"time: from **{method_name(first)} at {int(first['spp'])} spp** ({fmt(first['cost'])} ms, median "
+            f"{fmt(first['median_ratio'])}x each scene's best) to **{method_name(last)} at {int(last['spp'])} spp** "
+            f"({fmt(last['cost'])} ms, {fmt(last['median_ratio'])}x). Points closer in time than its spread are not "
+            "told apart by it: read the front with the cost finding above.")
     claims = [dict(kind="front_size", target=s.primary, value=len(front)),
               dict(kind="front_points", target=s.primary, value=len(pts))]
     for r in (first, last):
@@ -29,32 +50,5 @@ def front_finding(s):
     return Finding("front", "Error against time", text, claims)
 
 
-def equal_time_finding(s):
-    eq = fronts.equal_time(s.ranked[s.ranked["target"].astype(str) == s.primary])
-    if eq.empty:
-        return None
-    parts, claims = [], []
-    for spp, g in eq.groupby("budget_spp", sort=True):
-        top = g[g["top"]]
-        counts = top.groupby(rankings.METHOD + ["spp"], dropna=False)["scene"].nunique().sort_values(
-            ascending=False, kind="stable")
-        if counts.empty:
-            continue
-        need = s.majority if counts.iloc[0] >= s.majority else counts.iloc[0]
-        chosen = counts[counts >= need].head(4)
-        budget = float(np.median(g.drop_duplicates("scene")["budget_ms"]))
-        names = []
-        for key, n in chosen.items():
-            r = dict(zip(rankings.METHOD, key[:-1]))
-            names.append(f"**{method_name(r)} at {int(key[-1])} spp** ({int(n)} of {len(s.scenes)})")
-            claims.append(dict(kind="equal_time_in_top", target=s.primary, budget_spp=int(spp),
-                               method=tuple(key[:-1]), spp=int(key[-1]), value=int(n)))
-        parts.append(f"for the time of a typical {int(spp)}-spp row (median over scenes {fmt(budget)} ms) "
-                     + ", ".join(names))
-    text = ("At equal time (any spp, rows not significantly dearer than the budget; ties in error as above), "
-            "the methods most often in the top group (scenes): " + "; ".join(parts) + ".")
-    return Finding("equal_time", "At equal time", text, claims)
-
-
 def findings(s):
-    return [front_finding(s), equal_time_finding(s)]
+    return [cost_finding(s), front_finding(s)]

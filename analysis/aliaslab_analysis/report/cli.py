@@ -15,12 +15,12 @@ def default_study(results):
     return None
 
 
-def findings_markdown(study):
+def findings_markdown(study, margin=None):
     """The findings section of results/README.md, generated from the study CSV."""
     from .. import findings, study_csv
     from ..findings import render
     df, notes = study_csv.load_study(study)
-    text = render.markdown_section(findings.compute(df, notes), shown_path(study))
+    text = render.markdown_section(findings.compute(df, notes, margin=margin), shown_path(study))
     return text + ("\n" + " ".join(f"_{n}_" for n in notes) if notes else "")
 
 
@@ -37,6 +37,9 @@ def main(argv=None, prog=None):
                     "default; kept for old scripts)")
     ap.add_argument("--embed", action="store_true", help="embed images as data URIs: one file to share, larger")
     ap.add_argument("--reuse-charts", action="store_true", help="do not redraw the charts already in --charts")
+    ap.add_argument("--margin", type=float, default=None, metavar="DELTA",
+                    help="the margin of practical equivalence: a method is equivalent to a scene's best when the 95 %% "
+                    "interval of its error ratio lies below 1 + DELTA (default 0.10, printed on the page)")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
     ap.add_argument("--findings-md", action="store_true",
                     help="print the generated findings as Markdown (results/README.md's findings section)")
@@ -47,6 +50,8 @@ def main(argv=None, prog=None):
         errors.fail(f"{args.results}: not a folder")
     if args.link and args.embed:
         errors.fail("--link and --embed: choose one")
+    if args.margin is not None and not (0 < args.margin < 10):
+        errors.fail(f"--margin: {args.margin:g} is not a margin (give a number between 0 and 10, e.g. 0.10 for 10 %)")
     study = args.study or default_study(args.results)
     if args.study is not None and not os.path.isfile(args.study):
         errors.fail(f"--study: {args.study}: no such file")
@@ -54,7 +59,7 @@ def main(argv=None, prog=None):
         if args.findings_md:
             if study is None:
                 errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
-            print(findings_markdown(study))
+            print(findings_markdown(study, args.margin))
             return 0
         if args.tables:
             if study is None:
@@ -64,7 +69,7 @@ def main(argv=None, prog=None):
         if study is None:
             errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
         path = build_report(args.results, study, args.charts, args.images, args.label, embed=args.embed,
-                            draw=not args.reuse_charts)
+                            draw=not args.reuse_charts, margin=args.margin)
     except errors.InputError as e:
         errors.fail(str(e))
     print(f"wrote {path}")

@@ -1,24 +1,33 @@
 """The page's findings: the generated findings (the findings package: every number from the CSV, each
-recomputed by the tests) as HTML paragraphs, and the page's statement of the tie rules."""
+recomputed by the tests) as HTML paragraphs, and the page's statement of the rules behind every verdict."""
 from .. import findings as generated
 from ..findings import render
 from ..findings.study import method_name  # noqa: F401  (the name the report's modules use)
-from ..stats import bootstrap, ties
+from ..stats import bootstrap, effect, factors, tails
 
 
-def tie_rules():
-    """The rules behind every 'top group' on the page, in words (stats/ties.py, rankings.py, fronts.py)."""
-    return (f"<p class='note'><b>How ties are decided.</b> In each scene, spp level and target, the top group is "
-            f"every method not significantly worse than the best: its error exceeds the best's by at most "
-            f"{ties.Z:g} standard errors of the difference. Different samplers have independent samples "
-            "(se of the difference = sqrt(se<sub>1</sub><sup>2</sup> + se<sub>2</sub><sup>2</sup>)); filters and "
-            "radii of one sampler share their samples and are compared paired, over the per-seed errors. "
-            "A method whose error cannot be told from zero joins the top group only if even its upper bound "
-            "is below the best's; otherwise it is <i>undetermined</i> and not ranked. Across scenes a method is "
-            "in the answer when it is in the top group of at least half of the scenes; its median ratio to each "
-            f"scene's best comes with a {int(bootstrap.LEVEL * 100)} % bootstrap interval over scenes "
-            f"({bootstrap.N_BOOT} resamples, seed {bootstrap.SEED}). Times within {ties.Z:g} standard errors are "
-            "ties too. Flagged rows stay on every chart (hollow) and in every count.</p>")
+def equivalence_rules(margin):
+    """The rules behind every verdict on the page, in words (stats/effect.py, tails.py, equivalence.py,
+    factors.py, fronts.py)."""
+    m = f"{100 * margin:g} %"
+    return (f"<p class='note' id='rules'><b>How a verdict is reached.</b> In each scene, spp level and target every "
+            f"method's error is a ratio to the scene's best (the lowest error told from zero, not heavy-tailed; the "
+            f"fixed grid is ranked like any method, deterministic) with a 95 % interval, judged against a margin of "
+            f"<b>{m}</b>: <i>equivalent</i> when the interval lies below 1 + {m} (a difference that is significant "
+            f"but inside the margin is equivalent), <i>worse</i> when it lies above, <i>undetermined</i> otherwise. "
+            "The interval is Student's t on the log ratio (delta method; K &minus; 1 degrees of freedom from the "
+            "K seeds, Welch-Satterthwaite when the rows are independent): filters and radii of one sampler share "
+            "their samples and are compared paired over the per-seed errors, other samplers as independent; the "
+            "references' part of each row's standard error is counted for both rows (the rows of a scene share "
+            "its references: conservative). A row is <i>heavy-tailed</i> when its largest seed carries more than "
+            f"{tails.SHARE_FACTOR:g}x an equal share of its summed error: its interval is then a bootstrap over "
+            f"seeds ({effect.N_BOOT} resamples, seed {effect.BOOT_SEED}) and it is never equivalent. Across scenes a "
+            "method's median ratio comes with a 95 % bootstrap interval over scenes "
+            f"({bootstrap.N_BOOT} resamples, seed {bootstrap.SEED}), judged by the same rule, and the number of "
+            "scenes where it is equivalent. A sampler is judged at its best filter and radius (its lowest median); "
+            "the leading samplers are those equivalent across scenes or in at least half of them; a family "
+            f"({', '.join(f'{k}: {chr(44).join(v)}' for k, v in factors.FAMILIES.items())}) is named when all of it "
+            "leads. A point is on a front when no other point has both a lower error and a lower time.</p>")
 
 
 def findings(df, notes, target=None, study=None):

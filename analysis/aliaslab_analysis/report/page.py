@@ -1,6 +1,6 @@
-"""The assembly of the report: index.html from the list SECTIONS (the header and the other studies, the scene
-gallery, the findings, the answer per target, the summary chart, the scenes, stability, the samplers and
-filters in isolation, engineering), with a sticky table of contents; engineering.html (the benchmark and
+"""The assembly of the report: index.html from the list SECTIONS (the header and the other studies, the answer
+table (read from the answer.csv written beside the page), the scene gallery, the findings, the summary chart,
+the trade-off per target, the scenes, stability, the samplers and filters in isolation, engineering), with a sticky table of contents; engineering.html (the benchmark and
 fuzzing records); docs/*.html (the definitions rendered from the repository's docs/*.md; one copy in
 results/docs for every page inside results/: docs_html.docs_folder)."""
 import html
@@ -11,19 +11,21 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import charts, errors, figures, spectra, study_csv
-from ..charts import axes as charts_axes
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
 from .adaptive import adaptive_section
 from .elements import figure, image_src, write_page
-from .findings import findings, method_name, tie_rules
+from . import answer_csv
+from .answer_table import answer_table
+from .findings import equivalence_rules, findings, method_name
 from .markdown import markdown_tables
 from .motion import motion_section
 from .scene import scene_notes, scene_section
 from ..viewer.section import viewer_section
 from .summary_chart import summary_chart
-from .targets_table import targets_section
+from .targets_table import targets_text
+from .tradeoff import tradeoff_section
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
 SCIENCE = os.path.join(REPO, "docs", "science.md")
@@ -100,6 +102,7 @@ class Context:
     science: str
     name: str
     spec: object = None
+    answer_path: str = ""
 
 
 def header_section(c):
@@ -116,8 +119,33 @@ def header_section(c):
             + studies.links_html(studies.other_studies(c.results, c.study, REPO)))
 
 
+def answer_section(c):
+    """The answer at a glance (report/answer_table.py), read from the answer.csv beside the page."""
+    s = c.s
+    return ("<h2 id='answer'>The answer at a glance</h2>"
+            + answer_table(c.answer_path, s.targets, s.levels, sorted(c.df["sampler"].unique()), len(s.scenes),
+                           s.margin, c.science) + targets_text(s, c.science))
+
+
+def gallery_card_text(c, scene):
+    """The scene's best at its highest spp and how many methods are equivalent to it (stats/effect.py)."""
+    r = c.s.ranked
+    r = r[(r["target"].astype(str) == c.s.primary) & (r["scene"] == scene)]
+    if r.empty or not r["best"].any():
+        return "no row with an error told from zero"
+    spp = int(r.loc[r["best"], "spp"].max())
+    g = r[r["spp"] == spp]
+    best = g[g["best"]].iloc[0]
+    eq = g[(g["verdict"] == "equivalent") & ~g["best"]]
+    samplers = sorted(set(eq["sampler"]) - {best["sampler"]})
+    more = f"; {len(eq)} more within {100 * c.s.margin:g} %" if len(eq) else f"; none other within {100 * c.s.margin:g} %"
+    also = (" (" + ", ".join(samplers[:3]) + (f" +{len(samplers) - 3}" if len(samplers) > 3 else "") + ")") if samplers else ""
+    return f"at {spp} spp: {html.escape(method_name(best))}, error {best['error']:.2g}{more}{html.escape(also)}"
+
+
 def gallery_section(c):
-    """A card per scene: its image (the study's pixel-area reference or thumbnail) and its best method."""
+    """A card per scene: its image (the study's pixel-area reference or thumbnail) and its best method with the
+    number of methods equivalent to it."""
     folder = os.path.dirname(os.path.abspath(c.study))
     cards = []
     for scene in c.s.scenes:
@@ -128,11 +156,7 @@ def gallery_section(c):
                 src = image_src(c.results, p, c.embed)
                 small = int(c.primary.loc[c.primary["scene"] == scene, ["width", "height"]].to_numpy().max()) < 160
                 break
-        sd = c.primary[c.primary["scene"] == scene]
-        best = charts_axes.best_row(sd[~sd["deterministic"].astype(bool)])  # the fixed grid is not ranked
-        text = (f"best at {int(best['spp'])} spp: {html.escape(method_name(best))}, error {best['error']:.2g}"
-                if best is not None else "no unflagged row")
-        cards.append((f"scene-{slug}", str(scene), src, text, small))
+        cards.append((f"scene-{slug}", str(scene), src, gallery_card_text(c, scene), small))
     return "<h2 id='gallery'>The scenes</h2>" + navigation.gallery(cards)
 
 
@@ -145,7 +169,7 @@ def findings_section(c):
             f"filter's own reference against the target) and a cross term. Definitions: <a href='{c.science}'>"
             "docs/science.md</a>.</p>",
             "<div class='answer'><b>Answer for this study</b> (every number below is computed from the CSV)."
-            + "".join(findings(c.df, c.notes, study=c.s)) + "</div>", tie_rules()]
+            + "".join(findings(c.df, c.notes, study=c.s)) + "</div>", equivalence_rules(c.s.margin)]
     if c.notes:
         body.append("<div class='note'><b>About this CSV.</b> " + " ".join(html.escape(n) for n in c.notes) + "</div>")
     return "\n".join(body)
@@ -155,8 +179,10 @@ def summary_section(c):
     summary_png, _, _ = summary_chart(c.s, c.charts_dir)
     return figure(c.results, summary_png, f"Every method at every spp level against <code>{html.escape(c.s.primary)}"
                   "</code>: the median over scenes of its error relative to each scene's best at that spp, "
-                  "with its bootstrap interval, against its time; one panel per spp level; the front with ties is "
-                  "numbered and listed. Hollow: flagged or undetermined in at least one scene (kept, counted as is).",
+                  "against its time (mean over scenes); one panel per spp level, its time range shaded. The front "
+                  "(the points no other point beats in both) is numbered and listed, with its 95 % bootstrap "
+                  "interval and &plusmn;2 standard errors of its time. Hollow: heavy-tailed in at least one scene; "
+                  "crosses: the fixed grid (deterministic, ranked like any method).",
                   c.embed, anchor="summary-chart", toc="every method: error vs time")
 
 
@@ -170,7 +196,7 @@ def scenes_section(c):
     ranked = s.ranked[s.ranked["target"].astype(str) == s.primary]
     for scene in s.scenes:
         body.append(scene_section(c.results, scene, c.primary[c.primary["scene"] == scene], c.charts_dir, c.images,
-                                  c.embed, c.spec, ranked[ranked["scene"] == scene]))
+                                  c.embed, c.spec, ranked[ranked["scene"] == scene], s.margin))
     return "\n".join(body)
 
 
@@ -197,10 +223,11 @@ def engineering_section(c):
 # (an <h2 id=...> heading and its content) is one line here; the table of contents follows its anchors.
 SECTIONS = [
     header_section,
+    answer_section,  # the answer at a glance, from answer.csv
     gallery_section,
     findings_section,
-    lambda c: targets_section(c.s, c.science),
     summary_section,
+    tradeoff_section,  # per target: noise + aliasing against blur, every filter over its radii
     motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
@@ -211,14 +238,15 @@ SECTIONS = [
 ]
 
 
-def build_report(results, study, charts_dir=None, images=None, label=None, embed=False, draw=True):
-    """Writes RESULTS/index.html (and engineering.html, and docs/*.html: the definitions rendered); returns the
-    index path. Raises errors.InputError."""
+def build_report(results, study, charts_dir=None, images=None, label=None, embed=False, draw=True, margin=None):
+    """Writes RESULTS/index.html and RESULTS/answer.csv (and engineering.html, and docs/*.html: the definitions
+    rendered); margin: the margin of equivalence (default stats/effect.MARGIN); returns the index path. Raises
+    errors.InputError."""
     df, notes = study_csv.load_study(study)
     study_csv.require_finite_errors(df, study)  # findings need at least one error to rank
     charts_dir = charts_dir or os.path.join(results, "charts")
     images = images or os.path.join(os.path.dirname(os.path.abspath(study)), "images")
-    s = Study(df, notes)
+    s = Study(df, notes) if margin is None else Study(df, notes, margin)
     primary = s.rows()  # the charts and scene sections: the primary target's rows
     if draw:
         charts.draw_all(primary, charts_dir)
@@ -229,5 +257,6 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     c = Context(results, study, df, notes, s, primary, charts_dir, images, embed,
                 html.escape(science), study_label(study, label, is_quick(facts_of(df))))
     c.spec = spectra.load(study)
+    c.answer_path = answer_csv.write(s.answer, results)
     body = [part for part in (section(c) for section in SECTIONS) if part]
     return write_page(os.path.join(results, "index.html"), f"aliaslab report: {c.name}", "\n".join(body), toc=True)

@@ -25,7 +25,7 @@ def method_image(images, scene, r):
     return None
 
 
-TABLE_TOP = 5  # rows of the top group listed per spp level (the rest counted)
+TABLE_TOP = 5  # rows equivalent to the best listed per spp level (the rest counted)
 
 
 def error_cell(r):
@@ -36,28 +36,30 @@ def error_cell(r):
 
 
 def standing(r):
-    if bool(r.get("deterministic", False)):
-        return "fixed grid: not ranked"
+    """The row against the scene's best: ratio, interval and verdict (stats/effect.py)."""
     if r["best"]:
-        return "best"
-    mark = "paired" if r["paired"] else "independent"
-    z = f"z = {r['gap_z']:.2g}" if np.isfinite(r["gap_z"]) else "se unknown"
-    return ("tied" if r["top"] else "undetermined" if r["undetermined"] else "worse") + f" ({z}, {mark})"
+        return "best" + (" (deterministic)" if bool(r.get("deterministic", False)) else "")
+    if not np.isfinite(r["ratio"]):
+        return "undetermined"
+    how = {"bootstrap": "; heavy-tailed, bootstrap over seeds", "linear": "; error not told from zero"}
+    return (f"{r['ratio']:.3g}x [{r['ci_low']:.3g}-{r['ci_high']:.3g}] {r['verdict']}"
+            + how.get(r["interval"], ""))
 
 
-def scene_table(sd, ranked=None):
-    """HTML table of the scene's top group at each spp level (stats/ties.py), with their terms; the fixed
-    grid's best row beside it, marked deterministic; flagged rows marked."""
-    from ..stats import rankings
-    ranked = rankings.cells(sd) if ranked is None else ranked
+def scene_table(sd, ranked=None, margin=None):
+    """HTML table of the rows equivalent to the scene's best at each spp level (stats/effect.py), with their
+    terms; the fixed grid's best row beside them, with its verdict; flagged rows marked."""
+    from ..stats import effect, equivalence
+    margin = effect.MARGIN if margin is None else margin
+    ranked = equivalence.per_scene(sd, margin) if ranked is None else ranked
     terms = components(sd)
     extra = [(c, l) for c, l in (("blurred_mse", "blurred mse"), ("flip", "FLIP"),
                                  ("lowfreq_error", "low-frequency share &plusmn; se"),
                                  ("mean_spp", "mean spp spent")) if c in sd.columns]
     rows = []
     for spp, g in ranked.groupby("spp", sort=True):
-        top = g[g["top"]].sort_values("error")
-        det = g[g["deterministic"].astype(bool)] if "deterministic" in g.columns else g.iloc[0:0]
+        top = g[g["verdict"] == effect.EQUIVALENT].sort_values("ratio")
+        det = g[g["deterministic"].astype(bool) & ~g.index.isin(top.head(TABLE_TOP).index)]
         shown = [r for _, r in top.head(TABLE_TOP).iterrows()] + [r for _, r in det.nsmallest(1, "error").iterrows()]
         for r in shown:
             name = html.escape(method_name(r)) + (" <i>(flagged)</i>" if r["flagged"] == 1 else "")
@@ -76,12 +78,13 @@ def scene_table(sd, ranked=None):
             cells.append(f"{r['cost']:.3g}" + (f" &plusmn; {r['cost_se']:.1g}" if np.isfinite(r["cost_se"]) else ""))
             rows.append("<tr>" + "".join(f"<td>{c}</td>" for c in cells) + "</tr>")
         if len(top) > TABLE_TOP:
-            rows.append(f"<tr><td colspan='4'>and {len(top) - TABLE_TOP} more tied at {int(spp)} spp</td></tr>")
-    head = (["method", "spp", "error &plusmn; se", "against the best"] + [html.escape(l) for _, l in terms]
-            + [l for _, l in extra] + ["time (ms)"])
-    return ("<p>The top group at each spp level (not significantly worse than the best; the fixed grid, "
-            "deterministic, beside it):</p><table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>"
-            + "".join(rows) + "</table>")
+            rows.append(f"<tr><td colspan='4'>and {len(top) - TABLE_TOP} more equivalent at {int(spp)} spp</td></tr>")
+    head = (["method", "spp", "error &plusmn; se", "against the best: ratio [95 %], verdict"]
+            + [html.escape(l) for _, l in terms] + [l for _, l in extra] + ["time (ms)"])
+    return (f"<p>At each spp level the methods equivalent to the scene's best (within {100 * margin:g} %, the "
+            "interval's upper end below the margin), and the fixed grid's best row (deterministic, ranked like any "
+            "method). The rows share this scene's references; the interval counts their part for both rows.</p>"
+            "<table><tr>" + "".join(f"<th>{h}</th>" for h in head) + "</tr>" + "".join(rows) + "</table>")
 
 
 def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
@@ -173,9 +176,9 @@ def scene_notes(images, spec):
     return "".join(f"<p class='note'>{n}</p>" for n in notes)
 
 
-def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None):
+def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ranked=None, margin=None):
     s = figures.slug(scene)
-    parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd, ranked)]
+    parts = [f"<h3 id='scene-{html.escape(s)}'>{html.escape(scene)}</h3>", scene_table(sd, ranked, margin)]
 
     def chart(kind, caption, toc=None):
         return figure(page_dir, os.path.join(charts_dir, f"{kind}_{s}.png"), caption, embed,
@@ -183,13 +186,18 @@ def scene_section(page_dir, scene, sd, charts_dir, images, embed, spec=None, ran
     parts.append(chart("decomposition", "Where the error comes from: noise, aliasing and blur stacked, the cross "
                        "term hatched (negative terms left of 0), the total with &plusmn;2 standard errors.",
                        "decomposition"))
-    parts.append(chart("radius", "The radius trade-off per filter: a wider filter lowers noise (dashed) and "
-                       "adds blur (dotted); one y range for all panels; degenerate points (weight sums near zero) "
-                       "at the top edge, in red.", "radius trade-off"))
+    parts.append(chart("radius", "Error (solid), noise (dashed) and blur (dotted) against the radius, one panel "
+                       "per filter. The radius is each kernel's width: every shape is stretched or squeezed to it, "
+                       "so below a filter's natural radius (box 0.5, tent 1, gaussian 1.5, mitchell, catmullrom and "
+                       "blackmanharris 2, lanczos and hann 3) the kernel is a squeezed copy of itself (Lanczos and "
+                       "Hann at r &le; 2: a three-lobe sinc in less than three pixels, sharper and with deeper "
+                       "negative lobes), not a narrower window of the same kernel. Noise and blur then need not "
+                       "move the usual way with r. One y range for all panels; degenerate points (weight sums near "
+                       "zero) at the top edge, in red.", "radius trade-off"))
     parts.append(chart("convergence", "Convergence with spp (slopes only over at least three spp levels)."))
-    parts.append(chart("speed_accuracy", "Error against the target vs time per image; the front with ties "
-                       "(a point leaves it only when another is significantly better and not significantly "
-                       "slower) is numbered and listed; hollow: flagged; crosses: the fixed grid (deterministic).",
+    parts.append(chart("speed_accuracy", "Error against the target vs time per image; the front (the points no "
+                       "other point beats in both error and time) is numbered and listed; hollow: flagged; "
+                       "crosses: the fixed grid (deterministic, ranked like any method).",
                        "error vs time"))
     parts.append(chart("heatmap", "Error over sampler x filter x radius, one panel per spp level; degenerate cells "
                        "(weight sums near zero) hatched and kept out of the colour scale.", "heatmap"))

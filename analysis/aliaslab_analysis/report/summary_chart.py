@@ -1,14 +1,17 @@
 """The one chart of the findings: every method at every spp level against the primary target, its median
 (over scenes) error relative to each scene's best with the bootstrap interval, against its time; the front
-with ties (stats/fronts.summary_front_mask) numbered and listed below. No method is dropped: a method
-flagged or undetermined in some scene is drawn hollow, the fixed grid (deterministic, not ranked) as a cross;
-a median at or below 0 is drawn at the bottom edge as a down triangle."""
+(stats/fronts.summary_points: no point beaten in both) numbered and listed below, each front point with its
+time spread (+-2 standard errors, horizontal), and each panel's time range shaded with the spread of its
+extremes written in (stats/fronts.cost_by_spp). No method is dropped: a method heavy-tailed in some scene is
+drawn hollow, the fixed grid (deterministic, ranked like any method) as a cross; a median at or below 0 is
+drawn at the bottom edge as a down triangle."""
 import os
 
 import matplotlib.ticker
 import numpy as np
 
 from .. import figures, palette
+from ..stats import fronts
 from ..charts import axes
 from ..figures import plt
 from .findings import method_name
@@ -61,7 +64,8 @@ def summary_chart(s, out_dir):
     cap = max(10.0, CAP_FACTOR * front_top)
     above = g["median_ratio"] > cap
     g["y"] = np.where(pos, np.minimum(g["median_ratio"], cap), floor)
-    g["hollow"] = (g["flagged"] > 0) | (g["undetermined"] > 0)
+    g["hollow"] = g["heavy"] > 0
+    spans = {x["spp"]: x for x in fronts.cost_by_spp(g)}
     front = g[g["front"]].sort_values(["spp", "cost", "median_ratio"])
     fig, panels = layout(len(levels))
     lines = [f"{k}. {method_name(r)}, {int(r['spp'])} spp: x{r['median_ratio']:.3g} "
@@ -73,8 +77,14 @@ def summary_chart(s, out_dir):
         f = front[front["spp"] == spp]
         lo = np.clip(f["y"] - f["ci_low"].clip(lower=floor), 0, None)
         hi = np.clip(np.minimum(f["ci_high"], cap * 1.2) - f["y"], 0, None)
-        ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), fmt="none", ecolor="#bbb", lw=0.8, capsize=2,
-                    zorder=1)
+        ax.errorbar(f["cost"], f["y"], yerr=np.vstack([lo, hi]), xerr=2 * f["cost_se"].fillna(0).to_numpy(),
+                    fmt="none", ecolor="#999", lw=0.8, capsize=2, zorder=1)
+        span = spans.get(int(spp))
+        if span:
+            ax.axvspan(span["low"], span["high"], color="#eef3fb", zorder=0)
+            ax.text(0.01, 0.01, f"time {span['low']:.3g}-{span['high']:.3g} ms, spread of the two +-{span['spread']:.2g}"
+                    + (": cost set by spp" if span["set_by_spp"] else ""), transform=ax.transAxes, fontsize=7,
+                    va="bottom", color="#345")
         up = above[h_all.index]
         if up.any():
             ax.scatter(h_all.loc[up, "cost"], np.full(int(up.sum()), cap * 1.15), marker="^", color="grey", s=18,
@@ -109,11 +119,13 @@ def summary_chart(s, out_dir):
     clipped = (f"{int(above.sum())} point(s) above {cap:.3g}x (up to {g['median_ratio'].max():.3g}x) drawn as grey "
                "triangles at the top" if above.any() else "")
     handles = [plt.Line2D([], [], ls="", marker="o", color=colours[x], label=x) for x in samplers]
-    handles.append(plt.Line2D([], [], ls="--", color="k", label="front with ties (numbered)"))
-    handles.append(plt.Line2D([], [], ls="", marker="o", mfc="none", mec="0.3", label="hollow: flagged or\n"
-                              "undetermined in >= 1 scene\n(kept, counted as is)"))
+    handles.append(plt.Line2D([], [], ls="--", color="k", label="front (numbered): no point\nbeats it in both"))
+    handles.append(plt.Line2D([], [], color="#999", label="front: 95 % interval (y),\n+-2 se of time (x)"))
+    handles.append(plt.Line2D([], [], ls="", marker="s", ms=9, color="#eef3fb", label="the panel's time range"))
+    handles.append(plt.Line2D([], [], ls="", marker="o", mfc="none", mec="0.3", label="hollow: heavy-tailed\n"
+                              "in >= 1 scene (kept)"))
     if g["deterministic"].any():
-        handles.append(plt.Line2D([], [], ls="", marker="x", color="0.3", label="cross: deterministic\n(fixed grid, not ranked)"))
+        handles.append(plt.Line2D([], [], ls="", marker="x", color="0.3", label="cross: fixed grid\n(deterministic, ranked)"))
     if (g["median_ratio"] <= 0).any():
         handles.append(plt.Line2D([], [], ls="", marker="v", color="0.3", label="median <= 0 (drawn at the edge)"))
     if (g["prefilter"] != "none").any():
@@ -124,7 +136,7 @@ def summary_chart(s, out_dir):
     shown = lines[:36] + ([f"... {len(lines) - 36} more"] if len(lines) > 36 else [])
     per = max(12, -(-len(shown) // 2))  # two columns
     for c in range(0, len(shown), per):
-        fig.text(0.02 + 0.5 * (c // per), -0.01, ("Front with ties:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
+        fig.text(0.02 + 0.5 * (c // per), -0.01, ("Front:\n" if c == 0 else "\n") + "\n".join(shown[c:c + per]),
                  fontsize=8, va="top", family="monospace")
     fig.suptitle(f"Error against `{s.primary}` vs time: every method at every spp level, all "
                  f"{len(s.scenes)} scenes" + (f"\n{clipped}" if clipped else ""), fontsize=11)
