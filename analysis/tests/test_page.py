@@ -1,6 +1,7 @@
-"""The page of an Interface-3 study (issue 29 items 3, 5, 9): the answer under each target and what holds
-under all, the fixed grid shown as deterministic and the shifted grid explained, the study described from
-its CSV, the other studies in the results folder linked, and the tie rules stated."""
+"""The page of an Interface-3 study (issue 29 items 3, 5, 9; issue 44): the answer table at the top (a column
+per target, read from the answer.csv beside the page) and what holds under all, the trade-off per target, the
+fixed grid ranked as deterministic and the shifted grid explained, the study described from its CSV, the other
+studies in the results folder linked, the rules of the verdicts stated with the margin."""
 import os
 import re
 import tempfile
@@ -30,21 +31,27 @@ class Page(unittest.TestCase):
     def tearDownClass(cls):
         cls.tmp.cleanup()
 
-    def test_the_answer_under_each_target_and_what_holds_under_all(self):
-        section = self.page[self.page.index("id='targets'"):self.page.index("id='scenes'")]
+    def test_the_answer_table_comes_first_with_a_column_per_target(self):
+        self.assertLess(self.page.index("id='answer'"), self.page.index("id='gallery'"))
+        section = self.page[self.page.index("id='answer'"):self.page.index("id='gallery'")]
         for target in ("box:0.5", "gaussian:1.5", "lanczos:3"):
             self.assertIn(f"<th><code>{target}</code></th>", section)
-            self.assertIn(f"Against <code>{target}</code>", self.page)
-        self.assertIn("<th>under every target</th>", section)
-        self.assertIn("What holds under every target", self.page.replace("what holds", "What holds"))
+            self.assertIn(f"Against <code>{target}</code>", self.page)  # its trade-off section
+            self.assertIn(f"id='tradeoff-chart-{target.replace(':', '-').replace('.', '-')}'", self.page)
+        for spp in (1, 4, 16, 64):
+            self.assertIn(f"<tr><th>{spp} spp</th>", section)
+        self.assertIn("<a href='answer.csv'>answer.csv</a>", section)
+        self.assertTrue(os.path.isfile(os.path.join(self.results, "answer.csv")))
+        self.assertIn("What holds under every target", self.page)
 
     def test_the_fixed_grid_is_deterministic_and_the_shifted_grid_explained(self):
         scenes = self.page[self.page.index("id='scenes'"):self.page.index("id='stability'")]
         fixed = re.findall(r"<tr><td>uniform [^<]*</td><td>\d+</td><td>([^<]*)</td>", scenes)
         self.assertTrue(fixed)
         self.assertTrue(all(cell.endswith("(deterministic)") for cell in fixed), fixed)
-        self.assertIn("uniform-shifted", scenes)
-        self.assertIn("counts it as noise", self.page)
+        self.assertIn("ranked like any method", scenes)
+        self.assertIn("Cranley-Patterson", self.page)
+        self.assertNotIn("lucky or not", self.page)
 
     def test_the_study_is_described_from_its_csv(self):
         self.assertIn("2 scenes at 32 px on the larger side", self.page)
@@ -57,10 +64,12 @@ class Page(unittest.TestCase):
                                     r"references at 4096 spp, targets box:0.5; pre-filtering")
         self.assertNotIn("charts_only", self.page)
 
-    def test_the_tie_rules_are_stated(self):
-        self.assertIn("How ties are decided", self.page)
+    def test_the_rules_and_the_margin_are_stated(self):
+        self.assertIn("How a verdict is reached", self.page)
         self.assertIn("compared paired", self.page)
         self.assertIn("seed 29", self.page)
+        self.assertIn("margin of <b>10 %</b>", self.page)
+        self.assertIn("heavy-tailed", self.page)
 
     def test_contents_gallery_and_lazy_images(self):
         # issue 30 item 5: every entry of the table of contents points at an id of the page; every scene has a card

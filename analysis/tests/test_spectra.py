@@ -81,7 +81,7 @@ class WithSpectra(unittest.TestCase):
         for link in links(self.page):
             if link.startswith(("#", "http")):
                 continue
-            self.assertTrue(os.path.isfile(os.path.join(self.results, link)), link)
+            self.assertTrue(os.path.isfile(os.path.join(self.results, link.split("#")[0])), link)
 
     def test_chart_is_nonempty_png(self):
         spec = spectra.load(self.csv)

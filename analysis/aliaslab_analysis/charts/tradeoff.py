@@ -36,7 +36,8 @@ def points(per, target, spp, sampler):
             & (per["prefilter"].astype(str) == "none")]
     best = r["error"].to_numpy(dtype=float) / r["ratio"].to_numpy(dtype=float)
     with np.errstate(divide="ignore", invalid="ignore"):
-        r = r.assign(x=r["blur"].to_numpy(dtype=float) / best, y=r["mse"].to_numpy(dtype=float) / best)
+        blur = r["blur"] if "blur" in r.columns else r["blur_cross"]  # older CSVs: blur with the cross term
+        r = r.assign(x=blur.to_numpy(dtype=float) / best, y=r["mse"].to_numpy(dtype=float) / best)
     r = r[np.isfinite(r["x"]) & np.isfinite(r["y"])]
     return r.groupby(["filter_name", "radius"], sort=True).agg(x=("x", "median"), y=("y", "median")).reset_index()
 
