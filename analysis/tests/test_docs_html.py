@@ -34,5 +34,22 @@ class DocsFolder(unittest.TestCase):
         self.assertEqual(copies, ["results/docs"])
 
 
+class Rendered(unittest.TestCase):
+    def test_no_formula_becomes_a_link(self):
+        """Markdown reads `P[e_k](rho)` as a link to "rho" unless it is code (issue 44): no rendered definition
+        links to a target that is neither a page, an anchor nor a file of the repository."""
+        import re
+        for name in sorted(os.listdir(os.path.join(REPO, "docs"))):
+            if not name.endswith(".md"):
+                continue
+            with open(os.path.join(REPO, "docs", name), encoding="utf-8") as f:
+                page = docs_html.to_html(f.read())
+            for href in re.findall(r"href=['\"]([^'\"]+)['\"]", page):
+                target = href.split("#")[0]
+                if not target or "://" in href:
+                    continue
+                self.assertTrue(os.path.exists(os.path.join(REPO, "docs", target)), f"{name}: link to {href}")
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -148,6 +148,32 @@ class Recomputed(unittest.TestCase):
         self.assertIn("uniform-shifted", text)
         self.assertIn("deterministic", text)
 
+    def test_the_fixed_grids_alignment_columns_are_shown_and_recomputed(self):
+        """A CSV with the align_* columns on its fixed-grid rows (K camera offsets: here the mean over them is
+        1.5x the centred alignment's error, sd 20 % of it): the grid finding states them and they are recomputed;
+        the scene tables show them beside the grid."""
+        import pandas as pd
+        from ..aliaslab_analysis.report.scene import scene_table
+        with tempfile.TemporaryDirectory() as tmp:
+            path = interface3.convert(synthetic.write(os.path.join(tmp, "o.csv")), os.path.join(tmp, "n.csv"))
+            d = pd.read_csv(path, keep_default_na=False, dtype=str)
+            grid = d["deterministic"] == "1"
+            err = pd.to_numeric(d["mse_target"])
+            d["align_offsets"] = np.where(grid, "8", "")
+            d["align_mse_target"] = np.where(grid, (1.5 * err).map(repr), "")
+            d["align_mse_target_sd"] = np.where(grid, (0.3 * err).map(repr), "")
+            d["align_mse_target_se"] = np.where(grid, (0.3 * err / np.sqrt(8)).map(repr), "")
+            d.to_csv(path, index=False)
+            found = self.check(path)
+            df, _ = study_csv.load_study(path)
+            table = scene_table(df[(df["scene"] == "a") & (df["target"] == "box:0.5")])
+        text = next(f for f in found if f.key == "grid").text
+        self.assertIn("over 8 camera offsets (references moved with the camera) its mean error is 1.5x the centred",
+                      text)
+        self.assertIn("spread 20 %", text)
+        self.assertIn("over 8 camera offsets: mean", table)
+        self.assertIn("(1.5x this alignment)", table)
+
     def test_a_prefiltered_study(self):
         with tempfile.TemporaryDirectory() as tmp:
             found = self.check(synthetic.write(os.path.join(tmp, "p.csv"), prefilter=True))

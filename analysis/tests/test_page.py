@@ -87,6 +87,13 @@ class Page(unittest.TestCase):
         imgs = re.findall(r"<img [^>]*>", self.page)
         self.assertTrue(imgs)
         self.assertTrue(all("loading='lazy'" in i for i in imgs if "src=" in i), imgs[:3])
+        # issue 44: every image has its size, so the page does not jump while they load
+        sized = [re.search(r"width='(\d+)' height='(\d+)'", i) for i in imgs if "src=" in i]
+        self.assertTrue(all(sized), [i for i, m in zip(imgs, sized) if not m][:3])
+        with open(os.path.join(self.results, "charts", "summary_error_time.png"), "rb") as f:
+            head = f.read(24)
+        w, h = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+        self.assertIn(f"summary_error_time.png' width='{w}' height='{h}'", self.page)
 
 
 if __name__ == "__main__":

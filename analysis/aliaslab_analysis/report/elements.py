@@ -56,6 +56,25 @@ def image_src(page_dir, path, embed):
     return html.escape(os.path.relpath(path, page_dir).replace(os.sep, "/"))
 
 
+def png_size(path):
+    """(width, height) of a PNG from its IHDR chunk, or None when the file is not a PNG: the page's <img> tags
+    carry them, so that the page keeps its layout while the images load."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(24)
+    except OSError:
+        return None
+    if len(head) < 24 or not head.startswith(b"\x89PNG\r\n\x1a\n") or head[12:16] != b"IHDR":
+        return None
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
+def size_attributes(path):
+    """" width='W' height='H'" of a PNG, or ''."""
+    size = png_size(path)
+    return f" width='{size[0]}' height='{size[1]}'" if size else ""
+
+
 def plain(caption):
     """A caption's text without its tags, for alt text."""
     import re
@@ -70,7 +89,8 @@ def figure(page_dir, path, caption, embed, cls="", anchor=None, toc=None):
     ident = f" id='{html.escape(anchor)}'" if anchor else ""
     entry = f" data-toc='{html.escape(toc)}'" if toc and anchor else ""
     link = f"<a class='anchor' href='#{html.escape(anchor)}' title='link to this chart'>#</a>" if anchor else ""
-    return (f"<figure class='{cls}'{ident}{entry}><img src='{image_src(page_dir, path, embed)}' loading='lazy' "
+    return (f"<figure class='{cls}'{ident}{entry}><img src='{image_src(page_dir, path, embed)}'{size_attributes(path)} "
+            "loading='lazy' "
             f"decoding='async' alt='{html.escape(plain(caption))}'><figcaption>{caption}{link}</figcaption></figure>")
 
 

@@ -72,7 +72,8 @@ def gallery(cards):
     out = []
     for anchor, title, src, text, magnified in cards:
         px = " class='px'" if magnified else ""
-        pic = (f"<img{px} src='{html.escape(src)}' loading='lazy' alt='{html.escape(title)}'>" if src
+        pic = (f"<img{px} src='{html.escape(src)}' width='160' height='160' loading='lazy' "
+               f"alt='{html.escape(title)}'>" if src
                else "<span class='none'>no image in this study</span>")
         out.append(f"<a href='#{html.escape(anchor)}'>{pic}<b>{html.escape(title)}</b><br>{text}</a>")
     return "<div class='gallery'>" + "".join(out) + "</div>"

@@ -35,8 +35,22 @@ def error_cell(r):
     return f"{r['error']:.3g}" + (f" &plusmn; {se:.1g}" if np.isfinite(se) else "")
 
 
+def alignment(r):
+    """The fixed grid's error over K sub-pixel camera offsets (align_* columns), when the CSV has it."""
+    a = r.get("align_mse_target", np.nan)
+    if not bool(r.get("deterministic", False)) or not np.isfinite(a):
+        return ""
+    return (f"; over {int(r['align_offsets'])} camera offsets: mean {a:.3g} &plusmn; {r['align_mse_target_se']:.1g}, "
+            f"sd {r['align_mse_target_sd']:.2g} ({a / r['error']:.3g}x this alignment)")
+
+
 def standing(r):
-    """The row against the scene's best: ratio, interval and verdict (stats/effect.py)."""
+    """The row against the scene's best: ratio, interval and verdict (stats/effect.py); the fixed grid's
+    alignment beside it."""
+    return _standing(r) + alignment(r)
+
+
+def _standing(r):
     if r["best"]:
         return "best" + (" (deterministic)" if bool(r.get("deterministic", False)) else "")
     if not np.isfinite(r["ratio"]):
