@@ -159,8 +159,11 @@ def across(per, margin=MARGIN):
             idx = np.random.default_rng(29).integers(0, len(v), size=(2000, len(v)))
             m = np.median(v[idx], axis=1)
             lo, hi = float(np.quantile(m, 0.025)), float(np.quantile(m, 0.975))
-        out[gk] = (med, lo, hi, verdict(lo, hi, n_heavy > 0, margin), n_heavy, len(v),
-                   sum(1 for x in rs if x[3] == "equivalent"))
+        n_eq = sum(1 for x in rs if x[3] == "equivalent")
+        v_all = verdict(lo, hi, n_heavy > 0, margin)
+        if v_all == "equivalent" and n_eq < len(v) / 2:  # equivalent in fewer than half of its scenes
+            v_all = "undetermined"
+        out[gk] = (med, lo, hi, v_all, n_heavy, len(v), n_eq)
     return out
 
 

@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis.stats import effect, student, tails
+from ..aliaslab_analysis.stats import effect, equivalence, student, tails
 
 K = 8
 
@@ -37,6 +37,12 @@ class Verdicts(unittest.TestCase):
         self.assertEqual(effect.verdict(1.05, 1.15, 0.10), effect.UNDETERMINED)
         self.assertEqual(effect.verdict(0.9, 1.05, 0.10, heavy=True), effect.UNDETERMINED)
         self.assertEqual(effect.verdict(1.04, 1.06, 0.02), effect.WORSE)  # the margin is a parameter
+
+    def test_across_scenes_equivalent_needs_half_the_scenes_and_no_heavy_tail(self):
+        self.assertEqual(equivalence.verdict(1.0, 1.05, 0.10, 0, 1, 2), effect.EQUIVALENT)
+        self.assertEqual(equivalence.verdict(1.0, 1.05, 0.10, 0, 0, 2), effect.UNDETERMINED)
+        self.assertEqual(equivalence.verdict(1.0, 1.05, 0.10, 1, 2, 2), effect.UNDETERMINED)
+        self.assertEqual(equivalence.verdict(1.2, 1.5, 0.10, 0, 0, 2), effect.WORSE)
 
     def test_rows_at_095_105_and_12_against_a_comparator(self):
         cell = pd.DataFrame([row("ref", tight(1.0, self.rng)), row("a", tight(0.95, self.rng)),

@@ -79,7 +79,8 @@ class Page(unittest.TestCase):
 
     def test_the_table_of_contents_points_at_the_page(self):
         ids = self.js("return Array.from(document.querySelectorAll('nav.toc a')).map(a => a.hash.slice(1));")
-        for required in ("findings", "scenes", "scene-zoneplate", "scene-fence", "heatmap-fence", "gallery"):
+        for required in ("answer", "findings", "tradeoff", "scenes", "scene-zoneplate", "scene-fence", "heatmap-fence",
+                         "gallery"):
             self.assertIn(required, ids)
         for i in ids:
             self.assertTrue(self.js("return document.getElementById(arguments[0]) !== null;", i), i)
@@ -88,6 +89,31 @@ class Page(unittest.TestCase):
         top = self.js("return document.querySelector('nav.toc').getBoundingClientRect().top;")
         self.assertGreaterEqual(top, -1)
         self.assertLess(top, 50)
+
+    def test_the_answer_table_and_the_trade_off_charts_open(self):
+        """Issue 44: the answer at a glance is a table near the top of the page (a row per spp level, a column per
+        target, read from the answer.csv beside the page), the rules name the margin, and every target's trade-off
+        chart decodes; screenshots of both go to ARTIFACTS (answer-table.png, tradeoff.png)."""
+        from selenium.webdriver.common.by import By
+        table = self.driver.find_element(By.CSS_SELECTOR, "table.answer-table")
+        self.assertLess(self.js("return arguments[0].getBoundingClientRect().top + window.scrollY;", table), 1800)
+        self.assertEqual(self.js("return arguments[0].querySelectorAll('tr').length;", table), 3)  # head, 4, 16 spp
+        targets = self.js("return arguments[0].querySelectorAll('th code').length;", table)
+        self.assertEqual(targets, 2)
+        self.assertGreater(self.js("return arguments[0].querySelectorAll('.samplers').length;", table), 3)
+        self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(self.page), "answer.csv")))
+        self.assertIn("margin of 10 %", self.js("return document.getElementById('rules').textContent;"))
+        browser.screenshot(self.driver, os.path.join(ARGS.artifacts, "answer-table.png"),
+                           self.js("return arguments[0].getBoundingClientRect().top + window.scrollY - 60;", table))
+        charts = self.driver.find_elements(By.CSS_SELECTOR, "figure[id^='tradeoff-chart-'] img")
+        self.assertEqual(len(charts), targets)
+        for img in charts:
+            self.js("arguments[0].scrollIntoView();", img)
+            self.assertGreater(self.js("return arguments[0].naturalWidth;", img), 100)
+        browser.screenshot(self.driver, os.path.join(ARGS.artifacts, "tradeoff.png"),
+                           self.js("return document.getElementById('tradeoff').getBoundingClientRect().top "
+                                   "+ window.scrollY;"))
+        self.js("window.scrollTo(0, 0);")
 
     def test_the_gallery_links_every_scene(self):
         links = self.js("return Array.from(document.querySelectorAll('.gallery a')).map(a => a.hash);")

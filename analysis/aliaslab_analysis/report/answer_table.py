@@ -43,7 +43,7 @@ def cell(picks, lead, target, spp, present, n_scenes):
     ctl = []
     for c in CONTROLS:
         p = picks[(picks["target"] == target) & (picks["spp"] == spp) & (picks["sampler"] == c)]
-        if len(p):
+        if len(p) and c not in set(rows["sampler"]):
             ctl.append(f"{c} {p.iloc[0]['median_ratio']:.3g}x")
     if ctl:
         ctl[0] = "vs best: " + ctl[0]
@@ -64,7 +64,7 @@ def answer_table(path, targets, levels, present, n_scenes, margin, science):
             f"<p class='note'>Each cell: the samplers within <b>{100 * margin:g} %</b> of each scene's best error (the "
             f"margin of equivalence, <code>report --margin</code>) in at least half of the {n_scenes} scenes, each at "
             "its best filter and radius (below them); <b>bold</b>: equivalent across scenes (the 95 % bootstrap "
-            "interval of its median ratio lies below the margin); k/n: the scenes where it is equivalent; a family is "
+            "interval of its median ratio lies below the margin, and it is equivalent in at least half of them); k/n: the scenes where it is equivalent; a family is "
             "named when all of its samplers lead (hover for them). Last line: jittered and random at their own best, "
             "their median error over each scene's best. The rows compared in a scene share its references: their "
             f"part of the error is counted for both rows of a ratio (conservative). Rules: <a href='{science}"

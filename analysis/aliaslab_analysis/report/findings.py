@@ -23,8 +23,9 @@ def equivalence_rules(margin):
             f"{tails.SHARE_FACTOR:g}x an equal share of its summed error: its interval is then a bootstrap over "
             f"seeds ({effect.N_BOOT} resamples, seed {effect.BOOT_SEED}) and it is never equivalent. Across scenes a "
             "method's median ratio comes with a 95 % bootstrap interval over scenes "
-            f"({bootstrap.N_BOOT} resamples, seed {bootstrap.SEED}), judged by the same rule, and the number of "
-            "scenes where it is equivalent. A sampler is judged at its best filter and radius (its lowest median); "
+            f"({bootstrap.N_BOOT} resamples, seed {bootstrap.SEED}), judged by the same rule (equivalent across "
+            "scenes also needs equivalence in at least half of them), and the number of scenes where it is "
+            "equivalent. A sampler is judged at its best filter and radius (its lowest median); "
             "the leading samplers are those equivalent across scenes or in at least half of them; a family "
             f"({', '.join(f'{k}: {chr(44).join(v)}' for k, v in factors.FAMILIES.items())}) is named when all of it "
             "leads. A point is on a front when no other point has both a lower error and a lower time.</p>")

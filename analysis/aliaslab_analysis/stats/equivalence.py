@@ -8,8 +8,10 @@ its scene's best, its 95 % interval, heavy_tailed and its verdict.
 across(per, margin) gives per (target, spp, method): `scenes` (scenes with a ratio), `equivalent`, `worse`,
 `undetermined` and `heavy` (scenes with that verdict or flag), the median ratio over the scenes and its 95 %
 percentile bootstrap interval over scenes (bootstrap.py: 2000 resamples, seed 29), and a verdict by the same
-rule as in one scene applied to that interval; a method heavy-tailed in any scene is never equivalent across
-scenes. The scenes' own intervals do not enter: the spread between scenes dominates.
+rule as in one scene applied to that interval, with two more conditions for *equivalent*: the method is
+equivalent in at least half of its scenes (the bootstrap sees only the spread between scenes, not each
+scene's own interval, so a median inside the margin made of undetermined scenes is not enough) and it is
+heavy-tailed in none.
 
 table(per, summary, margin) is answer.csv: one row per target x spp x scope (a scene, or "all") x method.
 """
@@ -36,6 +38,14 @@ def per_scene(df, margin=effect.MARGIN):
     return pd.concat(parts)
 
 
+def verdict(low, high, margin, heavy, equivalent, scenes):
+    """The across-scene verdict (module doc)."""
+    v = effect.verdict(low, high, margin, heavy > 0)
+    if v == effect.EQUIVALENT and 2 * equivalent < scenes:
+        return effect.UNDETERMINED
+    return v
+
+
 def across(per, margin=effect.MARGIN, seed=bootstrap.SEED, n_boot=bootstrap.N_BOOT):
     """Per (target, spp, method): the across-scene record (module doc)."""
     out = []
@@ -51,7 +61,7 @@ def across(per, margin=effect.MARGIN, seed=bootstrap.SEED, n_boot=bootstrap.N_BO
                         scenes=int(fin.sum()), equivalent=int((v == effect.EQUIVALENT).sum()),
                         worse=int((v == effect.WORSE).sum()), undetermined=int((v == effect.UNDETERMINED).sum()),
                         heavy=heavy, median_ratio=med, ci_low=lo, ci_high=hi,
-                        verdict=effect.verdict(lo, hi, margin, heavy > 0)))
+                        verdict=verdict(lo, hi, margin, heavy, int((v == effect.EQUIVALENT).sum()), int(fin.sum()))))
     cols = key + ["deterministic", "scenes", "equivalent", "worse", "undetermined", "heavy", "median_ratio",
                   "ci_low", "ci_high", "verdict"]
     t = pd.DataFrame(out, columns=cols)
