@@ -14,7 +14,8 @@ Layout, a concept a module:
   degenerate.py      the rule that marks degenerate configurations (weight sums near zero) on the charts
   charts/            the study's charts, one module per chart family (the `charts` command)
   study_rows.py      the columns of issue 29 load_study adds (deterministic, cost, per-seed values), the targets
-  stats/             tie groups (paired within a sample set), rankings across scenes, fronts with ties
+  stats/             effect sizes and a margin of equivalence (paired within a sample set), heavy tails, the
+                     answer by factor, strict fronts of error against time
   findings/          the findings generated from a study: numbers (claims) and text, for the page and README
   report/            the HTML report: findings, scene sections, page assembly, Markdown (`report`)
   spectra.py         the error spectra beside a study CSV, read and drawn (for the report)

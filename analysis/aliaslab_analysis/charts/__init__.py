@@ -14,7 +14,7 @@ Writes into DIR, each as .png (and .svg with --svg):
                           filter, pre-filtered rows (when the CSV has a
                           prefilter column) ringed in black; flagged rows
                           hollow and kept; the fixed grid (deterministic) as
-                          crosses; the front with ties (stats/fronts.py)
+                          crosses; the front (stats/fronts.py: no point beaten in both)
                           numbered, its methods listed beside the chart;
                           error bars +-2 standard errors (mse_target_se)
   decomposition_<scene>   per spp level: the error of the best methods (flagged

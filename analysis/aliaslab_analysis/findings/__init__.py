@@ -7,7 +7,7 @@ compute(df, notes) -> [Finding]. A Finding has a `key`, a `title`, a `text` (Mar
 (analysis/tests/test_findings.py) recompute every claim from the CSV by a separate code path (plain loops
 over csv rows, no pandas groupby) and compare.
 
-  study.py    Study: the loaded rows and what every finding shares (targets, top groups, across-scene
+  study.py    Study: the loaded rows and what every finding shares (targets, verdicts, across-scene
               records), and the finding that says what study this is
   answer.py   the answer under each target by factor: the samplers equivalent to each scene's best (each at
               its best filter and radius, families named), jittered and random against them, what changes

@@ -2,11 +2,11 @@
 
 Usage:
   /usr/bin/python3 -m analysis report RESULTS_DIR [--study CSV] [--charts DIR] [--images DIR]
-                                       [--label TEXT] [--embed] [--reuse-charts]
+                                       [--label TEXT] [--embed] [--reuse-charts] [--margin DELTA]
   /usr/bin/python3 -m analysis report RESULTS_DIR --tables [--study CSV]
   /usr/bin/python3 -m analysis report RESULTS_DIR --findings-md [--study CSV]
 
-Writes RESULTS_DIR/index.html, and RESULTS_DIR/engineering.html when
+Writes RESULTS_DIR/index.html and RESULTS_DIR/answer.csv, and RESULTS_DIR/engineering.html when
 RESULTS_DIR holds benchmark or fuzzing records (*_speed.md, fuzzing.md).
 Defaults: --study RESULTS_DIR/study/study.csv (else RESULTS_DIR/study.csv),
 --charts RESULTS_DIR/charts, --images = the study CSV's folder + /images.
@@ -17,17 +17,24 @@ The page, in order (page.SECTIONS: a section is one line there), beside a sticky
 from its anchors (navigation.py; every scene and every chart has one), click-to-enlarge on every chart:
   0. what study it shows (size, spp, seeds, references, targets; "a quick
      study" when below 256 px or references below 64x its highest spp) and
-     links to the other studies in RESULTS_DIR (each folder with an
-     study CSV: its page, else its CSV; report/studies.py), then the scene
-     gallery (a card per scene: the study's reference image or
-     thumbnails/<scene>.png beside the CSV, and its best method);
+     links to the other studies in RESULTS_DIR (each folder with a study
+     CSV: its page, else its CSV; report/studies.py); then the answer at a
+     glance: a table (a row per spp, a column per target) of the leading
+     samplers, their filter and radius and jittered's and random's error
+     against the best, read from RESULTS_DIR/answer.csv, which the report
+     writes (answer_csv.py, answer_table.py; the margin of equivalence:
+     --margin, default 0.10); then the scene gallery (a card per scene: the
+     study's reference image or thumbnails/<scene>.png beside the CSV, its
+     best method and how many are equivalent to it);
   1. the question and this study's answer, generated from the CSV by the
-     findings package (the top groups per spp under each target, what holds
-     under all targets, the front with ties, equal time, where the error
-     comes from, the grid, flagged rows; every number recomputed by the
-     tests), the tie rules (stats/), the answer per target as a table, and
-     one chart: the median error relative to each scene's best against time,
-     every method kept (flagged hollow, the fixed grid as crosses);
+     findings package (the answer by factor under each target, what changes
+     with spp, what holds under all targets, what sets the cost, the strict
+     front, where the error comes from, the grid, flagged and heavy-tailed
+     rows; every number recomputed by the tests), the rules of the verdicts,
+     one chart (the median error relative to each scene's best against
+     time, every method kept: heavy-tailed hollow, the fixed grid as
+     crosses), and the targets as a trade-off (tradeoff.py: per target,
+     noise plus aliasing against blur for every filter over its radii);
   2. per scene: the decomposition (stacked bars), the radius trade-off, the
      convergence with spp, the error-vs-time chart, the heatmap, the contact
      sheet and the images of the best and the worst method;
@@ -51,8 +58,9 @@ every scene by the error against the target, and the stability counts);
 With several targets in the CSV, the charts and scene sections show the
 primary target (box:0.5 when present, else the CSV's first).
 
-Modules: findings.py (the generated findings as HTML, the tie rules in words), targets_table.py (the
-answer under each target), studies.py (the other studies linked), summary_chart.py (the findings' chart),
+Modules: findings.py (the generated findings as HTML, the rules of the verdicts in words), answer_csv.py
+(answer.csv written and read), answer_table.py (the answer at a glance), targets_table.py (what each target
+favours), tradeoff.py (the targets as a trade-off), studies.py (the other studies linked), summary_chart.py (the findings' chart),
 scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
 markdown.py (--tables' Markdown, the fallback reader), docs_html.py (Markdown to HTML: docs/, engineering.html),
 navigation.py (contents, gallery, lightbox), tables.py (--tables), cli.py (the command).

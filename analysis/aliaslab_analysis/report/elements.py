@@ -22,7 +22,7 @@ td,th{border:1px solid #ccc;padding:2px 6px;text-align:right}th{background:#eee}
 .pair img{width:256px;image-rendering:pixelated}.pair figure.spec img{width:600px;image-rendering:auto}.pair figcaption{max-width:256px}.pair figure.spec figcaption{max-width:600px}nav a{margin-right:.8em}
 details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;padding:0 3px}
 figure img{cursor:zoom-in}figcaption a.anchor{color:#999;text-decoration:none;margin-left:.3em}
-.answer-table td{text-align:left;vertical-align:top;min-width:13em}.answer-table th{vertical-align:top}
+.answer-table td{text-align:left;vertical-align:top;min-width:13em}.answer-table th{vertical-align:top;text-align:left}
 .answer-table .cfg{font-weight:600;color:#245;margin-top:.2em}.answer-table .ctl{color:#555}
 .docs li{margin:.15em 0}.docs td,.docs th{text-align:left}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
 

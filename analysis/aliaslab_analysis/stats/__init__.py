@@ -1,15 +1,20 @@
-"""Statistics of a study's rankings: which methods are tied with the best, across scenes, at equal time
-and on the error-vs-time front (issue 29 item 2). Every rule compares differences with their standard
-errors; none picks a winner by the point estimate alone.
+"""Statistics of a study's answer (docs/science.md "Answers a practitioner can act on"): effect sizes with a
+margin of practical equivalence, heavy tails, the answer by factor, fronts of error against time.
 
-  ties.py       the standard error of the difference of two rows' errors (paired over seeds when the rows
-                share their samples, else independent) and the top group of one (scene, spp, target) cell
-  rankings.py   the top group of every cell, each row's ratio to the cell's best, and per method across
-                scenes: scenes in the top group and a seeded bootstrap interval of its median ratio
-  fronts.py     the error-vs-time front with ties (a point leaves it only when another is significantly
-                better and not significantly slower) and the top groups at equal time
-  bootstrap.py  the seeded bootstrap of a median over scenes
-  flags.py      why a flagged row is flagged: unstable (heavy-tailed) or reference-limited
-The rules and their constants (Z, the bootstrap's seed and size) are stated in each module's doc and on
-the page.
+  student.py      Student's t (cdf, quantile, Welch-Satterthwaite) without scipy
+  tails.py        the heavy-tail rule: the largest seed carries more than twice an equal share of the error
+  effect.py       per cell (target, scene, spp): each row's ratio to the best with a 95 % interval (t on the
+                  log ratio, paired within a sample set; a bootstrap over seeds for heavy-tailed rows) and its
+                  verdict at the margin: equivalent, worse or undetermined
+  equivalence.py  every cell's effects, the across-scene records (median ratio, bootstrap over scenes, scenes
+                  equivalent) and answer.csv's table
+  factors.py      the answer by factor: each sampler at its best filter and radius, the leading samplers and
+                  families, each filter at its best radius
+  fronts.py       strict Pareto fronts of error against time, per scene and across scenes; cost set by spp
+  bootstrap.py    the seeded bootstrap of a median over scenes
+  flags.py        why a flagged row is flagged: unstable or reference-limited
+  ties.py         the standard error of a paired or independent difference and tie groups (the motion section)
+  rankings.py     the columns naming a method and a cell
+The constants (the margin, the bootstrap seeds and sizes, the heavy-tail factor) are stated in each module's
+doc and on the page.
 """
