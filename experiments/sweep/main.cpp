@@ -136,6 +136,9 @@ int main(int argc, char** argv) {
                   p.trace, p.splat, p.resolve, p.flip, p.metrics, p.setup, p.finish, p.waiting, p.references, p.io);
       if (c.frames > 1) std::printf("frames: %.1f s of the frames pass (%d frames per seed)\n", p.motion, c.frames);
     }
+    if (const SweepPhases& p = s.phases; p.refTrace + p.refSplat + p.refResolve > 0)  // references rendered here
+      std::printf("references' thread-seconds: trace %.1f, splat %.1f, resolve %.1f (splat / trace %.2f)\n",
+                  p.refTrace, p.refSplat, p.refResolve, p.refTrace > 0 ? p.refSplat / p.refTrace : 0.0);
     if (c.refsOnly)
       std::printf("references ready in %s (%.1f s)\n", c.cache.c_str(), s.seconds);
     return 0;

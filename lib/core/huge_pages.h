@@ -16,6 +16,8 @@
 #pragma once
 #include <cstddef>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 namespace aliaslab {
 
@@ -45,6 +47,26 @@ struct HugePageAllocator {
   bool operator==(const HugePageAllocator<U>&) const noexcept { return true; }
   template <class U>
   bool operator!=(const HugePageAllocator<U>&) const noexcept { return false; }
+};
+
+/// Huge pages, and construction without arguments leaves a T (an implicit-lifetime type: FilmSample, double)
+/// as the memory holds it, for storage whose owner writes every element before reading it: the sample store
+/// (film/film.h SampleBuffer decides who first writes each sample), the Accumulator's sums (its first batch sets
+/// them) and the metrics' running means (measure/metrics.h: the first image sets them).
+template <class T>
+struct UninitializedAllocator : HugePageAllocator<T> {
+  using value_type = T;
+  template <class U>
+  struct rebind {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template <class U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    if constexpr (sizeof...(Args) > 0 || !std::is_same_v<U, T>) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
 };
 
 }  // namespace aliaslab

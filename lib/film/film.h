@@ -55,25 +55,6 @@ struct FilmSample {
   float weight = 1.f;          ///< importance weight (1 unless filter importance sampling)
 };
 
-/// Huge pages, and construction without arguments leaves a T (an implicit-lifetime type: FilmSample, double)
-/// as the memory holds it, for storage whose owner writes every element before reading it: the sample store
-/// (SampleBuffer decides who first writes each sample) and the Accumulator's sums (its first batch sets them).
-template <class T>
-struct UninitializedAllocator : HugePageAllocator<T> {
-  using value_type = T;
-  template <class U>
-  struct rebind {
-    using other = UninitializedAllocator<U>;
-  };
-  UninitializedAllocator() = default;
-  template <class U>
-  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept {}
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    if constexpr (sizeof...(Args) > 0 || !std::is_same_v<U, T>) ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
-  }
-};
-
 class SampleBuffer {
  public:
   using Storage = std::vector<FilmSample, UninitializedAllocator<FilmSample>>;

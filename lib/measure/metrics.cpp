@@ -41,8 +41,7 @@ MetricAccumulator::MetricAccumulator(RefEstimate reference, std::vector<RefEstim
   if (!reference_.mean) throw std::invalid_argument("MetricAccumulator: no reference image");
   requireEstimate(reference_, *reference_.mean, "MetricAccumulator");
   for (const RefEstimate& t : targets_) requireEstimate(t, *reference_.mean, "MetricAccumulator (target)");
-  mean_.assign(channelCount(*reference_.mean), 0.0);
-  m2_.assign(channelCount(*reference_.mean), 0.0);
+  mean_.resize(channelCount(*reference_.mean)), m2_.resize(channelCount(*reference_.mean));  // (uninitialised)
   sseTarget_.resize(targets_.size());
 }
 
@@ -54,14 +53,21 @@ void MetricAccumulator::add(const Image& image) {
   const size_t n = mean_.size();
   double* mean = mean_.data();
   double* m2 = m2_.data();
-  // Welford update per channel, 4 channels at a time: the same operations per element as one at a time
+  // Welford update per channel, 4 channels at a time: the same operations per element as one at a time. The
+  // first image's step from m = m2 = 0 (the buffers are not initialised) is written out: the same operations.
   const double k = count_;
+  if (count_ == 1) {
+    for (size_t i = 0; i < n; ++i) {
+      const double x = v[i], delta = x - 0.0;
+      mean[i] = 0.0 + delta / k, m2[i] = 0.0 + delta * (x - mean[i]);
+    }
+  }
   auto update = [k](auto x, auto& m, auto& s) {
     const auto delta = x - m;
     m += delta / k;
     s += delta * (x - m);
   };
-  size_t i = 0;
+  size_t i = count_ == 1 ? n : 0;
   for (; i + 4 <= n; i += 4) {
     F4 x;
     D4 m, s;

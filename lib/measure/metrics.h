@@ -28,6 +28,7 @@
 #pragma once
 #include <vector>
 
+#include "core/huge_pages.h"
 #include "core/image.h"
 
 namespace aliaslab {
@@ -84,7 +85,9 @@ class MetricAccumulator {
   std::vector<RefEstimate> targets_;
   int count_ = 0;
   bool identical_ = true;                  ///< every image so far equals the first bit for bit
-  std::vector<double> mean_, m2_;          ///< per pixel and channel
+  /// per pixel and channel; not initialised until the first add() sets them (m = 0 + I_1, m2 = 0: Welford's
+  /// first step bit for bit), so a configuration's start fills no image-sized buffer
+  std::vector<double, UninitializedAllocator<double>> mean_, m2_;
   std::vector<Image> images_;              ///< the K images (for the pair products of C)
   std::vector<std::vector<double>> gram_;  ///< gram_[k][l] = C_kl for l <= k
   std::vector<std::vector<double>> sseTarget_;  ///< [target][seed]: sum of (I_k - T)^2

@@ -61,10 +61,19 @@
 // White noise has lowfreq_error = pi 0.125^2 = 0.049 (the disc's share of
 // the frequency square); error pushed to high frequencies has less.
 //
+// Computed once per configuration's references: the side of G and the targets (the DFTs of G - T, the
+// energies of the half-differences, the per-frequency gains) is a SpectrumReference, made once per (G,
+// targets) and shared by every configuration measured against them. A real image's DFT is conjugate-symmetric,
+// E(-f) = conj E(f), and every weight above depends on rho only, so the accumulator transforms and sums the
+// half plane u = 0 .. W/2 with each frequency counted for itself and its mirror: the same sums as the full
+// plane up to rounding, tolerance in docs/spectrum.md (SpectrumDefinition, measure/spectrum_definition.h, is
+// the full-plane definition the tests hold it to).
+//
 // The study writes these spectra to per-scene CSV files: study/spectrum_files.h.
 #pragma once
 #include <array>
 #include <complex>
+#include <memory>
 #include <vector>
 
 #include "core/image.h"
@@ -113,43 +122,71 @@ struct SpectrumMetrics {
   int images = 0;
 };
 
+/// The references' side of SpectrumAccumulator, made once and read by any number of accumulators (and threads).
+class SpectrumReference {
+ public:
+  /// G and the targets T_j, all the same size. The images are copied or reduced here: they need not outlive it.
+  SpectrumReference(RefEstimate reference, std::vector<RefEstimate> targets);
+  /// The energies of one error image, each frequency of the full plane counted once.
+  struct Energies {
+    double low = 0, total = 0, blurred = 0;
+    std::array<double, kBlurCurve.size()> curve{};  ///< blurred by each sigma of kBlurCurve
+  };
+  /// Per frequency of the half plane (v * halfWidth + u): what its power counts for, itself and its mirror.
+  struct Weights {
+    double low = 0, total = 0, blurred = 0;          ///< multiplicity m (1 or 2) x [rho < cutoff], m, m x gain
+    std::array<double, kBlurCurve.size()> curve{};  ///< m x gain per sigma of kBlurCurve
+  };
+  struct Target {
+    std::vector<std::complex<double>> shift;  ///< per channel and half-plane frequency: DFT(G - T) / (W H)
+    Energies halves;                          ///< of P[D_T]
+  };
+  const Image& image() const { return reference_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+  size_t frequencies() const { return weights_.size(); }  ///< of the half plane
+  const std::vector<Weights>& weights() const { return weights_; }
+  const std::vector<int>& bins() const { return bins_; }  ///< radial bin per half-plane frequency
+  const Energies& own() const { return own_; }            ///< of P[D_G]
+  const RadialSpectrum& ownRadial() const { return ownRadial_; }
+  const std::vector<Target>& targets() const { return targets_; }
+  /// The energies of `image` (and its radial spectrum if `radial`).
+  Energies energies(const Image& image, RadialSpectrum* radial) const;
+
+ private:
+  Image reference_;  ///< a copy (a temporary may be passed)
+  int width_, height_;
+  std::vector<Weights> weights_;
+  std::vector<int> bins_;
+  Energies own_;
+  RadialSpectrum ownRadial_;
+  std::vector<Target> targets_;
+};
+
 class SpectrumAccumulator {
  public:
-  /// G and the targets T_j, all the same size. The images are copied or reduced on construction: they need not
-  /// outlive it.
+  /// G and the targets T_j, all the same size, with a SpectrumReference of its own.
   SpectrumAccumulator(RefEstimate reference, std::vector<RefEstimate> targets);
+  /// Against a shared reference side.
+  explicit SpectrumAccumulator(std::shared_ptr<const SpectrumReference> reference);
   void add(const Image& image);
   /// Needs at least 2 images (for the noise spectrum and the standard error).
   SpectrumMetrics result() const;
 
  private:
-  /// What one error's share and blurred energy need: the energies of a reference's half-difference.
-  struct Energies {
-    double low = 0, total = 0, blurred = 0;
-    std::array<double, kBlurCurve.size()> curve{};  ///< blurred by each sigma of kBlurCurve
-  };
-  struct TargetState {
-    std::vector<std::complex<double>> shift;  ///< per channel and frequency: DFT(G - T) / (W H)
-    Energies halves;                          ///< of P[D_T]
-    std::vector<double> lowFractions;         ///< f_k against T
-    double blurred = 0;                       ///< sum over k of the blurred energy of I_k - T
+  struct TargetSums {
+    std::vector<double> lowFractions;                           ///< f_k against T
+    double blurred = 0;                                         ///< sum over k of the blurred energy of I_k - T
     std::vector<std::array<double, kBlurCurve.size()>> ratios;  ///< r_k per sigma against T
   };
-  Energies energies(const Image& image, RadialSpectrum* radial) const;
-  double share(double low, double total, const Energies& ref) const;
-
-  Image reference_;  ///< a copy (a temporary may be passed)
-  int width_, height_;
-  std::vector<double> radius_;                      ///< rho per frequency
-  std::vector<double> gain_;                        ///< blurGain(rho) per frequency (computed once)
-  std::vector<std::array<double, kBlurCurve.size()>> curveGain_;  ///< per frequency, per sigma of kBlurCurve
-  std::vector<std::complex<double>> sum_;           ///< per channel and frequency: sum_k E_k / (W H)
-  std::vector<double> sumSquares_;                  ///< per frequency: sum_k P[e_k] (channel mean)
-  std::vector<double> lowFractions_;                ///< f_k
+  std::shared_ptr<const SpectrumReference> ref_;
+  /// per channel and half-plane frequency: sum_k E_k / (W H) as (re, im) pairs; allocated, not initialised, and
+  /// written by the first add() (no zero fill per configuration)
+  std::unique_ptr<double[]> sum_;
+  std::unique_ptr<double[]> sumSquares_;  ///< per half-plane frequency: sum_k P[e_k] (channel mean)
+  std::vector<double> lowFractions_;      ///< f_k
   double blurred_ = 0;
-  Energies own_;                                    ///< of P[D_G]
-  RadialSpectrum ownRadial_;                        ///< P[D_G] binned
-  std::vector<TargetState> targets_;
+  std::vector<TargetSums> targets_;
   int count_ = 0;
 };
 

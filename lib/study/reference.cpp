@@ -16,6 +16,7 @@
 #include "core/hash.h"
 #include "core/format.h"
 #include "core/progress.h"
+#include "core/stopwatch.h"
 #include "film/film.h"
 #include "filter/filter.h"
 #include "measure/metrics.h"
@@ -106,19 +107,26 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
   // Batches k (even, into a) and k + 1 (odd, into b) run as two concurrent tasks, each on half the threads:
   // each half still receives its batches in k order, so the sums are those of the serial loop, bit for bit.
   const int inner = std::max(1, resolveThreads(o.threads) / 2);
+  double traced[2] = {0, 0}, splatted[2] = {0, 0};  // thread-seconds per half (each task writes its own)
   for (int k = 0; k < batches; k += 2) {
     parallelFor(std::min(2, batches - k), std::min(2, resolveThreads(o.threads)), [&](int half) {
       const auto sampler = makeSampler(o.sampler, batch, hashWords(o.seed, k + half));
+      const Stopwatch trace;
       const SampleBuffer samples = traceSamples(*scene.tracer, *sampler, scene.width, scene.height, inner);
+      traced[half] += trace.seconds() * inner;
+      const Stopwatch splat;
       (half ? b : a).add(samples, inner);
+      splatted[half] += splat.seconds() * inner;
     });
     progress.advance(std::min(2, batches - k));
   }
   progress.finish();
 
   // G = (Ga + Gb) / 2 with the variance of that mean as its error.
+  const Stopwatch resolve;
   ReferenceSet set;
   set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
+  set.traceSeconds = traced[0] + traced[1], set.splatSeconds = splatted[0] + splatted[1];
   set.accumulatorBytes = a.bytes() + b.bytes();
   for (size_t i = 0; i < specs.size(); ++i) {
     Reconstruction ra = a.resolve(i), rb = b.resolve(i);
@@ -141,6 +149,7 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
                        "3.4e38?); nothing can be measured against it");
     set.images.push_back(std::move(ref));
   }
+  set.resolveSeconds = resolve.seconds();
   set.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return set;
 }

@@ -77,6 +77,9 @@ struct ReferenceSet {
   std::string sampler;
   uint64_t seed = 0;
   size_t accumulatorBytes = 0;         ///< memory held by the accumulators during the pass
+  /// Thread-seconds of the pass (0 from the cache): tracing the batches, splatting them into every filter's
+  /// two halves, resolving the images (the sweep prints them as the references' phase line).
+  double traceSeconds = 0, splatSeconds = 0, resolveSeconds = 0;
 };
 
 /// Checks the options (OptionError keyed "ref-spp" / "ref-batch" / the factory's "sampler"): the one check of every front end

@@ -94,6 +94,7 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
   ReferenceSet fresh = renderReferences(scene, missing, o);
   set.seconds = fresh.seconds;
   set.accumulatorBytes = fresh.accumulatorBytes;
+  set.traceSeconds = fresh.traceSeconds, set.splatSeconds = fresh.splatSeconds, set.resolveSeconds = fresh.resolveSeconds;
   for (size_t m = 0; m < missing.size(); ++m) {
     ReferenceImage& r = fresh.images[m];
     const std::string exr = (fs::path(cacheDir) / (r.key + ".exr")).string();

@@ -18,12 +18,22 @@ std::vector<RefEstimate> estimates(const std::vector<const ReferenceImage*>& ref
 struct RowMeasure::State {
   MetricAccumulator metrics;
   SpectrumAccumulator spectrum;
-  State(const ReferenceImage& g, const std::vector<const ReferenceImage*>& t)
-      : metrics(estimate(g), estimates(t)), spectrum(estimate(g), estimates(t)) {}
+  State(const ReferenceImage& g, const std::vector<const ReferenceImage*>& t,
+        std::shared_ptr<const SpectrumReference> s)
+      : metrics(estimate(g), estimates(t)), spectrum(std::move(s)) {}
 };
 
+std::shared_ptr<const SpectrumReference> spectrumReference(const ReferenceImage& own,
+                                                           const std::vector<const ReferenceImage*>& targets) {
+  return std::make_shared<const SpectrumReference>(estimate(own), estimates(targets));
+}
+
 RowMeasure::RowMeasure(const ReferenceImage& own, const std::vector<const ReferenceImage*>& targets)
-    : s_(std::make_unique<State>(own, targets)) {}
+    : RowMeasure(own, targets, spectrumReference(own, targets)) {}
+
+RowMeasure::RowMeasure(const ReferenceImage& own, const std::vector<const ReferenceImage*>& targets,
+                       std::shared_ptr<const SpectrumReference> spectrum)
+    : s_(std::make_unique<State>(own, targets, std::move(spectrum))) {}
 
 RowMeasure::~RowMeasure() = default;
 

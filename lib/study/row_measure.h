@@ -24,10 +24,18 @@ struct RowResult {
   SpectrumMetrics spectrum;
 };
 
+/// The spectra's side of G and the targets, as RowMeasure measures against them.
+std::shared_ptr<const SpectrumReference> spectrumReference(const ReferenceImage& own,
+                                                           const std::vector<const ReferenceImage*>& targets);
+
 class RowMeasure {
  public:
   /// `own` = G and `targets` are held by pointer and must outlive this.
   RowMeasure(const ReferenceImage& own, const std::vector<const ReferenceImage*>& targets);
+  /// The same with the spectra's side of G and the targets made once for every configuration of G
+  /// (spectrumReference(own, targets), shared).
+  RowMeasure(const ReferenceImage& own, const std::vector<const ReferenceImage*>& targets,
+             std::shared_ptr<const SpectrumReference> spectrum);
   ~RowMeasure();
   void add(const Image& image);
   /// Needs at least 2 images.

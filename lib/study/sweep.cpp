@@ -187,6 +187,11 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   const std::vector<ReferenceSet> later = config.frames > 1 ? frameReferences(config, *scene, specs,
                                                                               referenceOptions(config))
                                                             : std::vector<ReferenceSet>();
+  auto countReferences = [&p = run.sum.phases](const ReferenceSet& r) {
+    p.refTrace += r.traceSeconds, p.refSplat += r.splatSeconds, p.refResolve += r.resolveSeconds;
+  };
+  countReferences(refs);
+  for (const ReferenceSet& r : later) countReferences(r);
   MotionReferences motion{{&refs}, &specs};
   for (const ReferenceSet& r : later) motion.perFrame.push_back(&r);
   run.sum.phases.references += clock.seconds();

@@ -55,15 +55,31 @@ RowReferences::RowReferences(const ReferenceSet& set, const std::vector<FilterSp
   }
 }
 
+PhaseTime RowReferences::prepareSpectra(const std::vector<const ReferenceImage*>& own, int threads) const {
+  std::vector<const ReferenceImage*> missing;
+  for (const ReferenceImage* g : own)
+    if (!spectra_.count(g) && std::find(missing.begin(), missing.end(), g) == missing.end()) missing.push_back(g);
+  std::vector<std::shared_ptr<const SpectrumReference>> made(missing.size());
+  const PhaseTime t = timedParallelFor(int(missing.size()), threads, 1,
+                                       [&](int i) { made[i] = spectrumReference(*missing[i], measured_); });
+  for (size_t i = 0; i < missing.size(); ++i) spectra_[missing[i]] = std::move(made[i]);
+  return t;
+}
+
 PhaseTime startRows(std::vector<PendingRow>& rows, const RowReferences& refs, int threads) {
-  return timedParallelFor(int(rows.size()), threads, 1, [&](int i) {
+  std::vector<const ReferenceImage*> own;
+  for (PendingRow& p : rows)
+    own.push_back(p.reference = p.mode == ReconMode::Supersample ? &refs.area() : &refs.of(p.filter.spec));
+  const PhaseTime spectra = refs.prepareSpectra(own, threads);
+  PhaseTime rowsTime = timedParallelFor(int(rows.size()), threads, 1, [&](int i) {
     PendingRow& p = rows[i];
-    p.reference = p.mode == ReconMode::Supersample ? &refs.area() : &refs.of(p.filter.spec);
-    p.measure = std::make_unique<RowMeasure>(*p.reference, refs.measured());
+    p.measure = std::make_unique<RowMeasure>(*p.reference, refs.measured(), refs.spectrum(*p.reference));
     p.flipTargets.clear();
     for (size_t j = 0; j < refs.targets(); ++j) p.flipTargets.push_back(&refs.flipTarget(j));
     p.flipSums.assign(refs.targets(), 0.0);
   });
+  rowsTime.work += spectra.work, rowsTime.idle += spectra.idle;
+  return rowsTime;
 }
 
 }  // namespace aliaslab

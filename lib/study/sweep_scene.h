@@ -4,7 +4,7 @@
 // their (filter, radius), of the pixel area and of every target from the cache or renders the missing ones in one
 // pass (study/reference.h), then writes the scene's reference manifest and, with images on, reference-area.png
 // (with refsOnly it stops after the cache). RowReferences is that set as the rows look it up, with each target
-// prepared once for the flip column (read-only, shared by every (seed, row) task). startRows gives each
+// prepared once for the flip column and each G once for the spectra (read-only, shared by every (seed, row) task). startRows gives each
 // configuration of a group its reference (the area for supersample rows) and its RowMeasure against the
 // measured list (the targets in order, then the area when it is not a target), one task per configuration.
 #pragma once
@@ -41,12 +41,19 @@ class RowReferences {
   /// Target j prepared for the flip column.
   const FlipReference& flipTarget(size_t j) const { return *flip_[j]; }
   size_t targets() const { return flip_.size(); }
+  /// Makes the spectra's side (study/row_measure.h spectrumReference) of each of `own` not made yet, on `threads`
+  /// threads (returns the time it took); called by one thread at a time.
+  PhaseTime prepareSpectra(const std::vector<const ReferenceImage*>& own, int threads) const;
+  /// The spectra's side of `own` against measured(), made by prepareSpectra (shared by its configurations).
+  std::shared_ptr<const SpectrumReference> spectrum(const ReferenceImage& own) const { return spectra_.at(&own); }
 
  private:
   std::map<FilterSpec, const ReferenceImage*> of_;
   std::vector<const ReferenceImage*> measured_;
   size_t areaIndex_ = 0;
   std::vector<std::unique_ptr<FlipReference>> flip_;
+  /// per G: the spectra's side, made once for every group of the scene (prepareSpectra)
+  mutable std::map<const ReferenceImage*, std::shared_ptr<const SpectrumReference>> spectra_;
 };
 
 /// Each configuration's reference and measures, one task per row on `threads` threads; returns the phase's time.

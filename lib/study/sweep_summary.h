@@ -23,6 +23,8 @@ struct SweepPhases {
   double references = 0, io = 0;  ///< wall seconds on the main thread (io: waiting for the writer, canonical order)
   double writer = 0;               ///< seconds the writer thread spent on CSV/spectrum lines, overlapped with work
   double motion = 0;               ///< wall seconds of the frames pass (frames > 1, study/sweep_motion.h)
+  /// The references rendered by this run (none from the cache), thread-seconds (study/reference.h ReferenceSet)
+  double refTrace = 0, refSplat = 0, refResolve = 0;
 };
 
 struct SweepSummary {
