@@ -13,6 +13,7 @@
 // |            | exactly one point; in any prefix each 2^-j (3^-j) interval |
 // |            | of x (y) holds floor or ceil of spp / 2^j (spp / 3^j)      |
 // | counts     | any spp >= 1, no warning                                   |
+// | progressive| yes: point i does not depend on spp                        |
 // | use it     | a low-discrepancy pattern that is good at any count, not  |
 // |            | only powers of two.                                        |
 #include <array>
@@ -59,6 +60,7 @@ class HaltonSampler final : public Sampler {
     }
   }
   std::string name() const override { return "halton"; }
+  bool progressive() const override { return true; }
   std::string describe() const override {
     return "halton bases 2,3, random digit permutations, indices 0.." + std::to_string(spp() - 1);
   }

@@ -9,6 +9,8 @@
 // |            | 32-bit patterns from hash(pixelSeed); (u_i, v_i) from       |
 // |            | hash(pixelSeed, i)                                         |
 // | counts     | any spp >= 1, no warning                                   |
+// | bound      | Var <= sigma^2 / (spp - 1) (Owen 1997, Latin hypercube):   |
+// |            | varianceBound spp / (spp - 1), 1 at spp = 1                |
 // | use it     | when 1-D projections matter most (thin horizontal or       |
 // |            | vertical features); 2-D clumping makes it worse than       |
 // |            | jittered on generic edges.                                 |
@@ -35,6 +37,7 @@ class NRooksSampler final : public Sampler {
     }
   }
   std::string name() const override { return "nrooks"; }
+  double varianceBound() const override { return spp() > 1 ? double(spp()) / (spp() - 1) : 1.0; }
   std::string describe() const override {
     return "nrooks: Latin hypercube, " + std::to_string(spp()) + " rows and columns";
   }

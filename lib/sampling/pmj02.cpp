@@ -25,6 +25,8 @@
 // |            | says the net property holds only at powers of two; larger |
 // |            | spp is refused (OptionError): the strata tables grow as    |
 // |            | spp log spp per sequence                                   |
+// | progressive| yes: the pool's sequences are built point by point, so the |
+// |            | first n points are the same at every count >= n            |
 // | use it     | like sobol, with less structure across the pixel grid      |
 // |            | between pool members; construction costs about a second at |
 // |            | the largest spp.                                          |
@@ -157,6 +159,7 @@ class Pmj02Sampler final : public Sampler {
     for (int i = 0; i < spp(); ++i) out[i] = Vec2(fixedToUnit(seq[i].x ^ maskX), fixedToUnit(seq[i].y ^ maskY));
   }
   std::string name() const override { return "pmj02"; }
+  bool progressive() const override { return true; }
   std::string describe() const override {
     return "pmj02 first " + std::to_string(spp()) + " points, pool of 16 XOR-scrambled per pixel" +
            ((spp() & (spp() - 1)) ? " (not a power of two)" : "");

@@ -6,6 +6,8 @@
 // | randomness | point i of pixel p: the two 32-bit halves of               |
 // |            | hash(pixelSeed(seed, p), i) give x and y (24 bits each)     |
 // | counts     | any spp >= 1, no warning                                   |
+// | bound      | Var = sigma^2 / spp exactly (varianceBound 1)              |
+// | progressive| yes: point i does not depend on spp                        |
 // | use it     | as the reference for error slopes (RMSE ~ N^-1/2); it turns |
 // |            | all aliasing into noise, at the highest noise of all.      |
 #include "core/hash.h"
@@ -27,6 +29,8 @@ class RandomSampler final : public Sampler {
     }
   }
   std::string name() const override { return "random"; }
+  double varianceBound() const override { return 1; }
+  bool progressive() const override { return true; }
   std::string describe() const override { return "random: " + std::to_string(spp()) + " independent uniform points"; }
 };
 

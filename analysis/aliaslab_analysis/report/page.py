@@ -16,6 +16,7 @@ from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
 from .adaptive import adaptive_section
+from .contract import contract_section
 from .elements import figure, image_src, write_page
 from .findings import findings, method_name, tie_rules
 from .markdown import markdown_tables
@@ -197,6 +198,7 @@ def engineering_section(c):
 # (an <h2 id=...> heading and its content) is one line here; the table of contents follows its anchors.
 SECTIONS = [
     header_section,
+    contract_section,  # the samplers' variance bounds checked on this study; a violation first (report/contract.py)
     gallery_section,
     findings_section,
     lambda c: targets_section(c.s, c.science),
