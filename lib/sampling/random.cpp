@@ -21,9 +21,10 @@ class RandomSampler final : public Sampler {
  public:
   using Sampler::Sampler;
 
-  void generate(int px, int py, Vec2* out) const override {
+  void generate(int px, int py, Vec2* out) const override { generatePrefix(px, py, spp(), out); }
+  void generatePrefix(int px, int py, int count, Vec2* out) const override {
     const uint64_t key = pixelSeed(seed(), px, py);
-    for (int i = 0; i < spp(); ++i) {
+    for (int i = 0; i < count; ++i) {
       const uint64_t h = hashWords(key, static_cast<uint64_t>(i));
       out[i] = Vec2(fixedToUnit(static_cast<uint32_t>(h >> 32)), fixedToUnit(static_cast<uint32_t>(h)));
     }

@@ -75,6 +75,9 @@ class Sampler {
   /// every prefix is a well-spread set: the first n points of the pattern at spp are the pattern at n. The
   /// adaptive methods continue such a pixel's own sequence (sampling/progressive.h).
   virtual bool progressive() const { return false; }
+  /// The first count <= spp() points of pixel (px, py), as generate() writes them (for a progressive pattern: the
+  /// pattern at `count`, without generating the rest). The default generates all spp() and copies.
+  virtual void generatePrefix(int px, int py, int count, Vec2* out) const;
 
   int spp() const { return spp_; }
   uint64_t seed() const { return seed_; }

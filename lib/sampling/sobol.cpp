@@ -39,10 +39,11 @@ class SobolSampler final : public Sampler {
     for (int i = 0; i < spp; ++i) dim1Reversed_[i] = reverseBits(sobolDim1(static_cast<uint32_t>(i)));
   }
 
-  void generate(int px, int py, Vec2* out) const override {
+  void generate(int px, int py, Vec2* out) const override { generatePrefix(px, py, spp(), out); }
+  void generatePrefix(int px, int py, int count, Vec2* out) const override {
     const uint64_t key = pixelSeed(seed(), px, py);
     const uint32_t seedX = key32(hashWords(key, 0)), seedY = key32(hashWords(key, 1));
-    const int n = spp();
+    const int n = count;
     for (int i = 0; i < n; ++i) {
       // van der Corput reversed back is i itself.
       const uint32_t x = reverseBits(laineKarrasPermute(static_cast<uint32_t>(i), seedX));
