@@ -5,7 +5,7 @@
 // no x factor), each a single gain coefficient of a base-2 scrambled net (Owen 1997: for nested uniform scrambling
 // Var = Gamma_ab / N with every Gamma <= 2 for a (0,m,2)-net; this is where a hash-based scramble would show a gain
 // above 2); the negative control's grating with sqrt(N) cycles per pixel (jittered exactly at its bound); a disc.
-// And the progressive samplers (Sampler::progressive): the pattern at n is the first n points of the pattern at
+// Sobol's gains one by one against nested uniform scrambling's. And the progressive samplers (Sampler::progressive): the pattern at n is the first n points of the pattern at
 // any larger count.
 #include <gtest/gtest.h>
 
@@ -78,6 +78,38 @@ TEST(SamplerBound, EveryClaimedBoundHoldsOnItsHardestIntegrands) {
       ++checked;
     }
   EXPECT_GE(checked, 3 * 3);  // random, jittered, nrooks at every count; sobol at the powers of two
+}
+
+// The hash-based Owen scramble against the theory of nested uniform scrambling, gain by gain: for a (0,m,2)-net in
+// base 2 the Walsh function w_ab has gain 0 when a + b <= m (the net integrates it exactly), 2 on a + b = m + 1 with
+// a, b >= 1, and 1 beyond (and 1 for a one-dimensional w at m + 1): Var = gain sigma^2 / N, sigma^2 = 1.
+TEST(SamplerBound, SobolGainsAreThoseOfNestedUniformScrambling) {
+  const int side = 96;
+  for (int m : {4, 6}) {
+    const int n = 1 << m;
+    const auto s = makeSampler("sobol", n, 11);
+    std::vector<Vec2> pts(n);
+    std::vector<double> sum(81, 0), sum2(81, 0);
+    for (int py = 0; py < side; ++py)
+      for (int px = 0; px < side; ++px) {
+        s->generate(px, py, pts.data());
+        for (int a = 0; a <= 8; ++a)
+          for (int b = 0; b <= 8; ++b) {
+            double mean = 0;
+            for (const Vec2& p : pts) mean += (digit(p.x(), a) ^ digit(p.y(), b)) ? -1.0 : 1.0;
+            const double g = mean * mean / n;  // (mean / n)^2 * n: one replicate of the gain
+            sum[a * 9 + b] += g, sum2[a * 9 + b] += g * g;
+          }
+      }
+    const double P = double(side) * side;
+    for (int a = 0; a <= 8; ++a)
+      for (int b = 0; b <= 8; ++b) {
+        if (a + b == 0) continue;
+        const double expected = a + b <= m ? 0.0 : (a + b == m + 1 && a > 0 && b > 0) ? 2.0 : 1.0;
+        const double gain = sum[a * 9 + b] / P, se = std::sqrt(std::max(0.0, sum2[a * 9 + b] / P - gain * gain) / P);
+        EXPECT_NEAR(gain, expected, 3 * se + 1e-9) << "N = " << n << ", w(" << a << "," << b << ")";
+      }
+  }
 }
 
 TEST(SamplerBound, ProgressivePatternsArePrefixes) {
