@@ -32,6 +32,6 @@ def contract_section(c):
                "hypercube (nrooks) and an Owen-scrambled (0,m,2)-net (sobol at N = 2^m) have at most 1, N/(N-1) "
                "and 2 times the variance of N independent points, for every integrand. A ratio above its bound "
                f"by more than {contract.Z:g} standard errors means the implementation misbehaves in this render "
-               f"(<a href='{c.science}#what-the-samplers-guarantee'>docs/science.md</a>).</p></details>")
+               f"(<a href='{c.science}'>docs/science.md</a>, \"What the samplers guarantee\").</p></details>")
     style = STYLE if any(x["violated"] for x in contract.checks(c.df)) else ""
     return f"<div id='contract' class='{'' if style else 'facts'}' style='{style}'>{body}{details}</div>"
