@@ -21,6 +21,7 @@
 #include "common/front_end.h"
 #include "core/error.h"
 #include "study/config.h"
+#include "study/contract.h"
 #include "study/merge.h"
 #include "study/motion_study.h"
 #include "study/presets.h"
@@ -29,6 +30,14 @@
 using namespace aliaslab;
 
 namespace {
+// The samplers' bounds on the finished CSV (study/contract.h): a summary line, and every violation as a warning.
+void printContract(const std::vector<ContractCheck>& checks) {
+  if (checks.empty()) return;
+  std::printf("%s\n", contractSummary(checks).c_str());
+  for (const std::string& v : contractViolations(checks))
+    std::fprintf(stderr, "warning: sampler bound violated (the pattern misbehaves in this render): %s\n", v.c_str());
+}
+
 // The library's keys in this program's flags (factory keys: the lists they are checked from).
 const FrontEnd kSweep{"sweep",
                       {{"scenes", "--scenes"},       {"samplers", "--samplers"},     {"sampler", "--samplers"},
@@ -109,6 +118,7 @@ int main(int argc, char** argv) {
     if (!merge.empty()) {
       mergeStudy(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()), "sweep --merge");
       std::printf("merged %zu files into %s\n", merge.size() - 1, merge[0].c_str());
+      printContract(checkContract(contractRows(merge[0])));
       return 0;
     }
     if (imagesOn && imagesOff) throw OptionError("--images", "give --images or --no-images, not both");
@@ -125,6 +135,7 @@ int main(int argc, char** argv) {
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",
                   s.rowsWritten, s.rowsSkipped, s.sampleSetsTraced + s.importanceTraces,
                   static_cast<unsigned long long>(s.primaryRays), s.seconds, csvPath(c).c_str());
+    printContract(s.contract);
     if (s.nonFiniteSamples > 0)
       std::fprintf(stderr, "warning: %zu NaN or infinite samples (light or colour beyond float range, about 3.4e38) "
                    "were left out of this run's images; the CSV's nonfinite_samples column counts them per row\n",

@@ -9,6 +9,7 @@
 #include "core/format.h"
 #include "core/hash.h"
 #include "core/parallel.h"
+#include "sampling/progressive.h"
 
 namespace aliaslab {
 
@@ -112,7 +113,8 @@ std::unique_ptr<AdaptiveSampler> makeAdaptiveSampler(const std::string& name, in
 
 AdaptiveSampler::AdaptiveSampler(AdaptiveMethod method, std::string base, int spp, uint64_t seed,
                                  AdaptiveParams params)
-    : method_(method), base_(std::move(base)), spp_(spp), seed_(seed), params_(params) {}
+    : method_(method), base_(std::move(base)), spp_(spp), seed_(seed), params_(params),
+      progressive_(method != AdaptiveMethod::Subdivision && makeProgressiveSampler(base_, 1, seed)) {}
 
 std::string AdaptiveSampler::name() const {
   return std::string(kPrefix) + kMethodNames[static_cast<int>(method_)] + ":" + base_;
@@ -138,6 +140,10 @@ std::string AdaptiveSampler::describe() const {
 
 std::unique_ptr<Sampler> AdaptiveSampler::baseSampler(int count, uint64_t round) const {
   return makeSampler(base_, count, round == 0 ? seed_ : hashWords(seed_, 0x61646170ULL, round));
+}
+
+std::unique_ptr<Sampler> AdaptiveSampler::progressiveSampler(int count) const {
+  return makeProgressiveSampler(base_, count, seed_);
 }
 
 SpentSamples spentSamples(const SampleBuffer& samples) {

@@ -23,11 +23,18 @@
 //   with a seed hashed from (seed, round): round 0 uses the run's seed, so
 //   the pilot IS the base sampler at the pilot's count. Subdivision cells are
 //   sampled as pixels of a 2^d-times finer film (seed hashed from (seed, round)).
-// - Unbiased: every decision reads only samples whose share of the pixel's
-//   estimate (FilmSample::weight; a pixel's shares add up to 1, the buffer is
-//   areaWeighted) was fixed before they were traced, and every share that a
-//   decision moves goes to samples traced after it. So the estimate's
-//   expectation is the pixel integral whatever was decided (docs/adaptive.md).
+// - Unbiased, two ways (docs/adaptive.md, "Bias"). With a progressive base
+//   (sampling/progressive.h: random, halton, sobol, pmj02, and jittered through
+//   progressive jittered), contrast and error continue every pixel's own
+//   sequence: the pilot is its points 0 .. n0-1, the fresh samples its points
+//   n0 .. n0+m-1, and the estimate the plain mean of all n0 + m; a pixel's
+//   count is decided from its neighbours' pilots only (never its own), so it
+//   is independent of the pixel's own points up to the shared budget, and a
+//   pixel that gets exactly spp samples holds the base's own spp-point set.
+//   Otherwise (and for subdivision) every decision reads only samples whose
+//   share of the pixel's estimate (FilmSample::weight; a pixel's shares add
+//   up to 1, the buffer is areaWeighted) was fixed before they were traced,
+//   and every share a decision moves goes to samples traced after it.
 // - Determinism: decisions are made between rounds, ranking pixels by
 //   (priority descending, count ascending, hash(seed, pixel) ascending): a
 //   strict order, so results are identical for any thread count.
@@ -90,6 +97,11 @@ class AdaptiveSampler {
   std::string describe() const;
   /// The base sampler at `count` points for round `round` (seed hashed from (seed, round), round 0: seed).
   std::unique_ptr<Sampler> baseSampler(int count, uint64_t round) const;
+  /// True when contrast or error continue each pixel's own progressive sequence (the base has one,
+  /// sampling/progressive.h); subdivision never does.
+  bool progressive() const { return progressive_; }
+  /// The base's progressive sequence at `count` points with the run's seed (progressive() only).
+  std::unique_ptr<Sampler> progressiveSampler(int count) const;
 
  private:
   AdaptiveMethod method_;
@@ -97,6 +109,7 @@ class AdaptiveSampler {
   int spp_;
   uint64_t seed_;
   AdaptiveParams params_;
+  bool progressive_ = false;
 };
 
 /// "contrast", "error", "subdiv".

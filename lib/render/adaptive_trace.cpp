@@ -3,10 +3,13 @@
 // trace them) in adaptive_work.h.
 //
 // Both methods here run in two rounds: a pilot of n0 samples per pixel, then one allocation of the rest of the
-// budget decided from the pilot alone, traced as fresh samples (at least one per pixel). The pilot keeps the
-// fixed share alpha = n0 / spp of its pixel's estimate and the fresh samples the rest, 1 - alpha, whatever the
-// allocation: so each pixel's estimate alpha * mean(pilot) + (1 - alpha) * mean(fresh) is unbiased (the
-// fresh samples are drawn after the decision and know nothing of it). See docs/adaptive.md, "Bias".
+// budget decided from the pilot alone, traced as fresh samples (at least one per pixel). See docs/adaptive.md,
+// "Bias", for why each way is unbiased:
+// - a progressive base (AdaptiveSampler::progressive): the pilot is points 0 .. n0-1 of each pixel's own
+//   sequence, the fresh samples its points n0 .. n0+m-1, every sample of the pixel weighs 1 / (n0 + m) (the plain
+//   mean); the neighbourhoods that decide m leave the pixel's own pilot out.
+// - otherwise: the fresh samples are a new draw of the base; the pilot keeps the fixed share alpha = n0 / spp of
+//   its pixel's estimate and the fresh samples the rest, 1 - alpha, whatever the allocation.
 #include <algorithm>
 #include <cmath>
 
@@ -18,6 +21,7 @@ namespace aliaslab {
 namespace {
 
 using adaptiveimpl::dilate;
+using adaptiveimpl::neighbourMax;
 using adaptiveimpl::Work;
 
 /// Fresh samples per pixel allowed at most: cap * spp in all, less the pilot (at least 1).
@@ -27,23 +31,40 @@ int freshCap(const AdaptiveSampler& a, int n0) {
 
 /// The pilot: n0 samples per pixel, each of weight 1 / spp (its share alpha / n0). Returns alpha. The last
 /// round when n0 = spp (nothing left to allocate).
+/// With a progressive base the pilot is each pixel's points 0 .. n0-1, weighed again by traceFresh.
 double tracePilot(Work& w, const AdaptiveSampler& a, int n0) {
+  const std::vector<int> first(a.progressive() ? w.pixels() : 0, 0);
   w.tracePixels(std::vector<int>(w.pixels(), n0), std::vector<double>(w.pixels(), double(n0) / a.spp()),
-                n0 == a.spp());
+                n0 == a.spp(), a.progressive() ? &first : nullptr);
   return double(n0) / a.spp();
 }
 
-/// The fresh round, the last: fresh[p] >= 1 samples in every pixel sharing 1 - alpha of its estimate.
-void traceFresh(Work& w, const std::vector<int>& fresh, double alpha) {
-  w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - alpha), true);
+/// The fresh round, the last: fresh[p] >= 1 samples in every pixel. A progressive base: each pixel's points
+/// n0 .. n0 + fresh[p] - 1, every sample of the pixel (the pilot's too) of weight 1 / (n0 + fresh[p]). Otherwise
+/// a new draw of the base sharing 1 - alpha of the pixel's estimate.
+void traceFresh(Work& w, const AdaptiveSampler& a, const std::vector<int>& fresh, int n0) {
+  if (!a.progressive()) {
+    w.tracePixels(fresh, std::vector<double>(w.pixels(), 1.0 - double(n0) / a.spp()), true);
+    return;
+  }
+  std::vector<double> share(w.pixels());
+  std::vector<float> earlier(w.pixels());
+  for (long long p = 0; p < w.pixels(); ++p) {
+    share[p] = double(fresh[p]) / (n0 + fresh[p]);
+    earlier[p] = static_cast<float>(1.0 / (n0 + fresh[p]));
+  }
+  w.setEarlierWeights(std::move(earlier));
+  const std::vector<int> first(w.pixels(), n0);
+  w.tracePixels(fresh, share, true, &first);
 }
 
 // Mitchell: contrast of the 3x3 neighbourhood of the pilot against per-channel thresholds.
 void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
   const AdaptiveParams& prm = a.params();
   const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), 1, a.spp());
-  const double alpha = tracePilot(w, a, n0);
+  tracePilot(w, a, n0);
   if (n0 == a.spp()) return;
+  const bool own = !a.progressive();  // whether a pixel's own pilot enters its neighbourhood
   std::vector<Color> lo, hi;
   w.pixelRanges(lo, hi);
   std::vector<double> ratio(w.pixels());
@@ -52,6 +73,7 @@ void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
       Color l = Color::Constant(INFINITY), h = Color::Constant(-INFINITY);
       for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
         for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x) {
+          if (!own && x == i && y == j) continue;
           const size_t q = static_cast<size_t>(y) * W + x;
           l = l.min(lo[q]), h = h.max(hi[q]);
         }
@@ -80,7 +102,7 @@ void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
   }
   const std::vector<int> even = w.evenly(left, ratio);
   for (long long p = 0; p < w.pixels(); ++p) fresh[p] += even[p];
-  traceFresh(w, fresh, alpha);
+  traceFresh(w, a, fresh, n0);
 }
 
 // Error-driven: fresh samples in proportion to the pilot's standard deviation (dilated over 3 x 3), between
@@ -88,7 +110,7 @@ void runContrast(Work& w, const AdaptiveSampler& a, int W, int H) {
 void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
   const AdaptiveParams& prm = a.params();
   const int n0 = std::clamp(static_cast<int>(std::lround(prm.first * a.spp())), std::min(2, a.spp()), a.spp());
-  const double alpha = tracePilot(w, a, n0);
+  tracePilot(w, a, n0);
   if (n0 == a.spp()) return;
   std::vector<double> sd(w.pixels(), 0.0);
   for (long long p = 0; p < w.pixels(); ++p) {
@@ -102,7 +124,7 @@ void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
     });
     sd[p] = n > 1 && std::isfinite(var) ? std::sqrt(var / 3 / (n - 1)) : 0.0;
   }
-  sd = dilate(sd, W, H);
+  sd = a.progressive() ? neighbourMax(sd, W, H) : dilate(sd, W, H);  // progressive: its own pilot left out
   const long long budget = w.left();
   const int lowest = std::clamp(static_cast<int>(std::lround(prm.floor * (a.spp() - n0))), 1, a.spp() - n0);
   const int cap = std::max(lowest, freshCap(a, n0));
@@ -137,7 +159,7 @@ void runError(Work& w, const AdaptiveSampler& a, int W, int H) {
   for (long long p = 0; p < w.pixels(); ++p) used += fresh[p] = fresh0(lo, sd[p]);
   const std::vector<int> even = w.evenly(budget - used, sd);
   for (long long p = 0; p < w.pixels(); ++p) fresh[p] += even[p];
-  traceFresh(w, fresh, alpha);
+  traceFresh(w, a, fresh, n0);
 }
 
 }  // namespace

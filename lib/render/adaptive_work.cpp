@@ -47,8 +47,13 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   std::map<std::pair<int, int>, std::unique_ptr<Sampler>> samplers;
   std::vector<std::vector<const Sampler*>> plan;
   int most = 0;  // the largest part: the workers' point arrays are that long
+  int longest = 0;  // progressive requests: the longest prefix, one sampler of that count serves every prefix
+  for (const Request& r : cells)
+    if (r.n > 0 && r.first >= 0) longest = std::max(longest, r.first + r.n);
+  const std::unique_ptr<Sampler> progressive = longest > 0 ? a_.progressiveSampler(longest) : nullptr;
+  most = longest;
   for (const Request& r : cells) {
-    if (r.n <= 0) continue;
+    if (r.n <= 0 || r.first >= 0) continue;
     if (static_cast<size_t>(r.n) >= plan.size()) plan.resize(static_cast<size_t>(r.n) + 1);
     if (!plan[r.n].empty()) continue;
     std::map<int, int> seen;
@@ -74,6 +79,8 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
       out = final_.pixel(i, j);
       for (const Round& r : rounds_)
         out = std::copy(r.samples.data() + r.start[p], r.samples.data() + r.start[p + 1], out);
+      if (!earlierWeight_.empty())
+        for (FilmSample* s = final_.pixel(i, j); s != out; ++s) s->weight = earlierWeight_[p];
     }
     if (first[p] == first[p + 1]) return;
     // Two passes: the pixel's positions and weights, then its rays in one tight loop (the position arithmetic's
@@ -86,11 +93,9 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
       const int px = (i << r.level) + r.cx, py = (j << r.level) + r.cy;
       const double side = cellSide(r.level);  // 1 / 2^level
       const float fside = static_cast<float>(side);  // a power of two: exact
-      for (const Sampler* sampler : plan[r.n]) {
-        const int n = sampler->spp();
-        sampler->generate(px, py, u);
+      const auto emit = [&](const Vec2* pts, int n) {
         for (int k = 0; k < n; ++k, ++out) {
-          const Vec2 q = u[k];
+          const Vec2 q = pts[k];
           // The position i + (cx + q) * side, the sum in double rounded to float (inside), is computed in float
           // with the same bits: cx + q is a float either way; times a power of two it stays exact unless the
           // product is subnormal; and a sum of two floats (i is one below 2^24) rounded to double and then to
@@ -101,6 +106,15 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
           else
             out->x = inside(i + (r.cx + q.x()) * side, i, topX), out->y = inside(j + (r.cy + q.y()) * side, j, topY);
           out->weight = r.weight;
+        }
+      };
+      if (r.first >= 0) {
+        progressive->generatePrefix(px, py, r.first + r.n, u);
+        emit(u + r.first, r.n);
+      } else {
+        for (const Sampler* sampler : plan[r.n]) {
+          sampler->generate(px, py, u);
+          emit(u, sampler->spp());
         }
       }
     }
@@ -129,11 +143,13 @@ void Work::trace(const std::vector<std::pair<long long, Request>>& requests, boo
   }
 }
 
-void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last) {
+void Work::tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last,
+                       const std::vector<int>* first) {
   std::vector<std::pair<long long, Request>> requests;
   requests.reserve(static_cast<size_t>(N_));
   for (long long p = 0; p < N_; ++p)
-    if (add[p] > 0) requests.push_back({p, {0, 0, 0, add[p], static_cast<float>(share[p] / add[p])}});
+    if (add[p] > 0)
+      requests.push_back({p, {0, 0, 0, add[p], static_cast<float>(share[p] / add[p]), first ? (*first)[p] : -1}});
   trace(requests, last);
 }
 
@@ -206,6 +222,19 @@ std::vector<double> dilate(const std::vector<double>& v, int W, int H) {
     double* o = out.data() + size_t(j) * W;
     for (int i = 0; i < W; ++i) o[i] = std::max({up[i], mid[i], down[i]});
   }
+  return out;
+}
+
+std::vector<double> neighbourMax(const std::vector<double>& v, int W, int H) {
+  std::vector<double> out(v.size(), 0.0);
+  for (int j = 0; j < H; ++j)
+    for (int i = 0; i < W; ++i) {
+      double m = 0;
+      for (int y = std::max(0, j - 1); y <= std::min(H - 1, j + 1); ++y)
+        for (int x = std::max(0, i - 1); x <= std::min(W - 1, i + 1); ++x)
+          if (x != i || y != j) m = std::max(m, v[size_t(y) * W + x]);
+      out[size_t(j) * W + i] = m;
+    }
   return out;
 }
 

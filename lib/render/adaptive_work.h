@@ -20,9 +20,12 @@ namespace aliaslab::adaptiveimpl {
 
 /// n points for one cell: the square [cx, cx+1) x [cy, cy+1) / 2^level of its pixel, each carrying `weight`
 /// (FilmSample::weight: its share of the pixel's estimate, fixed before any of them is traced).
+/// With first >= 0 (level 0 only): the points first .. first + n - 1 of the pixel's progressive sequence
+/// (AdaptiveSampler::progressiveSampler), instead of a fresh draw of the base at n points.
 struct Request {
   int level = 0, cx = 0, cy = 0, n = 0;
   float weight = 1.f;
+  int first = -1;
 };
 
 /// 2^-level (level 0 .. 1022), exactly, without a division or a libm call.
@@ -50,8 +53,14 @@ class Work {
   /// samples (the gather fused with the round: its samples are written once, not stored and then copied).
   void trace(const std::vector<std::pair<long long, Request>>& requests, bool last = false);
 
-  /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p].
-  void tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last = false);
+  /// One round giving add[p] samples to pixel p, drawn over the whole pixel, each of weight share[p] / add[p];
+  /// with `first`, the points first[p] .. first[p] + add[p] - 1 of pixel p's progressive sequence.
+  void tracePixels(const std::vector<int>& add, const std::vector<double>& share, bool last = false,
+                   const std::vector<int>* first = nullptr);
+
+  /// The weight every earlier sample of pixel p takes when the last round copies it into the final buffer
+  /// (weights[p]); without it they keep the weight they were traced with.
+  void setEarlierWeights(std::vector<float> weights) { earlierWeight_ = std::move(weights); }
 
   /// The first `first` pixels (all by default) by priority descending, then count ascending, then a hash of
   /// (seed, pixel): a strict order.
@@ -93,6 +102,7 @@ class Work {
   SampleBuffer final_;  ///< written by the `last` round; empty before
   bool finished_ = false;
   std::vector<int> count_;  ///< samples per pixel over all rounds
+  std::vector<float> earlierWeight_;  ///< per pixel, set by setEarlierWeights (empty: weights kept)
   std::vector<uint64_t> hash_;
   mutable std::map<int, bool> quality_;  ///< count -> the base sampler has no warning() at it
 
@@ -102,6 +112,9 @@ class Work {
 /// The largest value over each pixel's 3 x 3 neighbourhood (and 0) of a W x H image of values >= 0: a row pass
 /// then a column pass (max is exact and its order free, so the same values as the 9-neighbour loop).
 std::vector<double> dilate(const std::vector<double>& v, int W, int H);
+
+/// The largest value over each pixel's 8 neighbours (and 0), the pixel itself left out.
+std::vector<double> neighbourMax(const std::vector<double>& v, int W, int H);
 
 /// Whitted's subdivision with fresh leaf samples (adaptive_subdiv.cpp); traces the whole budget.
 void runSubdivision(Work& w, const AdaptiveSampler& a);

@@ -1,5 +1,6 @@
 // The one table of sampler names (samplerNames() order) and makeSampler(),
 // plus gridShape(), the m x n grid every grid-based pattern uses.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,12 @@ std::unique_ptr<Sampler> makeSampler(const std::string& name, int spp, uint64_t 
       throw OptionError("sampler", "sampler '" + name + "' needs a base sampler, e.g. " + w + ":sobol; valid: " +
                                          validNames());
   throw OptionError("sampler", "unknown sampler '" + name + "'; valid: " + validNames());
+}
+
+void Sampler::generatePrefix(int px, int py, int count, Vec2* out) const {
+  std::vector<Vec2> all(static_cast<size_t>(spp()));
+  generate(px, py, all.data());
+  std::copy(all.begin(), all.begin() + std::clamp(count, 0, spp()), out);
 }
 
 void gridShape(int spp, int& columns, int& rows) {

@@ -13,6 +13,7 @@
 // |            | exactly one point; in any prefix each 2^-j (3^-j) interval |
 // |            | of x (y) holds floor or ceil of spp / 2^j (spp / 3^j)      |
 // | counts     | any spp >= 1, no warning                                   |
+// | progressive| yes: point i does not depend on spp                        |
 // | use it     | a low-discrepancy pattern that is good at any count, not  |
 // |            | only powers of two.                                        |
 #include <array>
@@ -35,7 +36,8 @@ class HaltonSampler final : public Sampler {
  public:
   using Sampler::Sampler;
 
-  void generate(int px, int py, Vec2* out) const override {
+  void generate(int px, int py, Vec2* out) const override { generatePrefix(px, py, spp(), out); }
+  void generatePrefix(int px, int py, int count, Vec2* out) const override {
     const uint64_t key = pixelSeed(seed(), px, py);
     const uint32_t mask2 = key32(hashWords(key, 0x68616c32ULL));
     HashRng rng(hashWords(key, 0x68616c33ULL));
@@ -45,7 +47,7 @@ class HaltonSampler final : public Sampler {
     std::array<uint64_t, kDigits3 + 1> zeroTail{};
     for (int d = kDigits3 - 1; d >= 0; --d) zeroTail[d] = zeroTail[d + 1] + kPerm3[perm[d]][0] * pow3(kDigits3 - 1 - d);
     constexpr uint64_t kLow = pow3(kDigits3 - kExactDigits3);
-    for (int i = 0; i < spp(); ++i) {
+    for (int i = 0; i < count; ++i) {
       // Base 3: digit d of i (least significant first) becomes digit d of y after the point.
       uint64_t v = 0, weight = pow3(kDigits3 - 1);
       uint32_t rest = static_cast<uint32_t>(i);
@@ -59,6 +61,7 @@ class HaltonSampler final : public Sampler {
     }
   }
   std::string name() const override { return "halton"; }
+  bool progressive() const override { return true; }
   std::string describe() const override {
     return "halton bases 2,3, random digit permutations, indices 0.." + std::to_string(spp() - 1);
   }

@@ -8,6 +8,8 @@
 // | counts     | any spp: the gridShape m x n grid (8 -> 2x4, 7 -> 1x7);    |
 // |            | warning() says so when spp is not a square. A prime spp    |
 // |            | gives 1 x spp strips: stratified in y only                 |
+// | bound      | Var <= sigma^2 / spp (varianceBound 1): never worse than   |
+// |            | random, at any spp (equal-area strata)                     |
 // | use it     | the classic cheap improvement over random (Cook 1986):     |
 // |            | RMSE ~ N^-3/4 on edges at square counts.                   |
 #include "core/hash.h"
@@ -35,6 +37,9 @@ class JitteredSampler final : public Sampler {
     return "jittered " + gridLabel(spp()) + " strata" + (m_ == n_ ? "" : " (spp " + std::to_string(spp()) + " is not square)");
   }
   std::string warning() const override { return gridWarning("jittered", spp()); }
+  // One independent uniform point in each of spp equal-area strata (any m x n grid): Var = (1/spp^2) sum of the
+  // strata's variances <= sigma^2 / spp, the between-strata part of sigma^2 removed.
+  double varianceBound() const override { return 1; }
 
  private:
   int m_ = 1, n_ = 1;  ///< columns, rows

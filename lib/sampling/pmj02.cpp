@@ -25,6 +25,8 @@
 // |            | says the net property holds only at powers of two; larger |
 // |            | spp is refused (OptionError): the strata tables grow as    |
 // |            | spp log spp per sequence                                   |
+// | progressive| yes: the pool's sequences are built point by point, so the |
+// |            | first n points are the same at every count >= n            |
 // | use it     | like sobol, with less structure across the pixel grid      |
 // |            | between pool members; construction costs about a second at |
 // |            | the largest spp.                                          |
@@ -149,14 +151,16 @@ class Pmj02Sampler final : public Sampler {
     }
   }
 
-  void generate(int px, int py, Vec2* out) const override {
+  void generate(int px, int py, Vec2* out) const override { generatePrefix(px, py, spp(), out); }
+  void generatePrefix(int px, int py, int count, Vec2* out) const override {
     const uint64_t key = pixelSeed(seed(), px, py);
     const uint64_t h = hashWords(key, 0x786f72ULL);
     const std::vector<Point32>& seq = pool_[hashWords(key, 0x706f6f6cULL) % kPoolSize];
     const uint32_t maskX = key32(h), maskY = static_cast<uint32_t>(h);
-    for (int i = 0; i < spp(); ++i) out[i] = Vec2(fixedToUnit(seq[i].x ^ maskX), fixedToUnit(seq[i].y ^ maskY));
+    for (int i = 0; i < count; ++i) out[i] = Vec2(fixedToUnit(seq[i].x ^ maskX), fixedToUnit(seq[i].y ^ maskY));
   }
   std::string name() const override { return "pmj02"; }
+  bool progressive() const override { return true; }
   std::string describe() const override {
     return "pmj02 first " + std::to_string(spp()) + " points, pool of 16 XOR-scrambled per pixel" +
            ((spp() & (spp() - 1)) ? " (not a power of two)" : "");

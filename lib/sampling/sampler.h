@@ -66,6 +66,18 @@ class Sampler {
   virtual std::string warning() const { return {}; }
   /// True when the points of different pixels of one seed are deliberately correlated (see above).
   virtual bool correlatedAcrossPixels() const { return false; }
+  /// The variance bound the pattern's construction guarantees (docs/science.md, "What the samplers
+  /// guarantee"): c such that for every square-integrable f on the pixel, Var(mean of f over the spp points)
+  /// <= c sigma^2 / spp with sigma^2 = Var f(U), U uniform on the pixel (c = 1: never worse than independent
+  /// points). 0: no such theorem is claimed at this count. Every study checks it (study/contract.h).
+  virtual double varianceBound() const { return 0; }
+  /// True when point i of a pixel is the same for every count that includes it (given seed and pixel), and
+  /// every prefix is a well-spread set: the first n points of the pattern at spp are the pattern at n. The
+  /// adaptive methods continue such a pixel's own sequence (sampling/progressive.h).
+  virtual bool progressive() const { return false; }
+  /// The first count <= spp() points of pixel (px, py), as generate() writes them (for a progressive pattern: the
+  /// pattern at `count`, without generating the rest). The default generates all spp() and copies.
+  virtual void generatePrefix(int px, int py, int count, Vec2* out) const;
 
   int spp() const { return spp_; }
   uint64_t seed() const { return seed_; }

@@ -16,6 +16,11 @@
 // |            | each elementary interval of area 2^-j holds one point      |
 // | counts     | any spp: the first spp points; warning() says the net      |
 // |            | property holds only at powers of two                       |
+// | bound      | at spp = 2^m a scrambled (0,m,2)-net: Var <= 2 sigma^2/spp |
+// |            | for nested uniform scrambling (Owen 1997); varianceBound 2 |
+// |            | there, none at other counts. The hash approximates the     |
+// |            | scramble: every study checks the bound (study/contract.h)  |
+// | progressive| yes: point i does not depend on spp                        |
 // | use it     | the default low-discrepancy choice: RMSE ~ N^-3/4 on edges |
 // |            | at powers of two; fast (target >= 50 M points/s/core).     |
 #include <vector>
@@ -34,10 +39,11 @@ class SobolSampler final : public Sampler {
     for (int i = 0; i < spp; ++i) dim1Reversed_[i] = reverseBits(sobolDim1(static_cast<uint32_t>(i)));
   }
 
-  void generate(int px, int py, Vec2* out) const override {
+  void generate(int px, int py, Vec2* out) const override { generatePrefix(px, py, spp(), out); }
+  void generatePrefix(int px, int py, int count, Vec2* out) const override {
     const uint64_t key = pixelSeed(seed(), px, py);
     const uint32_t seedX = key32(hashWords(key, 0)), seedY = key32(hashWords(key, 1));
-    const int n = spp();
+    const int n = count;
     for (int i = 0; i < n; ++i) {
       // van der Corput reversed back is i itself.
       const uint32_t x = reverseBits(laineKarrasPermute(static_cast<uint32_t>(i), seedX));
@@ -46,6 +52,8 @@ class SobolSampler final : public Sampler {
     }
   }
   std::string name() const override { return "sobol"; }
+  double varianceBound() const override { return (spp() & (spp() - 1)) == 0 ? 2.0 : 0.0; }
+  bool progressive() const override { return true; }
   std::string describe() const override {
     return "sobol Owen-scrambled, first " + std::to_string(spp()) + " points" +
            ((spp() & (spp() - 1)) ? " (not a power of two)" : "");

@@ -216,6 +216,7 @@ void finishSweep(SweepRun& run) {
   if (run.out) {
     run.out.reset();
     canonicaliseCsv(run.csv);
+    run.sum.contract = checkContract(contractRows(run.csv));  // every row of the CSV, resumed ones too
     for (const std::string& spectra : run.spectraWritten) canonicaliseSpectrumCsv(spectra);
     if (run.sum.images) writeContactSheets(run.csv, (fs::path(run.config.out) / "images").string());
   }

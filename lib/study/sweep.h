@@ -32,7 +32,8 @@
 // writeRows), sweep_scene.h (the scene's references, startRows),
 // sweep_group.h (runGroup: phases A, B, C), group_writer.h (the background
 // writer), sweep_memory.h (the memory bound and the in-flight count),
-// sweep_summary.h (what the sweep reports).
+// sweep_summary.h (what the sweep reports). At the end the samplers' variance bounds are checked on the whole
+// CSV (study/contract.h; SweepSummary::contract), which the program prints, violations as warnings.
 //
 // Resuming: configurations whose rows (one per target) are all in the CSV are
 // skipped (a group whose rows are all present is not traced); one with a

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "study/contract.h"
+
 namespace aliaslab {
 
 /// Where the sweep's time went (seconds). setup, trace, splat, resolve, flip, metrics and finish are thread-seconds
@@ -40,6 +42,7 @@ struct SweepSummary {
   std::vector<std::string> notes;  ///< skipped combinations etc.
   SweepPhases phases;
   size_t peakInFlightBytes = 0;    ///< peak task state counted by the scheduler; at most sweepMemoryBound
+  std::vector<ContractCheck> contract;  ///< the sampler bounds checked on the whole CSV at the end (study/contract.h)
 };
 
 }  // namespace aliaslab

@@ -15,6 +15,7 @@ from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
 from .adaptive import adaptive_section
+from .contract import contract_section
 from .elements import figure, image_src, write_page
 from . import answer_csv
 from .answer_table import answer_table
@@ -224,6 +225,7 @@ def engineering_section(c):
 SECTIONS = [
     header_section,
     answer_section,  # the answer at a glance, from answer.csv
+    contract_section,  # the samplers' variance bounds checked on this study; a violation first (report/contract.py)
     gallery_section,
     findings_section,
     summary_section,

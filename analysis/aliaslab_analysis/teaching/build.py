@@ -11,7 +11,8 @@ import numpy as np
 from ..viewer.exr import read_exr
 from ..viewer.export import SceneExport, channels
 from ..viewer.plan import image_stem
-from . import facts, figures
+from ..study_csv import load_study
+from . import facts, figures, negative
 
 TRIO = ("uniform", "jittered", "sobol")
 EDGE_FILTERS = (("box", 0.5), ("mitchell", 2.0), ("catmullrom", 2.0), ("lanczos", 2.0))
@@ -39,14 +40,29 @@ def value(r, col="mse_target"):
     return f"{r[col]:.3g}" + ("" if det or not np.isfinite(se) else f" &plusmn; {se:.1g}")
 
 
-def grid_part(rows, target, g, study, df, plan, work, cache, out):
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
+
+
+def negative_control(results):
+    """negative.control of the negative-control study beside the page (RESULTS/negative_control/study.csv, else the
+    repository's), or {}."""
+    for folder in (results, os.path.join(REPO, "results")):
+        path = os.path.join(folder, "negative_control", "study.csv")
+        if os.path.isfile(path):
+            return negative.control(load_study(path)[0])
+    return {}
+
+
+def grid_part(rows, target, g, study, df, plan, work, cache, out, control=None):
     scene, spp = g["scene"], g["spp"]
     ex = SceneExport(study, df, plan, scene, work, cache)
     samplers = [s for s in TRIO if s in plan.teaching]
     paths = [os.path.join(ex.work, image_stem({"sampler": s, "spp": spp, "filter": "box", "radius": 0.5}, 0) + ".exr")
              for s in samplers]
+    gspp, grid = negative.grid_vs_jittered(rows)
+    opening = "<h3 id='teach-grid'>Where a grid aliases</h3>" + negative.html(control or {}, gspp, grid)
     if not all(os.path.isfile(p) for p in paths):
-        return "<p class='note'>The grid comparison needs the viewer's renders (run `analysis viewer`).</p>"
+        return opening + "<p class='note'>The crop needs the viewer's renders (run `analysis viewer`).</p>"
     images = [channels(read_exr(p)) for p in paths]
     tf, tr = target.split(":")
     t = ex.reference(tf, float(tr))[0]
@@ -59,16 +75,12 @@ def grid_part(rows, target, g, study, df, plan, work, cache, out):
         if r is not None:
             cells.append(f"<tr><td>{html.escape(s)}</td><td>{value(r)}</td><td>{r['aliasing']:.3g}</td>"
                          f"<td>{r['noise']:.3g}</td></tr>")
-    return (f"<h3 id='teach-grid'>Where a grid aliases</h3><p>With the box r = 0.5 at {spp} spp the fixed grid "
-            f"(<code>uniform</code>) has a lower error than jittered in {g['wins']} of {g['scenes']} scene(s) of this "
-            f"study. " + (f"It loses most in <b>{html.escape(scene)}</b>, where its error is {g['ratio']:.3g} times "
-                          "jittered's. " if g["ratio"] > 1 else
-                          f"It comes closest to losing in <b>{html.escape(scene)}</b> (its error {g['ratio']:.3g} "
-                          "times jittered's). ") + f"Below, the "
-            f"{size} x {size} crop at ({x}, {y}) where the grid's error (seed 0) is largest: the grid's error is "
-            "structured (moir&eacute;, the same for every seed: it is all aliasing, noise 0), jittered and Sobol' "
-            "turn it into noise that moves with the seed (flip the seeds in the viewer above). The shifted grid "
-            "(<code>uniform-shifted</code>) is the grid's expected error over alignments.</p>"
+    return (opening + f"<p>In this study the fixed grid comes off worst against jittered in <b>{html.escape(scene)}</b> "
+            f"({g['ratio']:.3g} times jittered's error at {spp} spp). Below, the {size} x {size} crop at ({x}, {y}) "
+            "where the grid's error (seed 0) is largest: the fixed grid's error is structured (the same for every "
+            "seed: all aliasing, noise 0), jittered and Sobol' turn it into noise that moves with the seed (flip the "
+            "seeds in the viewer above). The shifted grid (<code>uniform-shifted</code>) is a randomised lattice: "
+            "one random offset of every cell's point per image, not the grid's average over alignments.</p>"
             f"<table><tr><th>{spp} spp, box r=0.5</th><th>mse_target &plusmn; se</th><th>aliasing</th><th>noise</th>"
             f"</tr>{''.join(cells)}</table>" + img(png, f"{html.escape(scene)}: the same crop, images (top) and "
                                                        f"signed errors against {html.escape(target)} (bottom, "
@@ -183,7 +195,7 @@ def build(results, study, df, plan, work, cache, out):
     parts = ["<h2 id='teaching'>Where a grid aliases, and what filters do: a teaching strand</h2>"
              "<p>Built from this study's own images and numbers; every number below is computed from the CSV.</p>"]
     if g:
-        parts.append(grid_part(rows, target, g, study, df, plan, work, cache, out))
+        parts.append(grid_part(rows, target, g, study, df, plan, work, cache, out, negative_control(results)))
     parts.append(pointset_part(results))
     parts.append(edge_part(rows, study, df, plan, work, cache, out))
     parts.append(blur_part(rows, g, study, df, plan, work, cache, out))
