@@ -25,7 +25,7 @@ CONFIG_KEY = ["scene", "width", "height", "sampler", "spp", "filter", "radius", 
               "reconstruction"]
 # Columns added later (coord/COLUMNS.md); any may be absent from an older CSV.
 # Text columns; `prefilter` is part of the configuration key when present.
-OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds"]
+OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds", "align_mse_target_offsets"]
 OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
                     "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
                     # issue 29 (Interface 3): one row per (configuration, target)
@@ -35,14 +35,18 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
                     "blur_ratio_0.5", "blur_ratio_0.5_se", "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2",
                     "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
                     # issue 31: NaN / infinite samples left out of the images (absent: unknown)
-                    "nonfinite_samples"]
+                    "nonfinite_samples",
+                    # issue 44: the filter's natural radius; the fixed grid over camera offsets (empty cells on
+                    # rows of other samplers: NaN)
+                    "natural_radius", "align_offsets", "align_mse_target", "align_mse_target_sd",
+                    "align_mse_target_se"]
 # Key and count columns, which must be finite; values beyond ABSURD in any other numeric column are
 # beyond what float images can give (their squared differences stay below about 1e77): such a value is
 # treated as unknown (NaN) with a note, so charts and rankings leave it out instead of overflowing.
 FINITE_COLUMNS = ["width", "height", "spp", "radius", "seeds", "ref_spp"]
 ABSURD = 1e30
 TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter",
-                "mse_target_seeds"}
+                "mse_target_seeds", "align_mse_target_offsets"}
 
 
 

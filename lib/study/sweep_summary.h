@@ -23,6 +23,9 @@ struct SweepPhases {
   double references = 0, io = 0;  ///< wall seconds on the main thread (io: waiting for the writer, canonical order)
   double writer = 0;               ///< seconds the writer thread spent on CSV/spectrum lines, overlapped with work
   double motion = 0;               ///< wall seconds of the frames pass (frames > 1, study/sweep_motion.h)
+  /// The fixed grid's alignment (study/alignment.h), wall seconds: its offset references (cache or pass) and its
+  /// passes over the offsets (the grid traced, reconstructed and measured at each).
+  double alignmentReferences = 0, alignment = 0;
 };
 
 struct SweepSummary {
