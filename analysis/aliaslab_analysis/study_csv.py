@@ -25,7 +25,7 @@ CONFIG_KEY = ["scene", "width", "height", "sampler", "spp", "filter", "radius", 
               "reconstruction"]
 # Columns added later (coord/COLUMNS.md); any may be absent from an older CSV.
 # Text columns; `prefilter` is part of the configuration key when present.
-OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds"]
+OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds", "align_mse_target_offsets"]
 OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
                     "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
                     # issue 29 (Interface 3): one row per (configuration, target)
@@ -46,7 +46,7 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
 FINITE_COLUMNS = ["width", "height", "spp", "radius", "seeds", "ref_spp"]
 ABSURD = 1e30
 TEXT_COLUMNS = {"scene", "sampler", "filter", "filter_params", "reconstruction", "target", "prefilter",
-                "mse_target_seeds"}
+                "mse_target_seeds", "align_mse_target_offsets"}
 
 
 

@@ -99,15 +99,19 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--spp", o.spp, "samples per pixel (default 1)");
   app.add_option("--filter", o.filter,
                  "reconstruction filter: " + filters +
-                     " (default: with --spp above 1 the pixel-area box of radius 0.5, weighted; with 1 sample the "
-                     "sample itself)");
+                     ", as in the studies (gaussian: sigma = radius / 3); or course-gaussian, the course's Gaussian "
+                     "(fixed sigma 0.5, uncut on its square support), or gaussian-cut (fixed sigma 0.5, cut at the "
+                     "radius) (default: with --spp above 1 the pixel-area box of radius 0.5, weighted; with 1 "
+                     "sample the sample itself)");
   app.add_option("--radius", o.radius,
                  "filter support radius in pixels (default: the filter's natural support: box 0.5, tent 1, "
-                 "gaussian 3 sigma, mitchell/catmullrom/blackmanharris 2, lanczos/hann tau)");
+                 "gaussian 1.5 (3 sigma when a sigma is given), mitchell/catmullrom/blackmanharris 2, lanczos/hann "
+                 "tau, course-gaussian ceil(2 sigma - 1/2) + 1/2, gaussian-cut 3 sigma)");
   app.add_option("--seed", o.seed, "random seed (default 0)")->check(kSeed);
   app.add_option("--filter-param", o.filterParams,
-                 "filter shape parameters name=value, comma-separated or repeated (defaults: gaussian sigma=0.5 "
-                 "subtract_edge=0, mitchell B=C=1/3, lanczos and hann tau=3)")
+                 "filter shape parameters name=value, comma-separated or repeated (defaults: gaussian sigma=0, "
+                 "i.e. radius / 3, subtract_edge=0; course-gaussian and gaussian-cut sigma=0.5; mitchell B=C=1/3; "
+                 "lanczos and hann tau=3)")
       ->delimiter(',');
   app.add_option("--reconstruction", o.reconstruction, "weighted, classic, importance or supersample");
   app.add_option("--prefilter", o.prefilter,

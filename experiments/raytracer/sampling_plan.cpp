@@ -102,9 +102,8 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     }
     plan.filter = rekeyOption("radius", "-" + classicFilter, [&] { return makeFilter(fname, radius, params); });
   } else if (has("filter")) {
-    // the raytracer's gaussian keeps the course's fixed sigma 0.5 at any --radius (the library's default sigma
-    // follows the radius: r / 3)
-    if (o.filter == "gaussian" && !params.count("sigma")) params["sigma"] = 0.5;
+    // one dialect with the studies: gaussian is the library's (sigma = r / 3 unless a sigma is given); the course's
+    // fixed-sigma Gaussian is course-gaussian by name (the classic -gaussian_filter keeps the course's meaning)
     // without --radius the filter's natural support (defaultFilterRadius, listed in --help)
     const float radius = has("radius") ? o.radius : static_cast<float>(defaultFilterRadius(o.filter, params));
     plan.filter = makeFilter(o.filter, radius, params);

@@ -3,9 +3,11 @@
 //
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
-//   sweep --preset default                     (the default study, results/study)
-//   sweep --preset full                        (the full reference study, results/study_full;
-//                                               run it sharded: experiments/run_full_study.sh)
+//   sweep --preset default                     (the quick study: every bundled scene at 48 px, results/study)
+//   sweep --preset presented                   (the presented study: every bundled scene at 256 px,
+//                                               results/presented; sharded: experiments/run_presented_study.sh)
+//   sweep ... --radii 0.5,1,2,natural          (every filter also at its own natural radius)
+//   sweep ... --align-offsets 8                (the fixed grid's error over 8 seeded sub-pixel camera offsets)
 //   sweep ... --target area,gaussian:1.5       (the targets the error is decomposed against; first = primary)
 //   sweep ... --frames 8 --motion 0.25,0       (aliasing in motion: 8 frames of a camera moving 0.25 px per frame)
 //   sweep ... --shard 2/8                      (a deterministic eighth of the groups; i from 0 to N-1)
@@ -49,7 +51,8 @@ const FrontEnd kSweep{"sweep",
                        {"long-side", "--long-side"}, {"target", "--target"},         {"out", "--out"},
                        {"csv", "--csv"},             {"cache", "--cache"},           {"threads", "--threads"},
                        {"shard", "--shard"},         {"merge", "--merge"},           {"grid", "-grid"},
-                       {"frames", "--frames"},       {"motion", "--motion"}}};
+                       {"frames", "--frames"},       {"motion", "--motion"},         {"align-offsets", "--align-offsets"},
+                       {"align-ref-spp", "--align-ref-spp"}}};
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,14 +67,22 @@ int main(int argc, char** argv) {
   std::vector<std::string> merge;
   app.set_config("--config", "", "read options from a TOML/INI file (keys = long option names)");
   app.add_option("--preset", preset,
-                 "'default': the quick default study (results/study); 'full': the full reference study at 256 px "
-                 "(results/study_full, hours: run experiments/run_full_study.sh); explicit options still override")
+                 "'default': the quick study, every bundled scene at 48 px (results/study); 'presented': the study "
+                 "results/index.html presents, every bundled scene at 256 px, every sampler and filter at radii "
+                 "0.5,1,2,natural (results/presented; over an hour on 2 cores: experiments/run_presented_study.sh shards "
+                 "it); both with spp 4,16,64, 8 seeds, references at 4096 spp, the fixed grid at 8 camera offsets "
+                 "(their references at 256 spp) and three "
+                 "targets (docs/science.md \"The bundled studies\"); explicit options still override")
       ->check(CLI::IsMember(studyPresetNames()));
   app.add_option("--scenes", c.scenes, "scene files or folders of *.txt")->delimiter(',');
   app.add_option("--samplers", c.samplers, "sampler names")->delimiter(',')->capture_default_str();
   app.add_option("--spp", c.spp, "samples per pixel list")->delimiter(',')->capture_default_str();
   app.add_option("--filters", c.filters, "filter names")->delimiter(',')->capture_default_str();
-  app.add_option("--radii", c.radii, "filter radii in pixels (box also gets its classic 0.5)")
+  std::vector<std::string> radii = studyRadiusTokens(c);
+  app.add_option("--radii", radii,
+                 "filter radii in pixels, and 'natural': every filter also at its own natural radius (box 0.5, "
+                 "tent 1, gaussian 1.5, mitchell, catmullrom and blackmanharris 2, lanczos and hann 3), each "
+                 "(filter, radius) once; box also gets its classic 0.5")
       ->delimiter(',')->capture_default_str();
   app.add_option("--reconstruction", c.reconstruction, "weighted|classic|importance|supersample")
       ->delimiter(',')->capture_default_str();
@@ -100,6 +111,13 @@ int main(int argc, char** argv) {
                  "motion columns: shimmer and flicker, docs/science.md \"Motion\")")
       ->capture_default_str();
   app.add_option("--motion", motion, "dx,dy: the camera's motion in pixels per frame (with --frames; default 0.25,0)");
+  app.add_option("--align-offsets", c.alignOffsets,
+                 "K: the fixed grid (sampler uniform) also measured over K seeded sub-pixel camera offsets, each "
+                 "against the targets rendered at that offset (CSV columns align_*; 0 = off; docs/science.md \"The "
+                 "grid and alignment\")")
+      ->capture_default_str();
+  app.add_option("--align-ref-spp", c.alignRefSpp, "samples per pixel of the references at each alignment offset")
+      ->capture_default_str();
   app.add_option("--out", c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
   app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
   app.add_option("--cache", c.cache, "reference cache folder")->capture_default_str();
@@ -130,6 +148,7 @@ int main(int argc, char** argv) {
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
     if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion);
+    if (app.count("--radii")) setStudyRadii(c, radii);
     const SweepSummary s = runSweep(c);
     if (!c.refsOnly)
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",
@@ -146,6 +165,9 @@ int main(int argc, char** argv) {
                   "set-up %.1f, finish %.1f, idle %.1f; main thread: references %.1f s, output %.1f s\n",
                   p.trace, p.splat, p.resolve, p.flip, p.metrics, p.setup, p.finish, p.waiting, p.references, p.io);
       if (c.frames > 1) std::printf("frames: %.1f s of the frames pass (%d frames per seed)\n", p.motion, c.frames);
+      if (p.alignment > 0 || p.alignmentReferences > 0)
+        std::printf("alignment: the fixed grid at %d camera offsets: references %.1f s, the grid's passes %.1f s\n",
+                    c.alignOffsets, p.alignmentReferences, p.alignment);
     }
     if (const SweepPhases& p = s.phases; p.refTrace + p.refSplat + p.refResolve > 0)  // references rendered here
       std::printf("references' thread-seconds: trace %.1f, splat %.1f, resolve %.1f (splat / trace %.2f)\n",

@@ -1,5 +1,6 @@
-// Small text formatting helpers for describe() lines.
+// Small text formatting helpers for describe() lines, and reading a number back.
 #pragma once
+#include <cmath>
 #include <cstdio>
 #include <sstream>
 #include <string>
@@ -22,6 +23,17 @@ inline std::string formatNumber(double v, const char* format = "%g") {
   char buf[64];
   std::snprintf(buf, sizeof buf, format, v);
   return buf;
+}
+
+/// The whole of `text` read as a finite number (std::stod, nothing left over), else NaN.
+inline double parseFiniteNumber(const std::string& text) {
+  try {
+    size_t used = 0;
+    const double v = std::stod(text, &used);
+    return used == text.size() && std::isfinite(v) ? v : NAN;
+  } catch (const std::exception&) {
+    return NAN;
+  }
 }
 
 }  // namespace aliaslab

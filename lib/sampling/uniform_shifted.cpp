@@ -1,5 +1,6 @@
 // uniform-shifted: the regular grid of uniform, shifted as a whole by one
-// random offset per seed.
+// random offset per seed: a Cranley-Patterson rotation of the pixel's lattice
+// (a randomised lattice).
 //
 // | property   | value                                                      |
 // |------------|------------------------------------------------------------|
@@ -10,10 +11,17 @@
 // |            | the same in every pixel (correlatedAcrossPixels)           |
 // | counts     | any spp, as uniform (8 -> 2x4, 7 -> 1x7); warning() says   |
 // |            | so when spp is not a square                                |
-// | use it     | to measure the grid's alignment luck: uniform is one fixed |
-// |            | alignment (identical for every seed, its spread 0); over   |
-// |            | seeds this one averages the error over alignments, and its |
-// |            | structured error counts as noise, seed to seed.            |
+// | what it is | an estimator of its own: the points move, the pixels and   |
+// |            | their filters stay put. Unbiased for each pixel's integral |
+// |            | over seeds, but without the centred grid's symmetry (the   |
+// |            | midpoint rule's), so on content smooth within a pixel its  |
+// |            | variance falls only as 1/N, like random sampling. It is    |
+// |            | NOT the fixed grid's expectation over alignments: that     |
+// |            | moves the scene against points and pixels together, and   |
+// |            | the sweep measures it with camera offsets (study/          |
+// |            | alignment.h, docs/science.md "The grid and alignment").    |
+// |            | Its structured error changes seed to seed, so it counts as |
+// |            | noise.                                                     |
 #include "core/hash.h"
 #include "sampling/sample_math.h"
 #include "sampling/sampler_registry.h"

@@ -62,10 +62,37 @@ std::vector<FilterSpec> studyFilters(const StudyConfig& config) {
   std::vector<FilterSpec> out;
   for (const std::string& f : config.filters) {
     std::vector<double> radii = config.radii;
-    if (f == "box" && config.classicBox && std::find(radii.begin(), radii.end(), 0.5) == radii.end())
-      radii.insert(radii.begin(), 0.5);
+    auto absent = [&](double r) { return std::find(radii.begin(), radii.end(), r) == radii.end(); };
+    if (f == "box" && config.classicBox && absent(0.5)) radii.insert(radii.begin(), 0.5);
+    if (config.naturalRadii && absent(defaultFilterRadius(f))) radii.push_back(defaultFilterRadius(f));
     for (double r : radii) out.emplace_back(f, r);
   }
+  return out;
+}
+
+void setStudyRadii(StudyConfig& config, const std::vector<std::string>& tokens) {
+  std::vector<double> radii;
+  bool natural = false;
+  for (const std::string& t : tokens) {
+    if (t == "natural") {
+      if (natural) throw OptionError("radii", "lists 'natural' twice");
+      natural = true;
+      continue;
+    }
+    const double r = parseFiniteNumber(t);
+    if (!(r > 0))
+      throw OptionError("radii", "expected radii in pixels (finite numbers > 0) or 'natural' (every filter also at "
+                                 "its own natural radius), found '" + t + "'");
+    radii.push_back(r);
+  }
+  if (radii.empty() && !natural) throw OptionError("radii", "needs at least one radius or 'natural'");
+  config.radii = radii, config.naturalRadii = natural;
+}
+
+std::vector<std::string> studyRadiusTokens(const StudyConfig& config) {
+  std::vector<std::string> out;
+  for (double r : config.radii) out.push_back(formatNumber(r, "%.9g"));
+  if (config.naturalRadii) out.push_back("natural");
   return out;
 }
 

@@ -41,6 +41,9 @@ struct StudyConfig {
   std::vector<int> spp = {4, 16};                   ///< samples per pixel, each >= 1
   std::vector<std::string> filters = {"box", "tent", "gaussian"};
   std::vector<double> radii = {0.5, 1.0, 1.5};      ///< support radii in pixels, each > 0
+  /// also every filter at its own natural radius (the registry's defaultFilterRadius: box 0.5, tent 1, gaussian
+  /// 1.5, mitchell 2, lanczos 3, ...), once when it is already in `radii`; `radii` may then be empty
+  bool naturalRadii = false;
   std::vector<std::string> reconstruction = {"weighted"};  ///< weighted|classic|importance|supersample
   /// none|footprint: texture pre-filtering over each hit's pixel footprint
   /// (render/tracer.h); the references are always un-prefiltered.
@@ -68,6 +71,11 @@ struct StudyConfig {
   /// (the CSV without motion columns), F > 1 adds the motion measures to every row.
   int frames = 1;
   double motionDx = 0.25, motionDy = 0;
+  /// The fixed grid's alignment (study/alignment.h; docs/science.md "The grid and alignment"): K seeded sub-pixel
+  /// camera offsets, each with the targets' references rendered there, measured on every row of the sampler
+  /// `uniform` (0: off, the alignment columns stay empty). alignRefSpp: the offset references' samples per pixel.
+  int alignOffsets = 0;
+  int alignRefSpp = 1024;
 };
 
 /// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns
@@ -118,8 +126,17 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
 /// OptionError(key) naming the valid values.
 bool parsePrefilter(const std::string& name, const std::string& key = "prefilter");
 
-/// Every distinct (filter, radius) of the study, in canonical order (names only; expandStudy builds them).
+/// Every distinct (filter, radius) of the study, in canonical order (names only; expandStudy builds them): per
+/// filter the radii in order, box's classic 0.5 first (classicBox), its natural radius last (naturalRadii), each once.
 std::vector<FilterSpec> studyFilters(const StudyConfig& config);
+
+/// The radius list of a study from its tokens: each a radius in pixels (finite, > 0) or "natural" (every filter
+/// also at its natural radius: naturalRadii). Sets config.radii and config.naturalRadii; throws
+/// OptionError("radii") naming a bad token or one given twice.
+void setStudyRadii(StudyConfig& config, const std::vector<std::string>& tokens);
+
+/// The tokens of config's radius list (each radius in %g, then "natural"): what setStudyRadii reads back.
+std::vector<std::string> studyRadiusTokens(const StudyConfig& config);
 
 /// The target T of a study: "area" is the pixel-area reference (box, r = 0.5);
 /// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("target")

@@ -20,56 +20,6 @@ namespace aliaslab {
 
 namespace fs = std::filesystem;
 
-const std::vector<std::string>& csvColumns() {
-  static const std::vector<std::string> cols = {
-      "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
-      "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
-      "ref_error", "flagged", "nan_pixels", "negative_pixels", "undefined_pixels", "trace_ms",
-      "reconstruct_ms", "threads", "target", "mse_target", "blur", "cross", "mse_se", "noise_se",
-      "aliasing_se", "mse_target_se", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
-      "prefilter", "flip", "target_ref_error", "blur_se", "deterministic", "mse_target_seeds", "blurred_mse_own",
-      "lowfreq_error_own", "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se", "blur_ratio_0.5", "blur_ratio_0.5_se",
-      "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2", "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
-      "nonfinite_samples"};
-  return cols;
-}
-
-const std::vector<std::string>& csvMotionColumns() {
-  static const std::vector<std::string> cols = {
-      "frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se", "flicker_new",
-      "flicker_new_se", "shimmer_filter", "shimmer_filter_se"};
-  return cols;
-}
-
-const std::string& csvHeader(bool motion) {
-  static const std::string still = [] {
-    std::string h;
-    for (const std::string& c : csvColumns()) h += (h.empty() ? "" : ",") + c;
-    return h;
-  }();
-  static const std::string moving = [] {
-    std::string h = still;
-    for (const std::string& c : csvMotionColumns()) h += "," + c;
-    return h;
-  }();
-  return motion ? moving : still;
-}
-
-bool isStudyRow(const std::vector<std::string>& f) {
-  return f.size() == csvColumnCount(false) || f.size() == csvColumnCount(true);
-}
-
-size_t csvColumn(const std::string& name) {
-  const auto& cols = csvColumns();
-  const auto it = std::find(cols.begin(), cols.end(), name);
-  if (it == cols.end()) throw std::out_of_range("no CSV column '" + name + "'");
-  return static_cast<size_t>(it - cols.begin());
-}
-
-std::vector<size_t> csvTimingColumns() {
-  return {csvColumn("trace_ms"), csvColumn("reconstruct_ms"), csvColumn("cpu_ms"), csvColumn("cpu_ms_se")};
-}
-
 namespace {
 enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
            kRefSpp = 15, kTarget = 24 };
@@ -122,7 +72,12 @@ std::string formatCsvRow(const CsvRow& r) {
     << real(r.lowfreqErrorOwn) << ',' << real(r.lowfreqErrorOwnSe) << ',' << real(r.cpuMs)
     << ',' << real(r.cpuMsSe);
   for (size_t k = 0; k < r.blurRatio.size(); ++k) s << ',' << real(r.blurRatio[k]) << ',' << real(r.blurRatioSe[k]);
-  s << ',' << r.nonFiniteSamples;
+  s << ',' << r.nonFiniteSamples << ',' << real(r.naturalRadius);
+  if (const auto& a = r.align)
+    s << ',' << a->offsets << ',' << real(a->mseTarget) << ',' << real(a->mseTargetSd) << ',' << real(a->mseTargetSe)
+      << ',' << joinReals(a->perOffset);
+  else
+    s << ",,,,,";
   if (const auto& m = r.motion)
     s << ',' << m->frames << ',' << real(m->dx) << ',' << real(m->dy) << ',' << real(m->shimmer) << ','
       << real(m->shimmerSe) << ',' << real(m->flickerSame) << ',' << real(m->flickerSameSe) << ','

@@ -11,7 +11,8 @@
 //   target_ref_error,blur_se,deterministic,mse_target_seeds,
 //   blurred_mse_own,lowfreq_error_own,lowfreq_error_own_se,cpu_ms,cpu_ms_se,
 //   blur_ratio_0.5,blur_ratio_0.5_se,blur_ratio_1,blur_ratio_1_se,blur_ratio_2,blur_ratio_2_se,
-//   blur_ratio_4,blur_ratio_4_se,nonfinite_samples
+//   blur_ratio_4,blur_ratio_4_se,nonfinite_samples,
+//   natural_radius,align_offsets,align_mse_target,align_mse_target_sd,align_mse_target_se,align_mse_target_offsets
 // Against the configuration's own reference G (the same on every target row of a configuration): mse, aliasing,
 // noise, psnr, ref_error (mean Var G), their *_se; mse_area against the pixel-area reference; blurred_mse_own,
 // lowfreq_error_own(_se). Against the row's target T: mse_target, blur, cross, their *_se, target_ref_error
@@ -33,6 +34,15 @@
 // nonfinite_samples: samples of the K images whose radiance was NaN or infinite and were left out of them (a light
 // or colour beyond float range); 0 in a sound study, docs/integrity.md. An older CSV without the column cannot
 // be resumed (CsvAppender names the missing columns); the analysis reads it as unknown.
+// natural_radius: the registry's natural radius of the row's filter (filter/filter.h defaultFilterRadius: box 0.5,
+// tent 1, gaussian 1.5, ...), so a row at radius == natural_radius is the filter at its own width.
+// The fixed grid's alignment (study/alignment.h; docs/science.md "The grid and alignment"), on rows of the sampler
+// uniform in a study with alignment offsets, empty on every other row: align_offsets K; align_mse_target the mean
+// over the K seeded sub-pixel camera offsets of the grid's mse against the row's target rendered at that offset
+// (that reference's variance subtracted); align_mse_target_sd the sd of the K values; align_mse_target_se
+// sd / sqrt K (each offset has its own independent references, so their error is in the spread);
+// align_mse_target_offsets the K values joined by ';' in offset order. The row's other columns stay those of the
+// centred grid (offset 0).
 // Motion (a study with frames F > 1, study/sweep_motion.h; docs/science.md "Motion"): the CSV gains, after every
 // column above, csvMotionColumns(): frames,motion_dx,motion_dy (key columns), shimmer,shimmer_se,flicker_same,
 // flicker_same_se,flicker_new,flicker_new_se against the row's target T_t, and shimmer_filter,shimmer_filter_se
@@ -65,6 +75,13 @@ struct MotionColumns {
   double dx = 0, dy = 0;  ///< camera motion in pixels per frame
   double shimmer = 0, shimmerSe = 0, flickerSame = 0, flickerSameSe = 0, flickerNew = 0, flickerNewSe = 0;
   double shimmerFilter = 0, shimmerFilterSe = 0;
+};
+
+/// The fixed grid's alignment columns of a row (study/alignment.h).
+struct AlignColumns {
+  int offsets = 0;                   ///< K
+  double mseTarget = 0, mseTargetSd = 0, mseTargetSe = 0;
+  std::vector<double> perOffset;     ///< per offset k: the grid's corrected mse against T at offset k
 };
 
 struct CsvRow {
@@ -100,6 +117,8 @@ struct CsvRow {
   double cpuMs = 0, cpuMsSe = 0;   ///< thread CPU ms per image (mean over seeds) and its standard error
   std::array<double, 4> blurRatio{}, blurRatioSe{};  ///< the blur curve at sigma 0.5, 1, 2, 4 (measure/spectrum.h)
   long long nonFiniteSamples = 0;  ///< NaN / infinite samples left out of the K images (summed over seeds)
+  double naturalRadius = 0;        ///< the registry's natural radius of the row's filter
+  std::optional<AlignColumns> align;  ///< rows of the fixed grid in a study with alignment offsets; else empty cells
   std::optional<MotionColumns> motion;  ///< set in a study with frames (F > 1): the motion columns follow
 };
 

@@ -17,60 +17,55 @@ constexpr int kRefSpp = 4096;
 // band-limited Lanczos-windowed sinc whose sinc zeros fall on integer pixels (r = 3).
 const std::vector<std::string> kTargets = {"area", "gaussian:1.5", "lanczos:3"};
 
-void applyDefaultPreset(StudyConfig& c) {
+// The fixed grid over 8 seeded sub-pixel camera offsets (as many as the seeds), each judged against the targets
+// rendered there at kAlignRefSpp samples per pixel (docs/science.md "The grid and alignment" says why that many).
+constexpr int kAlignOffsets = 8;
+constexpr int kAlignRefSpp = 256;
+
+// What both studies share: the bundled scenes (the folder), spp, seeds, references, targets, the radii 0.5, 1, 2
+// and each filter's natural radius, the grid's alignment.
+void applyCommon(StudyConfig& c) {
   c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
-  c.samplers = {"random",  "uniform", "uniform-shifted", "jittered",
-                "sobol",   "pmj02",   "bluenoise",
-                "zsobol",  "bluenoise-dither:random", "adaptive-contrast:jittered"};
   c.spp = {4, 16, 64};
-  c.filters = {"box", "tent", "gaussian", "mitchell", "lanczos"};
   c.radii = {0.5, 1.0, 2.0};
+  c.naturalRadii = true;
   c.reconstruction = {"weighted"};
   c.seeds = 8;
   c.refSpp = kRefSpp;
   c.targets = kTargets;
+  c.alignOffsets = kAlignOffsets;
+  c.alignRefSpp = kAlignRefSpp;
+}
+
+void applyDefaultPreset(StudyConfig& c) {
+  applyCommon(c);
+  c.samplers = {"random",  "uniform", "uniform-shifted", "jittered",
+                "sobol",   "pmj02",   "bluenoise",
+                "zsobol",  "bluenoise-dither:random", "adaptive-contrast:jittered"};
+  c.filters = {"box", "tent", "gaussian", "mitchell", "lanczos"};
   c.maxSize = 48;
   c.out = "results/study";
   c.images = true;
 }
 
-void applyFullPreset(StudyConfig& c) {
-  c.scenes = {std::string(ALIASLAB_SOURCE_DIR) + "/scenes"};
-  c.samplers = samplerNames();
-  c.spp = {4, 16, 64};
-  c.filters = filterNames();
-  c.radii = {0.5, 1.0, 1.5, 2.0};
-  c.reconstruction = {"weighted"};
-  c.seeds = 8;
-  c.refSpp = kRefSpp;
-  c.targets = kTargets;
-  c.longSide = 256;
-  c.out = "results/study_full";
-  // No per-configuration images: 10 scenes x ~2000 configurations at 256 px would be gigabytes, and the report
-  // picks its images after the run (best and worst per scene); it says so where they are missing.
-  c.images = false;
-}
-
-// The study results/index.html presents: the full study's samplers, filters, spp, seeds, references and targets
-// at 256 px, on the five scenes whose content is the question (zone plate, Siemens star, checkerboard to the
-// horizon, fence, and the band-limited sinc as the control), at radii 0.5, 1, 2. Its cost is the reconstruction
-// (every sample splatted into 24 (filter, radius) pairs at 64 spp), about 8 minutes per scene on 2 cores
-// (results/study_speed.md); the full preset runs all ten scenes at four radii.
+// The study results/index.html presents: every bundled scene at 256 px on the larger side, every per-pixel sampler
+// and every study filter. No per-configuration images: 10 scenes x ~1,000 configurations at 256 px would be
+// gigabytes, and the report picks its images after the run (the viewer renders them, analysis/viewer).
 void applyPresentedPreset(StudyConfig& c) {
-  applyFullPreset(c);
-  const std::string s = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/";
-  c.scenes = {s + "zoneplate.txt", s + "siemens.txt", s + "checker_horizon.txt", s + "fence.txt", s + "sinc.txt"};
-  c.radii = {0.5, 1.0, 2.0};
+  applyCommon(c);
+  c.samplers = samplerNames();
+  c.filters = filterNames();
+  c.longSide = 256;
   c.out = "results/presented";
+  c.images = false;
 }
 }  // namespace
 
-std::vector<std::string> studyPresetNames() { return {"default", "presented", "full"}; }
+std::vector<std::string> studyPresetNames() { return {"default", "presented"}; }
 
 bool applyStudyPreset(const std::string& name, StudyConfig& config) {
   if (name == "default") applyDefaultPreset(config);
   else if (name == "presented") applyPresentedPreset(config);
-  else if (name == "full") applyFullPreset(config);
   else return false;
   return true;
 }

@@ -13,6 +13,7 @@
 #include "core/parallel.h"
 #include "core/progress.h"
 #include "core/stopwatch.h"
+#include "study/alignment.h"
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/group_writer.h"
@@ -80,7 +81,7 @@ std::vector<SampleSetGroup> planShard(const StudyConfig& config, const StudyPlan
 
 // One group: its rows' accumulators, its seeds (study/sweep_group.h), its rows finished, then handed to the writer.
 void runGroupRows(SweepRun& run, StudyScene& scene, const SampleSetGroup& group, std::vector<PendingRow>& rows,
-                  const RowReferences& refs, const MotionReferences& motion) {
+                  const RowReferences& refs, const MotionReferences& motion, const std::vector<ReferenceSet>& align) {
   if (rows.empty()) {
     run.progress.advance(run.config.seeds);
     return;
@@ -108,6 +109,11 @@ void runGroupRows(SweepRun& run, StudyScene& scene, const SampleSetGroup& group,
     const Stopwatch frames;
     measureGroupMotion(run.config, scene, tracer, group, rows, motion, run.plan.targets, run.threads);
     phases.motion += frames.seconds();
+  }
+  if (group.sampler == kFixedGridSampler && !align.empty()) {  // the grid at every camera offset
+    const Stopwatch offsets;
+    measureGroupAlignment(scene, tracer, group, rows, align, run.threads);
+    phases.alignment += offsets.seconds();
   }
   run.sum.primaryRays += tracer.counters().total().primary - rays0;
 
@@ -195,9 +201,21 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   MotionReferences motion{{&refs}, &specs};
   for (const ReferenceSet& r : later) motion.perFrame.push_back(&r);
   run.sum.phases.references += clock.seconds();
+  // The fixed grid's alignment: the targets' references at every camera offset (study/alignment.h).
+  bool grid = false;
+  for (size_t g = 0; g < groups.size(); ++g)
+    grid = grid || (groups[g]->sampler == kFixedGridSampler && (config.refsOnly || !pending[g].empty()));
+  std::vector<ReferenceSet> align;
+  if (grid && config.alignOffsets > 0) {
+    const Stopwatch offsets;
+    std::vector<FilterSpec> targets;
+    for (const Target& t : run.plan.targets) targets.push_back(t.spec);
+    align = alignmentReferences(config, *scene, targets, alignmentReferenceOptions(config));
+    run.sum.phases.alignmentReferences += offsets.seconds();
+  }
   if (config.refsOnly) return;
   const RowReferences rowRefs(refs, specs, run.plan.targets);
-  for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs, motion);
+  for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs, motion, align);
 }
 
 // The groups of `groups` from `first` that share its scene (groups come scene by scene).

@@ -7,6 +7,7 @@
 
 #include "core/format.h"
 #include "core/parallel.h"
+#include "filter/filter.h"
 #include "study/contact.h"
 #include "study/spectrum_files.h"
 
@@ -42,6 +43,7 @@ CsvRow templateRow(const StudyConfig& c, const std::string& stem, SceneSize size
   r.reconstruction = toString(cfg.mode);
   r.seeds = c.seeds, r.refSpp = c.refSpp, r.threads = resolveThreads(c.threads);
   r.prefilter = g.prefilter;
+  r.naturalRadius = defaultFilterRadius(r.filter);
   return r;
 }
 }  // namespace
@@ -107,6 +109,7 @@ void finishRow(PendingRow& p, const std::vector<Target>& targets, size_t areaInd
     r.flip = p.flipSums[j] / seeds;
     r.flagged = r.mseTarget < 2.0 * r.mseTargetSe ? 1 : 0;
     if (!p.motion.empty()) r.motion = p.motion[j];
+    if (!p.align.empty()) r.align = p.align[j];
     p.rows.push_back(std::move(r));
   }
   if (images)

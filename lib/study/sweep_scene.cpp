@@ -20,19 +20,24 @@ std::map<FilterSpec, const ReferenceImage*> byFilter(const ReferenceSet& set, co
 }
 }  // namespace
 
-ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
-                             const ReferenceOptions& options, bool images) {
-  ReferenceSet refs = cachedReferences(scene, specs, options, config.cache);
-  if (config.refsOnly) return refs;
+void writeSceneManifest(const StudyConfig& config, const StudyScene& scene, const ReferenceSet& refs,
+                        const std::string& name) {
   // each image as a path from the manifest's folder to the cached EXR
-  const fs::path manifests = fs::path(config.out) / "references";
+  const fs::path path = fs::path(config.out) / "references" / name, manifests = path.parent_path();
   std::vector<std::string> names;
   for (const auto& r : refs.images)
     names.push_back((fs::absolute(fs::path(config.cache) / (r.key + ".exr")).lexically_normal())
                         .lexically_relative(fs::absolute(manifests).lexically_normal())
                         .string());
   fs::create_directories(manifests);
-  writeTextFile((manifests / (scene.stem + ".json")).string(), referenceManifest(scene, refs, names));
+  writeTextFile(path.string(), referenceManifest(scene, refs, names));
+}
+
+ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
+                             const ReferenceOptions& options, bool images) {
+  ReferenceSet refs = cachedReferences(scene, specs, options, config.cache);
+  if (config.refsOnly) return refs;
+  writeSceneManifest(config, scene, refs, scene.stem + ".json");
   if (images) {
     const fs::path imageDir = fs::path(config.out) / "images" / scene.stem;
     fs::create_directories(imageDir);

@@ -25,6 +25,10 @@ namespace aliaslab {
 ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
                              const ReferenceOptions& options, bool images);
 
+/// Writes the manifest of `refs` (rendered for `scene` as it stands) to OUT/references/`name`.
+void writeSceneManifest(const StudyConfig& config, const StudyScene& scene, const ReferenceSet& refs,
+                        const std::string& name);
+
 class RowReferences {
  public:
   /// `set` holds the references of `specs` (in that order, kAreaSpec and every target among them) and outlives this.

@@ -27,6 +27,9 @@ struct SweepPhases {
   double motion = 0;               ///< wall seconds of the frames pass (frames > 1, study/sweep_motion.h)
   /// The references rendered by this run (none from the cache), thread-seconds (study/reference.h ReferenceSet)
   double refTrace = 0, refSplat = 0, refResolve = 0;
+  /// The fixed grid's alignment (study/alignment.h), wall seconds: its offset references (cache or pass) and its
+  /// passes over the offsets (the grid traced, reconstructed and measured at each).
+  double alignmentReferences = 0, alignment = 0;
 };
 
 struct SweepSummary {

@@ -12,6 +12,7 @@
 #include "filter/filter.h"
 #include "render/sample_source.h"
 #include "sampling/sampler.h"
+#include "study/alignment.h"
 #include "study/csv.h"
 #include "study/spectrum_files.h"
 #include "study/study_scene.h"
@@ -65,7 +66,7 @@ StudyPlan validateStudy(const StudyConfig& c) {
   if (c.samplers.empty()) throw OptionError("samplers", "needs at least one sampler");
   if (c.filters.empty()) throw OptionError("filters", "needs at least one filter");
   if (c.spp.empty()) throw OptionError("spp", "needs at least one sample count");
-  if (c.radii.empty()) throw OptionError("radii", "needs at least one radius");
+  if (c.radii.empty() && !c.naturalRadii) throw OptionError("radii", "needs at least one radius or 'natural'");
   if (c.reconstruction.empty()) throw OptionError("reconstruction", "needs at least one mode");
   if (c.prefilter.empty()) throw OptionError("prefilter", "needs at least one of none, footprint");
   for (const std::string& p : c.prefilter) parsePrefilter(p);
@@ -77,6 +78,15 @@ StudyPlan validateStudy(const StudyConfig& c) {
                                                     std::to_string(c.seeds));
   // The reference options: one check (study/reference.h), the same as the reference front end's.
   rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
+  if (c.alignOffsets < 0 || c.alignOffsets > 4096)
+    throw OptionError("align-offsets", "must be in 0..4096 (0: no alignment columns), found " +
+                                           std::to_string(c.alignOffsets));
+  if (c.alignOffsets == 1)
+    throw OptionError("align-offsets", "needs K >= 2 offsets (their spread is measured) or 0 for none");
+  if (c.alignOffsets > 0)
+    rekeyOption("ref-spp", "align-ref-spp", [&] {
+      rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(alignmentReferenceOptions(c)); });
+    });
   if (c.threads < 0) throw OptionError("threads", "must be >= 0");
   if (c.frames < 1 || c.frames > 1000)
     throw OptionError("frames", "must be in 1..1000 (1: a still study), found " + std::to_string(c.frames));
@@ -140,10 +150,12 @@ StudyPlan validateStudy(const StudyConfig& c) {
     const double pixels = double(size.width) * size.height;
     // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
     const double image = double(imageBytes(size.width, size.height));
+    // the fixed grid's alignment: the targets' references at every offset, held for the scene
+    const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
     const double frames = c.frames > 1 ? double(rowsPerGroup) * c.seeds * c.frames * image +
                                              (c.frames - 1) * pixels * double(referenceCount) * 6 * sizeof(float)
                                        : 0.0;
-    requireMemory(frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
+    requireMemory(offsets + frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
                                                    weightedRows, c.seeds)) +
                       std::max(pixels * references,
                                referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
@@ -192,6 +204,14 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
                                                    field(f, studyWide[k].first) + " (data row " +
                                                    std::to_string(i + 1) + "); this run asks for " + wanted[k] +
                                                    sameStudyAdvice());
+    // So are the fixed grid's alignment offsets (empty cells: none).
+    const std::string offsets = c.alignOffsets > 0 ? std::to_string(c.alignOffsets) : "";
+    if (field(f, "sampler") == kFixedGridSampler && field(f, "align_offsets") != offsets)
+      throw OptionError("align-offsets", csv + " holds a study made with " +
+                                             (field(f, "align_offsets").empty() ? std::string("no alignment offsets")
+                                                                                : field(f, "align_offsets") + " alignment offsets") +
+                                             " (data row " + std::to_string(i + 1) + "); this run asks for " +
+                                             (offsets.empty() ? std::string("none") : offsets) + sameStudyAdvice());
     // Frames and motion are study-wide too (the CsvAppender refuses a still CSV for a study with frames).
     const size_t m = csvColumns().size();
     if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatNumber(c.motionDx, "%.9g") ||

@@ -198,6 +198,39 @@ TEST_F(RaytracerTest, RenderFilterShowsTheCutGaussianThatIsUsed) {
                                            1 - std::sqrt(std::exp(-0.5f * (0.36f + 0.0025f)))), 2 * k8bit);
 }
 
+// One filter dialect (issue 44): --filter gaussian is the studies' Gaussian, sigma = radius / 3 at any radius; the
+// course's fixed-sigma Gaussian is --filter course-gaussian; the classic -gaussian_filter keeps the course's meaning.
+TEST_F(RaytracerTest, FilterGaussianIsTheStudiesAndCourseGaussianTheCourses) {
+  const int band = 34;  // colour bar band below the 181 x 181 picture (visualize.h kColorBarHeight)
+  // green = 1 - sqrt(w) for a positive weight w (peak 1), as in RenderFilterShowsTheCutGaussianThatIsUsed
+  auto green = [](float dx, float dy, float sigma) {
+    return 1 - std::sqrt(std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)));
+  };
+  // --radius 3: sigma 1, so at offset (1.2, 0.05) the weight is exp(-0.72) = 0.49 (the course's sigma 0.5: 0.056)
+  ASSERT_EQ(run("-input " + kScene + " -size 9 9 --filter gaussian --radius 3 -render_filter " + path("g3.png") +
+                " 20").code, 0);
+  const Image g3 = readImage(path("g3.png"));
+  expectColor(g3, 90 + 24, band + 91, Color(1, green(1.2f, 0.05f, 1.f), green(1.2f, 0.05f, 1.f)), 2 * k8bit);
+  // --radius 1.5 (its natural radius, also without --radius): sigma 0.5
+  ASSERT_EQ(run("-input " + kScene + " -size 9 9 --filter gaussian -render_filter " + path("g.png") + " 20").code, 0);
+  const Image g = readImage(path("g.png"));
+  expectColor(g, 90 + 12, band + 91, Color(1, green(0.6f, 0.05f, 0.5f), green(0.6f, 0.05f, 0.5f)), 2 * k8bit);
+  // course-gaussian at --radius 3 keeps sigma 0.5 (square support, uncut inside it)
+  ASSERT_EQ(run("-input " + kScene + " -size 9 9 --filter course-gaussian --radius 3 -render_filter " + path("c3.png") +
+                " 20").code, 0);
+  const Image c3 = readImage(path("c3.png"));
+  expectColor(c3, 90 + 24, band + 91, Color(1, green(1.2f, 0.05f, 0.5f), green(1.2f, 0.05f, 0.5f)), 2 * k8bit);
+  // the classic flag: the course's gather with the course's Gaussian, the same image as course-gaussian named
+  const std::string base = "-input " + kScene + " -size 16 16 ";
+  ASSERT_EQ(run(base + "-jittered_samples 4 -gaussian_filter 0.5 -output " + path("classic.exr")).code, 0);
+  ASSERT_EQ(run(base + "--sampler jittered --spp 4 --filter course-gaussian --reconstruction classic -output " +
+                path("named.exr")).code, 0);
+  ASSERT_EQ(run(base + "--sampler jittered --spp 4 --filter gaussian --reconstruction weighted -output " +
+                path("study.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("classic.exr")), readImage(path("named.exr"))));
+  EXPECT_FALSE(identical(readImage(path("classic.exr")), readImage(path("study.exr"))));
+}
+
 TEST_F(RaytracerTest, RenderFilterShowsNegativeLobesInBlue) {
   const Result r = run("-input " + kScene + " -size 9 9 --filter lanczos --radius 3 -render_filter " +
                        path("l.png") + " 20");

@@ -251,27 +251,45 @@ TEST(SweepReferenceError, AliasingAgreesBetween256And4096SppReferencesWhileTheUn
   EXPECT_EQ(uncorrectedApart, 3);  // at 64 spp the 256-spp reference's error is ~10 standard errors
 }
 
-// The bundled studies: references at least 64 x the highest spp, the three targets; the presented study at 256 px
-// with every sampler and filter and no per-configuration images.
+// The bundled studies: references at least 64 x the highest spp, the three targets, every filter also at its natural
+// radius, the fixed grid over 8 offsets; the presented study every bundled scene at 256 px with every sampler and
+// filter and no per-configuration images; the quick one the same scenes at 48 px.
 TEST(SweepPresets, ConvergedReferencesAndThreeTargets) {
-  for (const std::string name : {"default", "presented", "full"}) {
+  EXPECT_EQ(studyPresetNames(), (std::vector<std::string>{"default", "presented"}));
+  for (const std::string& name : studyPresetNames()) {
     StudyConfig c;
     ASSERT_TRUE(applyStudyPreset(name, c)) << name;
     EXPECT_GE(c.refSpp, 64 * *std::max_element(c.spp.begin(), c.spp.end())) << name;
     EXPECT_EQ(c.targets, (std::vector<std::string>{"area", "gaussian:1.5", "lanczos:3"})) << name;
     EXPECT_NO_THROW(parseTargets(c.targets)) << name;
+    EXPECT_EQ(c.radii, (std::vector<double>{0.5, 1.0, 2.0})) << name;
+    EXPECT_TRUE(c.naturalRadii) << name;
+    EXPECT_EQ(c.alignOffsets, 8) << name;
+    // the offset references: converged past the highest judged spp (4 x), and together (K x alignRefSpp) at most half
+    // the main references' samples (docs/science.md "The grid and alignment": their cost)
+    EXPECT_GE(c.alignRefSpp, 4 * *std::max_element(c.spp.begin(), c.spp.end())) << name;
+    EXPECT_LE(c.alignOffsets * c.alignRefSpp, c.refSpp / 2) << name;
+    EXPECT_EQ(c.spp, (std::vector<int>{4, 16, 64})) << name;
+    EXPECT_EQ(c.seeds, 8) << name;
+    EXPECT_EQ(c.refSpp, 4096) << name;
+    // the folder of bundled scenes: ten of them, meshes, reflection and refraction among the analytic patterns
+    const std::vector<std::string> scenes = expandScenePaths(c.scenes);
+    EXPECT_EQ(scenes.size(), 10u) << name;
+    for (const char* stem : {"zoneplate", "checker_horizon", "vase", "gem", "glass_sphere", "reflective_refractive"})
+      EXPECT_TRUE(std::any_of(scenes.begin(), scenes.end(),
+                              [&](const std::string& s) { return fs::path(s).stem() == stem; }))
+          << name << " " << stem;
   }
-  StudyConfig full;
-  applyStudyPreset("full", full);
-  EXPECT_EQ(full.longSide, 256);
-  EXPECT_EQ(full.samplers, samplerNames());
-  EXPECT_EQ(full.filters, filterNames());
-  EXPECT_EQ(full.spp, (std::vector<int>{4, 16, 64}));
-  EXPECT_EQ(full.radii, (std::vector<double>{0.5, 1.0, 1.5, 2.0}));
-  EXPECT_EQ(full.seeds, 8);
-  EXPECT_EQ(full.refSpp, 4096);
-  EXPECT_EQ(full.images, std::optional<bool>(false));
+  StudyConfig presented;
+  applyStudyPreset("presented", presented);
+  EXPECT_EQ(presented.longSide, 256);
+  EXPECT_EQ(presented.samplers, samplerNames());
+  EXPECT_EQ(presented.filters, filterNames());
+  EXPECT_EQ(presented.images, std::optional<bool>(false));
+  EXPECT_EQ(studyFilters(presented).size(), filterNames().size() * 3 + 3);  // + gaussian 1.5, lanczos 3, hann 3
   StudyConfig quick;
   applyStudyPreset("default", quick);
   EXPECT_EQ(quick.maxSize, 48);
+  for (const std::string& f : quick.filters)
+    EXPECT_NE(std::find(presented.filters.begin(), presented.filters.end(), f), presented.filters.end()) << f;
 }

@@ -27,6 +27,7 @@
 #include "study/csv.h"
 #include "study/study_scene.h"
 #include "study/sweep.h"
+#include "support/study_rows.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;
@@ -59,16 +60,7 @@ const fs::path& sweepDir() {
   return dir;
 }
 
-std::vector<std::vector<std::string>> csvRows(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::string line;
-  std::getline(in, line);
-  EXPECT_EQ(line, csvHeader());
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(in, line))
-    if (!line.empty()) rows.push_back(splitCsvLine(line));
-  return rows;
-}
+std::vector<std::vector<std::string>> csvRows(const fs::path& csv) { return aliaslab::testing::readStudyRows(csv.string()); }
 
 size_t column(const std::string& name) {
   const auto& cols = csvColumns();
