@@ -22,7 +22,7 @@
 #include "core/error.h"
 #include "study/config.h"
 #include "study/merge.h"
-#include "study/motion_study.h"
+#include "study/motion_frame.h"
 #include "study/presets.h"
 #include "study/sweep.h"
 

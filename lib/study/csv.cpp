@@ -37,7 +37,7 @@ const std::vector<std::string>& csvColumns() {
 const std::vector<std::string>& csvMotionColumns() {
   static const std::vector<std::string> cols = {
       "frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se", "flicker_new",
-      "flicker_new_se", "shimmer_filter", "shimmer_filter_se"};
+      "flicker_new_se", "target_shimmer"};
   return cols;
 }
 
@@ -126,8 +126,7 @@ std::string formatCsvRow(const CsvRow& r) {
   if (const auto& m = r.motion)
     s << ',' << m->frames << ',' << real(m->dx) << ',' << real(m->dy) << ',' << real(m->shimmer) << ','
       << real(m->shimmerSe) << ',' << real(m->flickerSame) << ',' << real(m->flickerSameSe) << ','
-      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->shimmerFilter) << ','
-      << real(m->shimmerFilterSe);
+      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->targetShimmer);
   return s.str();
 }
 
