@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
                                     std::to_string(size[1]) + " (leave --size out for each scene's own size)");
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
-    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion);
+    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion), c.motionGiven = true;
     const SweepSummary s = runSweep(c);
     if (!c.refsOnly)
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",

@@ -68,6 +68,7 @@ struct StudyConfig {
   /// (the CSV without motion columns), F > 1 adds the motion measures to every row.
   int frames = 1;
   double motionDx = 0.25, motionDy = 0;
+  bool motionGiven = false;  ///< the motion was asked for (refused without frames: a still study has none)
 };
 
 /// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns

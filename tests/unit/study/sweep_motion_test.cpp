@@ -13,6 +13,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -214,6 +215,37 @@ TEST(SweepMotion, ShardsMergeIntoTheWholeStudy) {
         EXPECT_EQ(rows[r][i], whole[r][i]) << "row " << r << " column " << i;
       }
     }
+}
+
+// A study with frames resumes row by row like a still one: a rerun skips every row, and after a kill (the CSV
+// cut back to its header and first rows) the rerun measures only the rows lost and ends with the same CSV.
+TEST(SweepMotion, ResumesRowByRow) {
+  const StudyConfig c = study("resume", 3, 1);
+  runSweep(c);
+  std::ifstream in(csvPath(c));
+  const std::string whole((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const SweepSummary again = runSweep(c);
+  EXPECT_EQ(again.rowsWritten, 0u);
+  EXPECT_EQ(again.rowsSkipped, 16u);
+  std::vector<std::string> lines;
+  std::istringstream text(whole);
+  for (std::string l; std::getline(text, l);) lines.push_back(l);
+  ASSERT_EQ(lines.size(), 17u);
+  {
+    std::ofstream cut(csvPath(c), std::ios::trunc);
+    for (size_t i = 0; i < 9; ++i) cut << lines[i] << "\n";  // the header and 8 rows: one configuration's kept
+  }
+  const SweepSummary resumed = runSweep(c);
+  EXPECT_EQ(resumed.rowsSkipped, 8u);
+  EXPECT_EQ(resumed.rowsWritten, 8u);
+  std::string header;
+  const auto rows = readRows(c, header);
+  std::vector<std::vector<std::string>> want;
+  for (size_t i = 1; i < lines.size(); ++i) want.push_back(splitCsvLine(lines[i]));
+  ASSERT_EQ(rows.size(), want.size());
+  for (size_t r = 0; r < rows.size(); ++r)
+    for (size_t i = 0; i < rows[r].size(); ++i)
+      if (!variable(i)) EXPECT_EQ(rows[r][i], want[r][i]) << "row " << r << " column " << i;
 }
 
 TEST(SweepMotion, RefusesBadFramesAndMotion) {
