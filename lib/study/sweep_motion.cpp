@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 #include "film/film.h"
 #include "measure/motion.h"
@@ -70,9 +71,14 @@ void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& t
                                                       std::vector<std::vector<Image>>(K, std::vector<Image>(F)));
   const bool shared = std::any_of(rows.begin(), rows.end(),  // a row reconstructs the shared sample set
                                   [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
+  for (size_t r = 0; r < rows.size(); ++r) {  // frame 0: the still pass's images (study/sweep_group.h)
+    if (rows[r].frame0.size() != size_t(K)) throw std::logic_error("measureGroupMotion: frame 0 images missing");
+    for (int k = 0; k < K; ++k) images[r][k][0] = std::move(rows[r].frame0[k]);
+    rows[r].frame0.clear();
+  }
   for (int k = 0; k < K; ++k) {
     const auto source = makeSampleSource(group.sampler, group.spp, static_cast<uint64_t>(k));
-    for (int t = 0; t < F; ++t) {
+    for (int t = 1; t < F; ++t) {
       camera.set(t);
       const SampleBuffer samples = shared ? source->trace(tracer, scene.width, scene.height, threads) : SampleBuffer();
       for (size_t r = 0; r < rows.size(); ++r) {

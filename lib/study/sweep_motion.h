@@ -6,8 +6,8 @@
 // each frame cached under its own key (study/motion_frame.h setMotionFrame: the content hash gains the frame's
 // camera offset; frame 0 is the still study's entry). Per group, after the still pass (study/sweep_group.h:
 // frame 0 of every seed folded into the rows' RowMeasures exactly as in a still study, so the still columns are
-// frame 0's), measureGroupMotion() renders every seed's F frames (sampler seed k in every frame; frame 0
-// again), reconstructs each with every row's filter and mode (film/film.h reconstruct; importance rows trace
+// frame 0's, and kept in PendingRow::frame0), measureGroupMotion() renders every seed's frames 1 .. F-1 (sampler
+// seed k in every frame; frame 0 is the still pass's, traced once), reconstructs each with every row's filter and mode (film/film.h reconstruct; importance rows trace
 // their own), and gives each row its motion columns per target of the study (PendingRow::motion, study/csv.h
 // MotionColumns): shimmer and the two flickers of the row's frames registered to the content (no target
 // enters; the same in each target's line), and the target's own registered shimmer.

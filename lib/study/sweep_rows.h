@@ -42,6 +42,7 @@ struct PendingRow {
   std::vector<double> flipSums;  ///< per target: sum over the seeds of meanFlip(I_k, T), in seed order
   std::vector<CsvRow> rows;      ///< finishRow: the missing target rows, in target order
   std::vector<MotionColumns> motion;  ///< per target: the motion columns (frames > 1, study/sweep_motion.h)
+  std::vector<Image> frame0;  ///< frames > 1: each seed's still image (frame 0), in seed order, for the motion pass
 };
 
 /// What an adaptive sampler actually spent in a group (mean over seeds of the mean spp, max over seeds),

@@ -248,6 +248,14 @@ TEST(SweepMotion, ResumesRowByRow) {
       if (!variable(i)) EXPECT_EQ(rows[r][i], want[r][i]) << "row " << r << " column " << i;
 }
 
+// Frame 0 is the still pass's: a study with F frames traces F times the still study's primary rays, not F + 1.
+TEST(SweepMotion, FrameZeroIsTracedOnce) {
+  const SweepSummary still = runSweep(study("rays-still", 1, 1));
+  const SweepSummary frames = runSweep(study("rays-frames", 3, 1));
+  ASSERT_GT(still.primaryRays, 0u);
+  EXPECT_EQ(frames.primaryRays, 3 * still.primaryRays);
+}
+
 TEST(SweepMotion, RefusesBadFramesAndMotion) {
   StudyConfig c = study("bad", 0, 1);
   EXPECT_THROW(runSweep(c), OptionError);
