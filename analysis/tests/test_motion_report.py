@@ -4,7 +4,7 @@
 - on the committed motion study (results/motion/study/study.csv), every number of the section's prose is
   recomputed here from the CSV's text with the csv module (another path than pandas and facts()), and found in
   the page results/motion/index.html;
-- the loop's frame-0 error of point sampling with the box r 0.5 against the pixel-area reference equals the
+- the loop's frame errors are the library's (imgdiff), read from a CSV; its frame-0 error of point sampling with the box r 0.5 against the pixel-area reference equals the
   study's mse_target of that configuration (another renderer run, another reference: within 5 %);
 - a still study has no motion section."""
 import csv
@@ -15,7 +15,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import motion_loop
+from ..aliaslab_analysis import errors, motion_loop
 from ..aliaslab_analysis.report import motion
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
@@ -60,10 +60,19 @@ class Facts(unittest.TestCase):
         self.assertIsNone(motion.motion_rows(pd.DataFrame({"target": ["box:0.5"], "error": [1.0]}), "box:0.5"))
         self.assertIsNone(motion.motion_rows(pd.DataFrame({"target": ["box:0.5"], "frames": [1]}), "box:0.5"))
 
-    def test_frame_errors(self):
-        ref = [np.zeros((2, 2, 3)), np.ones((2, 2, 3))]
-        img = [np.full((2, 2, 3), 0.5), np.full((2, 2, 3), 0.75)]
-        self.assertEqual(motion_loop.frame_errors(img, ref), [0.25, 0.0625])
+    def test_frame_errors_are_read_from_the_librarys_csv(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "errors.csv")
+            with open(path, "w") as f:
+                f.write("name,frame,mse\nbox,1,0.5\nbox,0,0.25\nother,0,9\n")
+            self.assertEqual(motion_loop.read_errors(path, ["box"], 2), {"box": [0.25, 0.5]})
+            with self.assertRaises(errors.InputError):
+                motion_loop.read_errors(path, ["box"], 3)  # frame 2 missing
+            with open(path, "a") as f:
+                f.write("box,1,x\n")
+            with self.assertRaisesRegex(errors.InputError, "line 5"):
+                motion_loop.read_errors(path, ["box"], 2)
 
 
 @unittest.skipUnless(os.path.isfile(STUDY) and os.path.isfile(PAGE), "the committed motion study is not there")
