@@ -3,12 +3,14 @@ scene, each method's frames beside the reference's, the signed error of each fra
 reference, and each frame's error (the mean squared difference over pixels and channels) written on it.
 
 Frames are EXR files NAME_0000.exr, NAME_0001.exr, ... as `raytracer -frames F -motion dx,dy -output NAME.exr`
-writes them (results/motion/make_study.sh), read with viewer/exr.py (oiiotool). Writes an animated PNG (Pillow,
-Debian's python3-pil) and beside it a CSV of the errors (method, frame, mse), which the report's motion section
-shows (report/motion.py).
+writes them (results/motion/make_study.sh), read with viewer/exr.py (oiiotool). Each frame's error is the
+library's, not computed again here: `imgdiff NAME_t.exr REF_t.exr` (its mse line) for every method and frame,
+gathered in the --errors CSV (name,frame,mse; make_study.sh writes it). Writes an animated PNG (Pillow, Debian's
+python3-pil) and beside it a CSV of the errors (method, frame, mse), which the report's motion section shows
+(report/motion.py).
 
-  python3 -m aliaslab_analysis.motion_loop --frames DIR --reference ref --methods box=box r 0.5,gauss=gaussian r 1.5
-      --out results/motion/loop.png"""
+  python3 -m aliaslab_analysis.motion_loop --frames DIR --reference ref --errors DIR/errors.csv
+      --methods box=box r 0.5,gauss=gaussian r 1.5 --out results/motion/loop.png"""
 import argparse
 import csv
 import glob
@@ -33,9 +35,33 @@ def frame_paths(folder, name):
     return paths
 
 
-def frame_errors(images, references):
-    """Per frame: the mean over pixels and channels of (I_t - R_t)^2."""
-    return [float(np.mean((np.asarray(i, dtype=np.float64) - r) ** 2)) for i, r in zip(images, references)]
+def read_errors(path, names, frames):
+    """{name: [mse of frame 0, 1, ...]} from the library's errors CSV (name,frame,mse); InputError naming the file
+    and line for a bad value, and the file for a missing or repeated (name, frame)."""
+    out = {n: [None] * frames for n in names}
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        raise errors.InputError(f"{path}: cannot read: {e.strerror or e}") from e
+    if not rows or rows[0] != ["name", "frame", "mse"]:
+        raise errors.InputError(f"{path}: line 1: expected the header name,frame,mse")
+    for line, r in enumerate(rows[1:], start=2):
+        if not r:
+            continue
+        try:
+            name, t, mse = r[0], int(r[1]), float(r[2])
+        except (ValueError, IndexError):
+            raise errors.InputError(f"{path}: line {line}: expected name,frame,mse, found {','.join(r)!r}") from None
+        if name not in out:
+            continue
+        if not 0 <= t < frames or out[name][t] is not None or not np.isfinite(mse):
+            raise errors.InputError(f"{path}: line {line}: frame {t} of {name}: out of range, repeated or not finite")
+        out[name][t] = mse
+    for n, v in out.items():
+        if None in v:
+            raise errors.InputError(f"{path}: no error for frame {v.index(None)} of {n} (imgdiff's mse per frame)")
+    return out
 
 
 def display(image):
@@ -70,17 +96,19 @@ def compose(panels, labels):
     return canvas
 
 
-def write_loop(folder, reference, methods, out):
-    """Reads the frames, writes the animated PNG `out` and out's .csv (method, frame, mse); returns the rows."""
+def write_loop(folder, reference, methods, out, errors_csv):
+    """Reads the frames and their errors, writes the animated PNG `out` and out's .csv (method, frame, mse); returns
+    the rows."""
     ref_paths = frame_paths(folder, reference)
     refs = read_exrs(ref_paths)
+    measured = read_errors(errors_csv, [name for name, _ in methods], len(ref_paths))
     shown, rows = [], []
     for name, label in methods:
         paths = frame_paths(folder, name)
         if len(paths) != len(ref_paths):
             raise errors.InputError(f"{folder}: {len(paths)} frames of {name}, {len(ref_paths)} of {reference}")
         images = read_exrs(paths)
-        errs = frame_errors(images, refs)
+        errs = measured[name]
         rows += [(label, t, e) for t, e in enumerate(errs)]
         shown.append((label, images, errs))
     frames = []
@@ -106,6 +134,8 @@ def main(argv=None):
     p.add_argument("--frames", required=True, help="folder of the EXR frames")
     p.add_argument("--reference", required=True, help="NAME of the reference frames (NAME_0000.exr, ...)")
     p.add_argument("--methods", required=True, help="NAME=label pairs, comma-separated")
+    p.add_argument("--errors", required=True, help="CSV name,frame,mse: imgdiff's mse of each frame against the "
+                   "reference's")
     p.add_argument("--out", required=True, help="the animated PNG (its .csv is written beside it)")
     a = p.parse_args(argv)
     methods = []
@@ -115,7 +145,7 @@ def main(argv=None):
             p.error(f"--methods: expected NAME=label, found '{item}'")
         methods.append((name, label))
     try:
-        rows = write_loop(a.frames, a.reference, methods, a.out)
+        rows = write_loop(a.frames, a.reference, methods, a.out, a.errors)
     except errors.InputError as e:
         print(f"motion_loop: {e}", file=sys.stderr)
         return 2

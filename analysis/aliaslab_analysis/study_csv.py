@@ -40,6 +40,11 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
                     # offsets (references moved with the camera), on the fixed grid's rows only
                     "natural_radius", "align_offsets", "align_mse_target", "align_mse_target_sd",
                     "align_mse_target_se"]
+# A study with frames (sweep --frames F > 1; lib/study/csv.h, docs/science.md "Motion") adds these after the
+# still columns, all of them required once `frames` is there; frames and the motion are finite and one per CSV.
+MOTION_COLUMNS = ["frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se",
+                  "flicker_new", "flicker_new_se", "target_shimmer"]
+MOTION_KEY = ["frames", "motion_dx", "motion_dy"]
 # Key and count columns, which must be finite; values beyond ABSURD in any other numeric column are
 # beyond what float images can give (their squared differences stay below about 1e77): such a value is
 # treated as unknown (NaN) with a note, so charts and rankings leave it out instead of overflowing.
@@ -69,7 +74,12 @@ def read_study_csv(path):
         raise InputError(f"{path}: line 1: missing column(s) {', '.join(missing)}")
     if df.empty:
         raise InputError(f"{path}: no data rows")
-    for c in STUDY_COLUMNS + [c for c in OPTIONAL_NUMERIC if c in df.columns]:
+    motion = MOTION_COLUMNS if "frames" in df.columns else []
+    missing = [c for c in motion if c not in df.columns]
+    if missing:
+        raise InputError(f"{path}: line 1: a study with frames (column frames) without the motion column(s) "
+                         f"{', '.join(missing)}: written by another version of the sweep? Rerun it")
+    for c in STUDY_COLUMNS + [c for c in OPTIONAL_NUMERIC if c in df.columns] + motion:
         if c in TEXT_COLUMNS:
             continue
         raw = df[c].astype(str).str.strip()
@@ -88,8 +98,30 @@ def read_study_csv(path):
         if bad.any():
             line = int(bad.nonzero()[0][0]) + 2
             raise InputError(f"{path}: line {line}: column {c}: {df[c].iloc[line - 2]!r} is not a finite number >= 0")
+    if motion:
+        check_motion(df, path)
     df["time_ms"] = df["trace_ms"] + df["reconstruct_ms"]
     return df
+
+
+def check_motion(df, path):
+    """Raises InputError naming the line when a study with frames has a non-finite or fractional frame count, a
+    non-finite motion, or a second (frames, motion): one CSV holds one motion (the sweep refuses to mix them)."""
+    for c in MOTION_KEY:
+        v = df[c].to_numpy(dtype=float)
+        bad = ~np.isfinite(v) | ((v < 1) | (v != np.round(v)) if c == "frames" else False)
+        if np.any(bad):
+            line = int(np.nonzero(bad)[0][0]) + 2
+            raise InputError(f"{path}: line {line}: column {c}: {df[c].iloc[line - 2]!r} is not "
+                             + ("a whole number of frames >= 1" if c == "frames" else "a finite motion in pixels per frame"))
+    first = df[MOTION_KEY].iloc[0]
+    other = ~(df[MOTION_KEY] == first).all(axis=1)
+    if other.any():
+        i = int(np.nonzero(other.to_numpy())[0][0])
+        r = df[MOTION_KEY].iloc[i]
+        raise InputError(f"{path}: line {i + 2}: {int(r['frames'])} frames of motion ({r['motion_dx']:g}, "
+                         f"{r['motion_dy']:g}), line 2 {int(first['frames'])} frames of ({first['motion_dx']:g}, "
+                         f"{first['motion_dy']:g}): a study CSV holds one motion")
 
 
 def check_lines(path):

@@ -71,6 +71,37 @@ class CsvInput(unittest.TestCase):
         rows[2] = ",".join(f)
         self.refused(self.write("\r\n".join(rows)), "line 3", "column mse is empty")
 
+    def motion_csv(self, change=None, drop=None):
+        """The synthetic study with the motion columns of a study with frames; `change(i, row)` edits data row i."""
+        import csv as csvmod
+        rows = list(csvmod.reader(io.StringIO(self.text)))
+        head = rows[0] + [c for c in study_csv.MOTION_COLUMNS if c != drop]
+        out = [head]
+        for i, r in enumerate(rows[1:]):
+            if not r:
+                continue
+            m = dict(zip(study_csv.MOTION_COLUMNS, ["8", "0.25", "0", "1e-3", "1e-4", "2e-3", "1e-4", "3e-3", "1e-4",
+                                                     "5e-4"]))
+            if change:
+                change(i, m)
+            out.append(r + [m[c] for c in study_csv.MOTION_COLUMNS if c != drop])
+        text = io.StringIO()
+        csvmod.writer(text, lineterminator="\n").writerows(out)
+        return self.write(text.getvalue(), "motion.csv")
+
+    def test_motion_columns_are_checked(self):
+        df, _ = study_csv.load_study(self.motion_csv())
+        self.assertEqual(float(df["shimmer"].iloc[0]), 1e-3)
+        self.refused(self.motion_csv(lambda i, m: m.update(shimmer="abc") if i == 2 else None),
+                     "line 4", "column shimmer", "not a number")
+        self.refused(self.motion_csv(drop="shimmer"), "line 1", "motion column(s) shimmer")
+        self.refused(self.motion_csv(lambda i, m: m.update(motion_dx="0.5") if i == 1 else None),
+                     "line 3", "holds one motion")
+        self.refused(self.motion_csv(lambda i, m: m.update(frames="inf") if i == 0 else None), "line 2", "frames")
+        # NaN in every shimmer loads (the value is unknown) and the section leaves it out of its rankings
+        df, _ = study_csv.load_study(self.motion_csv(lambda i, m: m.update(shimmer="nan")))
+        self.assertTrue(df["shimmer"].isna().all())
+
     def test_a_non_finite_size_is_refused(self):
         rows = self.text.split("\r\n")
         f = rows[1].split(",")

@@ -25,7 +25,7 @@
 #include "study/config.h"
 #include "study/contract.h"
 #include "study/merge.h"
-#include "study/motion_study.h"
+#include "study/motion_frame.h"
 #include "study/presets.h"
 #include "study/sweep.h"
 
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
                                     std::to_string(size[1]) + " (leave --size out for each scene's own size)");
     if (!size.empty()) c.width = size[0], c.height = size[1];
     if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
-    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion);
+    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion), c.motionGiven = true;
     if (app.count("--radii")) setStudyRadii(c, radii);
     const SweepSummary s = runSweep(c);
     if (!c.refsOnly)

@@ -76,6 +76,7 @@ struct StudyConfig {
   /// `uniform` (0: off, the alignment columns stay empty). alignRefSpp: the offset references' samples per pixel.
   int alignOffsets = 0;
   int alignRefSpp = 1024;
+  bool motionGiven = false;  ///< the motion was asked for (refused without frames: a still study has none)
 };
 
 /// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns

@@ -81,8 +81,7 @@ std::string formatCsvRow(const CsvRow& r) {
   if (const auto& m = r.motion)
     s << ',' << m->frames << ',' << real(m->dx) << ',' << real(m->dy) << ',' << real(m->shimmer) << ','
       << real(m->shimmerSe) << ',' << real(m->flickerSame) << ',' << real(m->flickerSameSe) << ','
-      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->shimmerFilter) << ','
-      << real(m->shimmerFilterSe);
+      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->targetShimmer);
   return s.str();
 }
 

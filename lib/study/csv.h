@@ -45,8 +45,9 @@
 // centred grid (offset 0).
 // Motion (a study with frames F > 1, study/sweep_motion.h; docs/science.md "Motion"): the CSV gains, after every
 // column above, csvMotionColumns(): frames,motion_dx,motion_dy (key columns), shimmer,shimmer_se,flicker_same,
-// flicker_same_se,flicker_new,flicker_new_se against the row's target T_t, and shimmer_filter,shimmer_filter_se
-// against the configuration's own references G_t (the same on every target row). The still columns above are
+// flicker_same_se,flicker_new,flicker_new_se of the configuration's frames registered to the content (no target
+// enters: the same on every target row), and target_shimmer, the row's target's own registered shimmer (the
+// pixel-area image aliases too; measure/motion.h). The still columns above are
 // then those of frame 0. A still study (F = 1) writes exactly the columns above; one CSV holds one kind.
 // Reals are printed with %.9g; fields holding a comma or quote are quoted.
 //
@@ -74,7 +75,7 @@ struct MotionColumns {
   int frames = 0;
   double dx = 0, dy = 0;  ///< camera motion in pixels per frame
   double shimmer = 0, shimmerSe = 0, flickerSame = 0, flickerSameSe = 0, flickerNew = 0, flickerNewSe = 0;
-  double shimmerFilter = 0, shimmerFilterSe = 0;
+  double targetShimmer = 0;  ///< the target's own registered shimmer
 };
 
 /// The fixed grid's alignment columns of a row (study/alignment.h).

@@ -24,7 +24,7 @@ const std::vector<std::string>& csvColumns() {
 const std::vector<std::string>& csvMotionColumns() {
   static const std::vector<std::string> cols = {
       "frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se", "flicker_new",
-      "flicker_new_se", "shimmer_filter", "shimmer_filter_se"};
+      "flicker_new_se", "target_shimmer"};
   return cols;
 }
 

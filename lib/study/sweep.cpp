@@ -189,17 +189,20 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   // The scene's acceleration structure and tracer: built once, here.
   const auto scene = loadStudyScene(path, config.width, config.height, config.maxSize, config.longSide);
   const ReferenceSet refs = sceneReferences(config, *scene, specs, referenceOptions(config), run.sum.images);
-  // With frames: every later frame's references too (study/sweep_motion.h).
-  const std::vector<ReferenceSet> later = config.frames > 1 ? frameReferences(config, *scene, specs,
-                                                                              referenceOptions(config))
-                                                            : std::vector<ReferenceSet>();
   auto countReferences = [&p = run.sum.phases](const ReferenceSet& r) {
     p.refTrace += r.traceSeconds, p.refSplat += r.splatSeconds, p.refResolve += r.resolveSeconds;
   };
   countReferences(refs);
-  for (const ReferenceSet& r : later) countReferences(r);
-  MotionReferences motion{{&refs}, &specs};
-  for (const ReferenceSet& r : later) motion.perFrame.push_back(&r);
+  // With frames: every later frame's target references too, and the targets' own shimmer (study/sweep_motion.h).
+  MotionReferences motion;
+  if (config.frames > 1) {
+    std::vector<FilterSpec> targetSpecs;
+    for (const Target& t : run.plan.targets)
+      if (std::find(targetSpecs.begin(), targetSpecs.end(), t.spec) == targetSpecs.end()) targetSpecs.push_back(t.spec);
+    const std::vector<ReferenceSet> later = frameReferences(config, *scene, targetSpecs, referenceOptions(config));
+    for (const ReferenceSet& r : later) countReferences(r);
+    motion = motionReferences(config, refs, specs, later, targetSpecs, run.plan.targets);
+  }
   run.sum.phases.references += clock.seconds();
   // The fixed grid's alignment: the targets' references at every camera offset (study/alignment.h).
   bool grid = false;

@@ -117,6 +117,7 @@ void foldSeeds(const GroupContext& g, PendingRow& p, const std::vector<RowImage*
     p.stats += img.r.stats;
     p.traceMs += img.traceMs / g.config.seeds, p.reconMs += img.reconMs / g.config.seeds;
     p.cpuMs.push_back(img.cpuMs);
+    if (g.config.frames > 1) p.frame0.push_back(img.r.image);  // frame 0 of the motion pass: traced once
     if (k0 + int(i) == 0 && g.images) p.seed0 = std::move(img.r.image);
   }
 }

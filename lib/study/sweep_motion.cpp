@@ -3,11 +3,12 @@
 
 #include <algorithm>
 #include <memory>
+#include <stdexcept>
 
 #include "film/film.h"
 #include "measure/motion.h"
 #include "render/sample_source.h"
-#include "study/motion_study.h"
+#include "study/motion_frame.h"
 
 namespace aliaslab {
 
@@ -30,13 +31,8 @@ class FrameCamera {
   uint64_t hash_;
 };
 
-size_t indexOf(const std::vector<FilterSpec>& specs, const FilterSpec& spec) {
-  return size_t(std::find(specs.begin(), specs.end(), spec) - specs.begin());
-}
-
-// Frame t's estimate of the reference of `spec`.
-RefEstimate estimate(const MotionReferences& refs, int t, const FilterSpec& spec) {
-  const ReferenceImage& r = refs.perFrame[t]->images.at(indexOf(*refs.specs, spec));
+RefEstimate estimate(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const FilterSpec& spec) {
+  const ReferenceImage& r = set.images.at(size_t(std::find(specs.begin(), specs.end(), spec) - specs.begin()));
   return {&r.image, &r.halfDiff, spec.second};
 }
 
@@ -53,6 +49,18 @@ std::vector<ReferenceSet> frameReferences(const StudyConfig& c, StudyScene& scen
   return sets;
 }
 
+MotionReferences motionReferences(const StudyConfig& c, const ReferenceSet& still,
+                                  const std::vector<FilterSpec>& stillSpecs, const std::vector<ReferenceSet>& later,
+                                  const std::vector<FilterSpec>& laterSpecs, const std::vector<Target>& targets) {
+  MotionReferences m;
+  for (const Target& target : targets) {
+    std::vector<RefEstimate> T{estimate(still, stillSpecs, target.spec)};
+    for (const ReferenceSet& r : later) T.push_back(estimate(r, laterSpecs, target.spec));
+    m.targetShimmer.push_back(targetShimmer(T, c.motionDx, c.motionDy));
+  }
+  return m;
+}
+
 void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& tracer, const SampleSetGroup& group,
                         std::vector<PendingRow>& rows, const MotionReferences& refs,
                         const std::vector<Target>& targets, int threads) {
@@ -63,9 +71,14 @@ void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& t
                                                       std::vector<std::vector<Image>>(K, std::vector<Image>(F)));
   const bool shared = std::any_of(rows.begin(), rows.end(),  // a row reconstructs the shared sample set
                                   [](const PendingRow& p) { return p.mode != ReconMode::ImportanceSampled; });
+  for (size_t r = 0; r < rows.size(); ++r) {  // frame 0: the still pass's images (study/sweep_group.h)
+    if (rows[r].frame0.size() != size_t(K)) throw std::logic_error("measureGroupMotion: frame 0 images missing");
+    for (int k = 0; k < K; ++k) images[r][k][0] = std::move(rows[r].frame0[k]);
+    rows[r].frame0.clear();
+  }
   for (int k = 0; k < K; ++k) {
     const auto source = makeSampleSource(group.sampler, group.spp, static_cast<uint64_t>(k));
-    for (int t = 0; t < F; ++t) {
+    for (int t = 1; t < F; ++t) {
       camera.set(t);
       const SampleBuffer samples = shared ? source->trace(tracer, scene.width, scene.height, threads) : SampleBuffer();
       for (size_t r = 0; r < rows.size(); ++r) {
@@ -81,18 +94,11 @@ void measureGroupMotion(const StudyConfig& c, StudyScene& scene, const Tracer& t
   }
   for (size_t r = 0; r < rows.size(); ++r) {
     PendingRow& p = rows[r];
-    const FilterSpec own = p.mode == ReconMode::Supersample ? kAreaSpec : p.filter.spec;
-    std::vector<RefEstimate> g;
-    for (int t = 0; t < F; ++t) g.push_back(estimate(refs, t, own));
-    const MotionMetrics mine = computeMotionMetrics(images[r], g);
+    const MotionMetrics m = computeMotionMetrics(images[r], c.motionDx, c.motionDy);
     p.motion.clear();
-    for (const Target& target : targets) {
-      std::vector<RefEstimate> T;
-      for (int t = 0; t < F; ++t) T.push_back(estimate(refs, t, target.spec));
-      const MotionMetrics m = computeMotionMetrics(images[r], T);
+    for (size_t i = 0; i < targets.size(); ++i)
       p.motion.push_back({F, c.motionDx, c.motionDy, m.shimmer, m.shimmerSe, m.flickerSameSeed, m.flickerSameSeedSe,
-                          m.flickerNewSeed, m.flickerNewSeedSe, mine.shimmer, mine.shimmerSe});
-    }
+                          m.flickerNewSeed, m.flickerNewSeedSe, refs.targetShimmer.at(i)});
     images[r].clear();
   }
 }

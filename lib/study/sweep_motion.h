@@ -1,18 +1,20 @@
 // Frames in the sweep: a study with F > 1 frames of a camera moving (dx, dy) pixels per frame
 // (StudyConfig::frames, motionDx, motionDy; docs/science.md "Motion"; measure/motion.h for the measures).
+// `sweep --frames F --motion dx,dy` is the one motion driver.
 //
-// Protocol, per scene: frameReferences() gives, for frames 1 .. F-1, the references of the same (filter, radius)
-// list as the scene's still references (frame 0), each frame cached under its own key (study/motion_study.h
-// setMotionFrame: the content hash gains the frame's camera offset; frame 0 is the still study's entry).
-// Per group, after the still pass (study/sweep_group.h: frame 0 of every seed folded into the rows' RowMeasures
-// exactly as in a still study, so the still columns are frame 0's), measureGroupMotion() renders every seed's F
-// frames (sampler seed k in every frame; frame 0 again), reconstructs each with every row's filter and mode
-// (film/film.h reconstruct; importance rows trace their own), and gives each row its motion columns per target
-// of the study (PendingRow::motion, study/csv.h MotionColumns): shimmer and the two flickers against that
-// target's T_t, shimmer_filter against the row's own references G_t (the pixel area for supersample rows).
+// Protocol, per scene: frameReferences() gives, for frames 1 .. F-1, the references of the study's targets,
+// each frame cached under its own key (study/motion_frame.h setMotionFrame: the content hash gains the frame's
+// camera offset; frame 0 is the still study's entry). Per group, after the still pass (study/sweep_group.h:
+// frame 0 of every seed folded into the rows' RowMeasures exactly as in a still study, so the still columns are
+// frame 0's, and kept in PendingRow::frame0), measureGroupMotion() renders every seed's frames 1 .. F-1 (sampler
+// seed k in every frame; frame 0 is the still pass's, traced once), reconstructs each with every row's filter and mode (film/film.h reconstruct; importance rows trace
+// their own), and gives each row its motion columns per target of the study (PendingRow::motion, study/csv.h
+// MotionColumns): shimmer and the two flickers of the row's frames registered to the content (no target
+// enters; the same in each target's line), and the target's own registered shimmer.
 // Memory: a row holds its K x F images until its measures are taken (rows x K x F images per group), and every
-// frame's references are held for the scene; validateStudy adds both to the still pass's bound (sweep_memory.h). Threads: seeds and frames in order, each trace and reconstruction
-// on every thread; no number depends on the thread count. The scene's camera and content hash are restored.
+// frame's target references are held for the scene; validateStudy adds both to the still pass's bound
+// (sweep_memory.h). Threads: seeds and frames in order, each trace and reconstruction on every thread; no
+// number depends on the thread count. The scene's camera and content hash are restored.
 #pragma once
 #include <vector>
 
@@ -28,11 +30,17 @@ namespace aliaslab {
 std::vector<ReferenceSet> frameReferences(const StudyConfig& config, StudyScene& scene,
                                           const std::vector<FilterSpec>& specs, const ReferenceOptions& options);
 
-/// Every frame's references of one scene: `perFrame[t]` (t = 0 .. F-1) holds the references of `specs` in order.
+/// Every target's references over the frames: targetShimmer[i] is target i's registered shimmer (measure/motion.h
+/// targetShimmer), computed once per scene.
 struct MotionReferences {
-  std::vector<const ReferenceSet*> perFrame;
-  const std::vector<FilterSpec>* specs = nullptr;
+  std::vector<double> targetShimmer;
 };
+
+/// The targets' shimmer from frame 0's references (`still`, holding every spec of `targets`) and the later frames'
+/// (`later`, from frameReferences with the targets' specs in order, `laterSpecs`).
+MotionReferences motionReferences(const StudyConfig& config, const ReferenceSet& still,
+                                  const std::vector<FilterSpec>& stillSpecs, const std::vector<ReferenceSet>& later,
+                                  const std::vector<FilterSpec>& laterSpecs, const std::vector<Target>& targets);
 
 /// The motion columns of each row of `group` (rows traced with `tracer`, which reads `scene`'s camera).
 void measureGroupMotion(const StudyConfig& config, StudyScene& scene, const Tracer& tracer,

@@ -63,6 +63,7 @@ std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const s
       for (const Target& t : targets) {
         CsvRow keyed = p.row;
         keyed.target = t.label;
+        if (config.frames > 1) keyed.motion = MotionColumns{config.frames, config.motionDx, config.motionDy};  // its key
         p.missing.push_back(!out || !out->has(csvKey(keyed)));
         any = any || p.missing.back();
         skipped += p.missing.back() ? 0 : 1;

@@ -43,6 +43,7 @@ struct PendingRow {
   std::vector<CsvRow> rows;      ///< finishRow: the missing target rows, in target order
   std::vector<MotionColumns> motion;  ///< per target: the motion columns (frames > 1, study/sweep_motion.h)
   std::vector<AlignColumns> align;    ///< per target: the fixed grid's alignment columns (study/alignment.h)
+  std::vector<Image> frame0;  ///< frames > 1: each seed's still image (frame 0), in seed order, for the motion pass
 };
 
 /// What an adaptive sampler actually spent in a group (mean over seeds of the mean spp, max over seeds),

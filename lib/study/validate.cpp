@@ -10,6 +10,7 @@
 #include "core/files.h"
 #include "core/format.h"
 #include "filter/filter.h"
+#include "measure/registration.h"
 #include "render/sample_source.h"
 #include "sampling/sampler.h"
 #include "study/alignment.h"
@@ -93,6 +94,8 @@ StudyPlan validateStudy(const StudyConfig& c) {
   if (!std::isfinite(c.motionDx) || !std::isfinite(c.motionDy) || std::abs(c.motionDx) > 1e4 ||
       std::abs(c.motionDy) > 1e4)
     throw OptionError("motion", "dx and dy must be finite numbers of pixels per frame (at most 1e4)");
+  if (c.motionGiven && c.frames == 1)
+    throw OptionError("motion", "needs frames F > 1: a still study (one frame) has no motion");
   if ((c.width > 0) != (c.height > 0) || c.width < 0 || c.height < 0)
     throw OptionError("size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("max-size", "must be >= 0");
@@ -152,16 +155,28 @@ StudyPlan validateStudy(const StudyConfig& c) {
     const double image = double(imageBytes(size.width, size.height));
     // the fixed grid's alignment: the targets' references at every offset, held for the scene
     const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
+    // (later frames render the targets' references only)
     const double frames = c.frames > 1 ? double(rowsPerGroup) * c.seeds * c.frames * image +
-                                             (c.frames - 1) * pixels * double(referenceCount) * 6 * sizeof(float)
+                                             (c.frames - 1) * pixels * double(c.targets.size() + 1) * 6 * sizeof(float)
                                        : 0.0;
+    if (c.frames > 1 && std::min(size.width, size.height) <= 2 * registrationMargin(c.motionDx, c.motionDy))
+      throw OptionError("motion", fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
+                                      std::to_string(size.height) + " has no pixel " +
+                                      std::to_string(registrationMargin(c.motionDx, c.motionDy)) +
+                                      " pixels from its border, where shimmer is measured (the motion per frame "
+                                      "plus the registration's margin, docs/science.md \"Motion\")");
+    const std::string framesWhat =
+        c.frames > 1 ? " with " + std::to_string(c.frames) + " frames (" + std::to_string(rowsPerGroup) + " rows x " +
+                           std::to_string(c.seeds) + " seeds x " + std::to_string(c.frames) +
+                           " frames of images held per group)"
+                     : "";
     requireMemory(offsets + frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
                                                    weightedRows, c.seeds)) +
                       std::max(pixels * references,
                                referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
-                  "size",
+                  c.frames > 1 ? "frames" : "size",
                   fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
-                      std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp");
+                      std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp" + framesWhat);
   }
 
   // Outputs that must be regular files (a FIFO would block, a folder cannot be appended to): refused up front.

@@ -1,14 +1,15 @@
-"""The motion section of the report (issue 33 item 4; definitions docs/science.md "Motion"). For a study CSV made
+"""The motion section of the report (issues 33 and 47; definitions docs/science.md "Motion"). For a study CSV made
 with frames (sweep --frames F > 1: the motion columns of lib/study/csv.h), against the primary target:
-  - per scene a chart: shimmer against blur, shimmer_filter against blur and shimmer against noise, one line
-    per (sampler, spp, filter) through its radii;
+  - per scene a chart: shimmer (measured in the content's frame) against blur and against noise, one line per
+    (sampler, spp, filter) through its radii, the target's own shimmer drawn as a level;
   - per scene and (sampler, spp) the still-image ranking (mse_target, frame 0) beside the in-motion rankings
     (shimmer, and flicker with one seed per sequence), each in order with its top group (tied with the best by
     the two-standard-error rule, stats/ties.py top_group) in bold;
   - the animated loop of frames of one scene with each frame's error (motion_loop.py), when loop.png and its
     loop.csv are beside the CSV.
-Every number in the prose comes from facts(), computed from the CSV; tests/analysis/test_motion_report.py
-recomputes them from the CSV's text by another path. '' for a still study (no frames column, or F = 1)."""
+Every number in the prose comes from facts(), computed from the CSV; analysis/tests/test_motion_report.py
+recomputes them from the CSV's text by another path. '' for a still study (no frames column, or F = 1).
+Rows whose measure is not finite are left out of that measure's ranking and counts."""
 import csv
 import html
 import os
@@ -39,7 +40,7 @@ def method(r):
 
 def ranked(cell, column, se_column, paired):
     """The cell's rows in order of `column` with ties.top_group's `top` (paired by seeds only for mse_target)."""
-    rows = cell.copy()
+    rows = cell[np.isfinite(cell[column].astype(float))].copy()
     rows["error"], rows["error_se"] = rows[column].astype(float), rows[se_column].astype(float)
     if not paired:
         rows = rows.drop(columns=[c for c in ("seed_values",) if c in rows.columns])
@@ -47,46 +48,58 @@ def ranked(cell, column, se_column, paired):
 
 
 def best(cell, column):
-    return method(cell.loc[cell[column].astype(float).idxmin()])
+    """The method with the lowest finite value of `column`, None when no value is finite."""
+    v = cell[column].astype(float)
+    v = v[np.isfinite(v)]
+    return None if v.empty else method(cell.loc[v.idxmin()])
+
+
+def steady(r):
+    """Shimmer zero within two standard errors (a deterministic row: below 1e-5, the registration's border error)."""
+    s, se = float(r["shimmer"]), float(r["shimmer_se"])
+    return bool(np.isfinite(s)) and abs(s) <= (2 * se if np.isfinite(se) and se > 0 else 0) + 1e-5
 
 
 def facts(rows):
     """The section's numbers: cells = (scene, sampler, spp); `tradeoff`: cells whose Gaussians of radius 1 or more
     (two radii or more; at r = 0.5, sigma = r / 3 is narrower than the pixel, and its blur against the pixel
-    area a sharpening) have shimmer_filter falling and blur rising with the radius, value by value;
+    area a sharpening) have shimmer falling and blur rising with the radius, value by value;
     `differ_shimmer` / `differ_flicker`: cells whose lowest mse_target is another method than their lowest
-    shimmer / flicker_same; `wide_more`: cells whose widest Gaussian has a higher shimmer than their box r = 0.5 (against the target)."""
-    out = dict(cells=0, gaussian_cells=0, tradeoff=0, differ_shimmer=0, differ_flicker=0, box_cells=0, wide_more=0)
+    shimmer / flicker_same (cells with no finite value left out); `steady`: per scene (sorted), (scene, rows
+    whose shimmer is zero within error (steady()), rows)."""
+    out = dict(cells=0, gaussian_cells=0, tradeoff=0, differ_shimmer=0, differ_flicker=0, steady=[])
     for _, cell in rows.groupby(["scene", "sampler", "spp"], sort=True):
         out["cells"] += 1
-        out["differ_shimmer"] += best(cell, "mse_target") != best(cell, "shimmer")
-        out["differ_flicker"] += best(cell, "mse_target") != best(cell, "flicker_same")
+        still = best(cell, "mse_target")
+        out["differ_shimmer"] += still is not None and best(cell, "shimmer") not in (None, still)
+        out["differ_flicker"] += still is not None and best(cell, "flicker_same") not in (None, still)
         g = cell[(cell["filter_name"] == "gaussian") & (cell["reconstruction"] == "weighted") &
                  (cell["radius"].astype(float) >= 1)].sort_values("radius")
         if len(g) >= 2:
             out["gaussian_cells"] += 1
-            sf, blur = g["shimmer_filter"].to_numpy(float), g["blur"].to_numpy(float)
-            out["tradeoff"] += bool((np.diff(sf) < 0).all() and (np.diff(blur) > 0).all())
-        box = cell[(cell["filter_name"] == "box") & (cell["radius"].astype(float) == 0.5) &
-                   (cell["reconstruction"] == "weighted")]
-        if len(g) >= 1 and len(box) == 1:
-            out["box_cells"] += 1
-            out["wide_more"] += float(g["shimmer"].iloc[-1]) > float(box["shimmer"].iloc[0])
+            sh, blur = g["shimmer"].to_numpy(float), g["blur"].to_numpy(float)
+            out["tradeoff"] += bool((np.diff(sh) < 0).all() and (np.diff(blur) > 0).all())
+    for scene, sd in rows.groupby("scene", sort=True):
+        out["steady"].append((str(scene), int(sum(steady(r) for _, r in sd.iterrows())), len(sd)))
     return out
 
 
 def chart(rows, scene, out_dir):
-    """shimmer vs blur, shimmer_filter vs blur, shimmer vs noise for one scene; returns the PNG path."""
-    panels = [("blur", "shimmer", "shimmer (against the target)"),
-              ("blur", "shimmer_filter", "shimmer_filter (against own references)"),
-              ("noise", "shimmer", "shimmer (against the target)")]
-    fig, axes = plt.subplots(1, 3, figsize=(15, 4.4))
+    """shimmer vs blur and shimmer vs noise for one scene, the target's own shimmer as a level; returns the PNG."""
+    panels = [("blur", "shimmer", "shimmer (content frame) against blur"),
+              ("noise", "shimmer", "shimmer (content frame) against noise")]
+    fig, axes = plt.subplots(1, 2, figsize=(15, 5.2))
+    styles = {spp: ["-", "--", ":", "-."][i % 4] for i, spp in enumerate(sorted(rows["spp"].unique()))}
     sd = rows[rows["scene"] == scene]
+    level = sd["target_shimmer"].astype(float)
+    level = float(level[np.isfinite(level)].median()) if np.isfinite(level).any() else None
     for ax, (x, y, title) in zip(axes, panels):
+        if level is not None:
+            ax.axhline(level, color="0.4", linestyle=":", label=f"the target's own shimmer ({level:.2g})")
         for (sampler, spp, name, recon), line in sd.groupby(["sampler", "spp", "filter_name", "reconstruction"]):
             line = line.sort_values("radius")
             ax.plot(line[x].astype(float), line[y].astype(float), marker=palette.filter_marker(name),
-                    color=palette.sampler_colour(sampler), linestyle="-" if int(spp) == sd["spp"].min() else "--",
+                    color=palette.sampler_colour(sampler), linestyle=styles[spp],
                     label=f"{sampler} {int(spp)} spp, {name}" + ("" if recon == "weighted" else f" ({recon})"))
             for _, r in line.iterrows():
                 ax.annotate(f"{float(r['radius']):g}", (float(r[x]), float(r[y])), fontsize=7, xytext=(3, 3),
@@ -97,8 +110,10 @@ def chart(rows, scene, out_dir):
         ax.set_ylabel(y)
         ax.set_title(title, fontsize=10)
         ax.grid(alpha=0.3)
-    axes[0].legend(fontsize=7, loc="best")
-    fig.suptitle(f"{scene}: aliasing in motion beside blur and noise (numbers: filter radius; lower is steadier)")
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, fontsize=7, loc="center left", bbox_to_anchor=(0.8, 0.5), ncol=2 if len(labels) > 20 else 1)
+    fig.subplots_adjust(left=0.05, right=0.79, wspace=0.25)
+    fig.suptitle(f"{scene}: shimmer beside blur and noise (numbers: filter radius; lower is steadier)")
     return figures.save_figure(fig, out_dir, f"motion-{figures.slug(scene)}")[0]
 
 
@@ -134,9 +149,9 @@ def loop_part(results, folder, embed):
     return (figure(results, png, "A short loop of frames (the camera moving as in the study): the reference, then "
                    "per method its frame and its signed error against that frame's reference (red above, blue "
                    "below), with the frame's error (mean squared difference) above it. Made by "
-                   "<code>motion_loop.py</code> from <code>raytracer -frames</code> renders. A grating moved across its "
-                   "stripes has the same error in every frame: what changes is where the error lies, and that "
-                   "change is the shimmer.", embed,
+                   "<code>motion_loop.py</code> from <code>raytracer -frames</code> renders. Below Nyquist the error moves "
+                   "with the stripes (the blur of the filter): an eye following them sees it steady, and shimmer, "
+                   "measured in the content's frame, is zero.", embed,
                    anchor="motion-loop", toc="motion: a loop of frames")
             + f"<table><tr><th>method</th>{head}<th>mean</th></tr>{rows}</table>")
 
@@ -148,26 +163,28 @@ def motion_section(c):
     f = facts(rows)
     frames = int(rows["frames"].iloc[0])
     dx, dy = float(rows["motion_dx"].iloc[0]), float(rows["motion_dy"].iloc[0])
+    steady_text = "; ".join(f"{html.escape(sc)} {n} of {total}" for sc, n, total in f["steady"])
     body = ["<h2 id='motion'>Aliasing in motion</h2>",
             f"<p>Every configuration rendered in {frames} frames of a camera moving ({dx:g}, {dy:g}) pixels per "
-            f"frame, each frame against its own references (definitions: <a href='{c.science}'>docs/science.md"
-            "</a>, \"Motion\"). <code>shimmer</code>: the squared frame-to-frame change of the structured error "
-            "against the target, noise removed; <code>shimmer_filter</code>: the same against each filter's own "
-            "references (aliasing in motion without the blur); <code>flicker</code>: the frame change one rendered "
-            "sequence shows with one seed, noise included. The still columns are frame 0's.</p>",
-            f"<div class='answer'><b>Answer for this study</b> (computed from the CSV). In {f['tradeoff']} of "
+            f"frame (definitions: <a href='{c.science}'>docs/science.md</a>, \"Motion\"). <code>shimmer</code>: "
+            "the change between consecutive frames once frame t + 1 is moved back by the motion (band-limited "
+            "interpolation), the part every seed shares, noise removed: what an eye following the content sees "
+            "change. It needs no target; error that moves with the picture (a filter's blur) does not count. "
+            "<code>target_shimmer</code>: the target's own (the pixel-area image aliases too). "
+            "<code>flicker</code>: the same change one rendered sequence shows with one seed, noise included. "
+            "The still columns are frame 0's.</p>",
+            f"<div class='answer'><b>Answer for this study</b> (computed from the CSV). Rows whose shimmer is zero "
+            f"within two standard errors, per scene: {steady_text}. In {f['tradeoff']} of "
             f"{f['gaussian_cells']} (scene, sampler, spp) cells with two or more Gaussian radii of 1 pixel or more, "
-            "shimmer_filter falls and blur rises at every step as the Gaussian widens: the trade-off (value by "
-            "value, without the standard errors: a rise within noise counts against it). Against the target, the "
-            f"widest Gaussian shimmers more than the box r = 0.5 in {f['wide_more']} of {f['box_cells']} cells (its blur moves "
-            f"with the picture). The still image's best method is not the steadiest in {f['differ_shimmer']} of "
-            f"{f['cells']} cells by shimmer and in {f['differ_flicker']} by flicker (lowest value; ties in the "
-            "tables below).</div>"]
+            "shimmer falls and blur rises at every step as the Gaussian widens: the trade-off (value by value, "
+            "without the standard errors: a rise within noise counts against it). The still image's best method "
+            f"is not the steadiest in {f['differ_shimmer']} of {f['cells']} cells by shimmer and in "
+            f"{f['differ_flicker']} by flicker (lowest value; ties in the tables below).</div>"]
     for scene in sorted(rows["scene"].unique()):
         png = chart(rows, scene, c.charts_dir)
         body.append(f"<h3>{html.escape(str(scene))}</h3>")
-        body.append(figure(c.results, png, f"{html.escape(str(scene))}: shimmer against blur (left), shimmer_filter "
-                           "against blur (middle) and shimmer against noise (right), per filter and radius "
+        body.append(figure(c.results, png, f"{html.escape(str(scene))}: shimmer against blur (left) and against noise "
+                           "(right), per filter and radius; dotted: the target's own shimmer "
                            "(symmetric log axes: zero is drawn).", c.embed, anchor=f"motion-{figures.slug(scene)}",
                            toc=f"motion: {scene}"))
         body.append("<p>Rankings, lowest first, with the value; <b>bold</b>: tied with the best by the "

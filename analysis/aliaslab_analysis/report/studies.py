@@ -25,7 +25,7 @@ def summary(csv):
     """A one-line description of the study in csv, read from its rows ('' when unreadable)."""
     try:
         head = pd.read_csv(csv, nrows=0).columns
-        use = [c for c in COLUMNS + ["target", "prefilter"] if c in head]
+        use = [c for c in COLUMNS + ["target", "prefilter", "frames"] if c in head]
         df = pd.read_csv(csv, usecols=use, dtype={"target": str, "prefilter": str})
     except (OSError, ValueError, pd.errors.ParserError):
         return ""
@@ -43,6 +43,8 @@ def summary(csv):
             f"references at {', '.join(map(str, f['ref_spp']))} spp, targets {', '.join(targets(df))}")
     if "prefilter" in df.columns and (df["prefilter"].astype(str) != "none").any():
         text += "; pre-filtering against plain sampling"
+    if "frames" in df.columns and (pd.to_numeric(df["frames"], errors="coerce") > 1).any():
+        text += f"; {int(pd.to_numeric(df['frames'], errors='coerce').max())} frames of a moving camera (shimmer)"
     return text + ("; a quick study" if is_quick(f) else "")
 
 
