@@ -81,6 +81,75 @@ def csv_rows(path):
         return list(csv.DictReader(f))
 
 
+def default_view_checks(d, check, wait):
+    """The view opened first: the answer's default (three methods at the lowest spp), its panels side by side
+    within the 1366 px window."""
+    v = d.execute_script("const V = window.ALIASLAB_VIEWER, s = V.state, x = V.data[s.scene];"
+                         "return [s.cfg, s.pins, x.default, x.levels[0]]")
+    cfg, pins, default, low = v
+    check(default is not None and cfg == default["cfg"] and pins == default["pins"] and len(pins) == 2,
+          f"the viewer opens on the answer's default view ({cfg} beside {pins})")
+    check(all(int(c.split("|")[1]) == low for c in [cfg] + pins), f"the default view is at the lowest spp ({low})")
+    boxes = d.execute_script("return [...document.querySelectorAll('#alv .alv-panel')].map(f => "
+                             "{const r = f.getBoundingClientRect(); return [r.left, r.right, r.top]})")
+    check(len(boxes) == 3 and len({round(b[2]) for b in boxes}) == 1 and max(b[1] for b in boxes) <= 1366,
+          f"the three default panels sit in one row within 1366 px ({boxes})")
+
+
+def answer_checks(d, check, wait, page, work):
+    """Every method answer.csv calls equivalent to the best can be selected, and its whole image and whole FLIP
+    map load; the fixed grid shows no standard error; `f` keeps the sampler or says why; b flips A/B in place."""
+    scene = d.execute_script("return window.ALIASLAB_VIEWER.state.scene")
+    held = set(d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].configs.map(c => c.id)", scene))
+    named = set()
+    for r in csv_rows(os.path.join(page, "answer.csv")):
+        if r["verdict"] == "equivalent" and r["scope"] in ("all", scene) and r["reconstruction"] == "weighted":
+            named.add(f"{r['sampler']}|{int(float(r['spp']))}|{r['filter']}|{float(r['radius']):g}")
+    check(named and named <= held, f"every method answer.csv calls equivalent in {scene} is held "
+                                   f"({len(named)}; missing {sorted(named - held)[:3]})")
+    ok = 0
+    for cid in sorted(named & held):
+        for mode in ("image", "flip"):
+            d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0], arguments[1], 'whole')", cid, mode)
+            loaded = wait("const f = document.querySelector('#alv .alv-main'); return f && f.dataset.config === "
+                          f"'{cid}' && f.querySelector('.alv-readout') !== null")
+            ok += bool(loaded)
+    check(ok == 2 * len(named & held), f"{ok} whole images and whole FLIP maps of the equivalent methods load")
+    d.execute_script("window.ALIASLAB_VIEWER.select(window.ALIASLAB_VIEWER.data[arguments[0]].default.cfg, "
+                     "'image', 'crop')", scene)
+    wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+    grid = d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].configs.filter(c => "
+                            "Object.values(c.rows)[0].deterministic).map(c => c.id)", scene)
+    if grid:
+        d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0])", grid[0])
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+        caption = d.find_element("css selector", "#alv .alv-main figcaption").text
+        check("\u00b1" not in caption and "no standard error" in caption,
+              f"the fixed grid ({grid[0]}) shows no standard error: '{caption[:90]}'")
+    from selenium.webdriver.common.action_chains import ActionChains
+    before = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
+    d.find_element("css selector", "#alv .alv-status").click()
+    ActionChains(d).send_keys("f").perform()
+    time.sleep(0.5)
+    after = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
+    status = d.find_element("css selector", "#alv .alv-status").text
+    check(after.split("|")[0] == before.split("|")[0] and (after != before or "held with this filter only" in status),
+          f"f keeps the sampler ({before} -> {after}) or says why ('{status[:80]}')")
+    d.execute_script("const s = window.ALIASLAB_VIEWER.state, x = window.ALIASLAB_VIEWER.data[s.scene].default;"
+                     "s.pins = x.pins.slice(); window.ALIASLAB_VIEWER.select(x.cfg)")
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
+    first = "return document.querySelector('#alv .alv-main').dataset.config"
+    a = d.execute_script(first)
+    ActionChains(d).send_keys("b").perform()
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 2")
+    b = d.execute_script(first)
+    pins = d.execute_script("return window.ALIASLAB_VIEWER.state.pins")
+    check(a != b and b == pins[0], f"b shows the first pinned method in the first panel ({a} -> {b})")
+    ActionChains(d).send_keys("b").perform()
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
+    check(d.execute_script(first) == a, "b again shows the current method again")
+
+
 def main():
     d = browser()
     from selenium.webdriver.common.action_chains import ActionChains
@@ -113,6 +182,7 @@ def main():
         wait = lambda js: next((True for _ in range(100) if d.execute_script(js) or time.sleep(0.1)), False)
         check(wait("return document.querySelectorAll('#alv .alv-panel canvas').length > 0"), "the viewer draws its panels")
         time.sleep(0.5)
+        default_view_checks(d, check, wait)
         main_canvas = "return document.querySelector('#alv .alv-main canvas').toDataURL()"
         state = "return window.ALIASLAB_VIEWER.state.cfg"
         before_cfg, before_pic = d.execute_script(state), d.execute_script(main_canvas)
@@ -120,12 +190,15 @@ def main():
         ActionChains(d).send_keys(Keys.ARROW_RIGHT).perform()
         time.sleep(1.0)
         after_cfg, after_pic = d.execute_script(state), d.execute_script(main_canvas)
-        check(after_cfg != before_cfg and after_cfg.split("|")[1:] == before_cfg.split("|")[1:],
-              f"ArrowRight switches the sampler ({before_cfg} -> {after_cfg})")
+        # each sampler is held at its own best filter and radius: the spp stays, the filter may follow the sampler
+        check(after_cfg != before_cfg and after_cfg.split("|")[0] != before_cfg.split("|")[0]
+              and after_cfg.split("|")[1] == before_cfg.split("|")[1],
+              f"ArrowRight switches the sampler at the same spp ({before_cfg} -> {after_cfg})")
         check(after_pic != before_pic, "the displayed image changes with it")
 
         # the readout of one pixel against the configuration's image file
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         size = canvas.size
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
         time.sleep(0.3)
@@ -202,6 +275,7 @@ def main():
         check("FLIP" in label and "0" in label and "1" in label and len(set(bar)) > 1,
               f"the FLIP colour bar is shown, coloured {bar}, labelled '{label[:60]}...'")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -235,6 +309,7 @@ def main():
         readout = "return document.querySelector('#alv .alv-main .alv-readout') !== null"
         check(other != primary and wait(readout), f"the FLIP map against {other} (not the primary {primary}) is shown")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, -size["width"] // 6, size["height"] // 5).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -261,6 +336,7 @@ def main():
         sampler, spp, filt, radius = cfg.split("|")
         check(sampler != "uniform", f"{cfg} is not the grid")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 4, -size["height"] // 3).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -282,6 +358,8 @@ def main():
         shot = os.path.join(ARGS.artifacts, "viewer_whole_1366.png")
         d.save_screenshot(shot)
         print(f"screenshot: {shot}")
+        answer_checks(d, check, wait, page, work)
+        check(not [e for e in d.get_log("browser") if e.get("level") == "SEVERE"], "no console errors at the end")
     finally:
         d.quit()
         shutil.rmtree(tmp, ignore_errors=True)

@@ -1,6 +1,8 @@
 """The comparison viewer of the page (issue 30): the study's own images side by side on the same region.
 
-  plan.py     which configurations are shown (a subset chosen from the CSV) and the crop window
+  answer.py   the methods the answer names (as answer.csv: equivalent to the best, best of each sampler) and
+              the default view
+  plan.py     which configurations are shown (those answer.py names, the teaching trio) and the crop window
   render.py   renders them with the raytracer (the sweep's sampler, seed and filter: the same images)
   exr.py      reads EXR images through Debian's oiiotool
   encoding.py an image's values as a PNG data URI (8 or 16 bits over its own range) and back

@@ -53,8 +53,8 @@ def main(argv=None, prog=None):
     if args.jobs < 1:
         errors.fail("--jobs: must be at least 1")
     try:
-        df, _ = study_csv.load_study(args.study)
-        plan = Plan(df, args.flip_seeds)
+        df, notes = study_csv.load_study(args.study)
+        plan = Plan(df, args.flip_seeds, notes)
         scenes = sorted(plan.configs)
         if args.scenes:
             wanted = args.scenes.split(",")

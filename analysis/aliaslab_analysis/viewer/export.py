@@ -4,8 +4,10 @@ for a whole image or a FLIP map against a target other than the primary one (a p
 drawn from a file:// image; images from data: URIs it does not taint). The first file calls
 ALIASLAB_VIEWER_ADD(scene data) with:
 
-  crop      {x, y, size, how}: the window where the methods differ most (plan.crop_window over set A's seed-0
-            images at the lowest spp: the largest summed variance across methods)
+  crop      {x, y, size, how}: the window where the default view's methods differ most relative to their noise
+            (plan.crop_window over their mean images at the lowest spp and the noise of those means: choose_crop)
+  default   {cfg, pins, why, target}: the view opened first (answer.default_view: the leading method at the lowest
+            spp, the runner-up family's best, jittered at its own best)
   images    id -> {w, h, c, bits, lo, hi, src[, src2]} (ids short numbers; equal entries stored once): PNG data URIs holding one image's values (one channel
             when R = G = B, as in the grey scenes, else three), value = lo + q (hi - lo) / (2^bits - 1) with q the
             stored integer: 8 bits for a method's image and the references, 16 bits for the targets' crops (the
@@ -13,14 +15,14 @@ ALIASLAB_VIEWER_ADD(scene data) with:
             lo, hi the image's own minimum and maximum, so the step is stated per image
   configs   per configuration: sampler, spp, filter, radius, the seeds rendered, its image ids (crop per seed;
             whole: the whole image of seed 0, 8 bits), its own reference and its CSV rows, one per target: the
-            CSV's values of the columns rowColumns (ROW_COLUMNS present in the CSV), in that order;
-            flip: {target: the FLIP map's id} for every target (the crop, seed 0)
+            CSV's values of the columns rowColumns (ROW_COLUMNS present in the CSV), in that order; why: the
+            answer's reasons it is shown; flip: {primary target: the FLIP map's crop id}, flipWhole: {target:
+            the whole FLIP map's id} for every target (seed 0; in the second file)
   targets   the target images (crop and whole); refs: each filter x radius's own reference G (crop and whole)
-  wholeFile the second file's name; its ids (prefix "w": every whole image, the FLIP maps against the targets
-            other than the primary one) are not in `images` until it is loaded: it calls
+  wholeFile the second file's name; its ids (prefix "w": every whole image, every whole FLIP map) are not in `images` until it is loaded: it calls
             ALIASLAB_VIEWER_WHOLE(scene, {id: entry}) (WHOLE_DOC)
   scales    the signed error's colour scale per (spp, target): the 99th percentile of |I_0 - T| (the mean over
-            the channels) over set A's methods at that spp in the crop
+            the channels) over the answer's methods (sets E, P) at that spp in the crop
   verified  every image's per-seed mse_target recomputed from the EXRs against the CSV's mse_target_seeds
 
 RESULTS/viewer/index.json says what was chosen (plan.describe()) and the verification."""
@@ -37,12 +39,21 @@ from .plan import crop_window, image_stem
 ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
                "cpu_ms")  # the CSV columns shown beside an image
 WHOLE_DOC = ("whole images (seed 0 of every configuration shown, every own reference, every target; 8 bits over "
-             "each image's own range) and the FLIP maps against the targets other than the primary one")
+             "each image's own range) and the whole FLIP maps against every target")
 TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_target (float images, double sums)
 
 
 def crop_size(width, height):
     return int(max(8, min(24, min(width, height) // 2)))
+
+
+def key_id(k):
+    """The viewer's id of a configuration key (sampler, spp, filter, radius)."""
+    return f"{k[0]}|{k[1]}|{k[2]}|{k[3]:g}"
+
+
+def config_id(c):
+    return key_id((c["sampler"], c["spp"], c["filter"], c["radius"]))
 
 
 def row_values(r):
@@ -113,10 +124,10 @@ class SceneExport:
         self.images[self.same[same]] = e
         return self.same[same]
 
-    def flip_crops(self, configs):
-        """{config index: {target: image id}}: the FLIP map of each configuration's seed-0 image against every
-        target (imgdiff over the whole image, the crop stored, 8 bits over the fixed scale FLIP 0..1; the maps
-        against the targets other than the primary one in the second file)."""
+    def flip_ids(self, configs):
+        """{config index: ({primary target: crop id}, {target: whole id})}: the FLIP map of each configuration's
+        seed-0 image against every target (imgdiff over the whole image, 8 bits over the fixed scale FLIP 0..1);
+        the whole maps in the second file, the primary target's crop also in the first."""
         if not self.imgdiff:
             return {}
         pairs, where = [], []
@@ -129,9 +140,38 @@ class SceneExport:
         out = {}
         for (i, t), m in zip(where, flip_maps(self.imgdiff, pairs, (self.width, self.height))):
             base = image_stem(configs[i], 0)
-            out.setdefault(i, {})[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0),
-                                                later=t != self.targets[0])
+            crop, whole = out.setdefault(i, ({}, {}))
+            whole[t] = self.add(f"{base}-flip-{t}-whole", m[..., None], 8, "whole", (0.0, 1.0))
+            if t == self.targets[0]:
+                crop[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0), later=False)
         return out
+
+    def choose_crop(self, configs, seeds, n):
+        """The crop (plan.crop_window) over the default view's methods at the lowest spp (else every method
+        there): their mean images over the rendered seeds against the noise of those means."""
+        low = [c for c in configs if c["spp"] == self.plan.levels[0]]
+        view = [config_id(c) for c in low if config_id(c) in self.default_ids()]
+        chosen = [c for c in low if config_id(c) in view] if len(view) >= 2 else low
+        chosen = chosen or configs
+        means, noise = [], []
+        for c in chosen:
+            imgs = np.array([seeds[(image_stem(c, 0), k)].mean(axis=2) for k in c["seeds"]])
+            means.append(imgs.mean(axis=0))
+            noise.append(imgs.var(axis=0, ddof=1) / len(imgs) if len(imgs) > 1 else np.zeros(imgs.shape[1:]))
+        with_noise = any(len(c["seeds"]) > 1 for c in chosen)
+        x, y = crop_window(np.array(means), n, noise=np.array(noise) if with_noise else None)
+        names = ", ".join(f"{c['sampler']} {c['filter']} r={c['radius']:g}" for c in chosen[:4]) + \
+            (f" and {len(chosen) - 4} more" if len(chosen) > 4 else "")
+        how = (f"the {n} x {n} window where the mean images (over {max(len(c['seeds']) for c in chosen)} seeds) of "
+               f"{names} at {chosen[0]['spp']} spp differ most relative to their noise (the variance across the "
+               "methods over the window, divided by the noise of the means there plus the image's average)")
+        return x, y, how
+
+    def default_ids(self):
+        d = self.plan.default
+        if not d:
+            return []
+        return [key_id(k) for k in [d["cfg"]] + d["pins"]]
 
     def run(self):
         plan = self.plan
@@ -153,14 +193,12 @@ class SceneExport:
             seeds[key] = channels(img)
         if not configs:
             errors.fail(f"{self.scene}: no rendered image in {self.work} (run without --no-render)")
-        # the crop: where set A's seed-0 images at the lowest spp differ most
+        # the crop: where the default view's methods differ most relative to their noise (choose_crop)
         n = crop_size(self.width, self.height)
-        stack = [seeds[(image_stem(c, 0), 0)] for c in configs if "A" in c["sets"] and c["spp"] == plan.levels[0]]
-        stack = stack or [seeds[(image_stem(c, 0), 0)] for c in configs]
-        cx, cy = crop_window(np.array([a.mean(axis=2) for a in stack]), n)
+        cx, cy, crop_how = self.choose_crop(configs, seeds, n)
         self.crop = (cx, cy, n)
         out_configs, refs = [], {}
-        scales, flips = {}, self.flip_crops(configs)
+        scales, flips = {}, self.flip_ids(configs)
         for i, c in enumerate(configs):
             rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
                            & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
@@ -188,11 +226,12 @@ class SceneExport:
                                  "whole": self.add(f"ref-{ref_key}-whole", g, 8, "whole"), "describe": describe}
             crops = {str(k): self.add(f"{base}-seed{k}-crop", seeds[(image_stem(c, 0), k)], 8, "crop")
                      for k in c["seeds"]}
-            out_configs.append({"id": f"{c['sampler']}|{c['spp']}|{c['filter']}|{c['radius']:g}",
+            flip_crop, flip_whole = flips.get(i, ({}, {}))
+            out_configs.append({"id": config_id(c), "why": c.get("why", []),
                                 "sampler": c["sampler"], "spp": c["spp"], "filter": c["filter"],
                                 "radius": c["radius"], "sets": c["sets"], "seeds": c["seeds"], "crop": crops,
-                                "whole": whole, "ref": ref_key, "rows": per_target, "flip": flips.get(i, {})})
-            if "A" in c["sets"]:
+                                "whole": whole, "ref": ref_key, "rows": per_target, "flip": flip_crop, "flipWhole": flip_whole})
+            if {"E", "P"} & set(c["sets"]):
                 e0 = seeds[(image_stem(c, 0), 0)][cy:cy + n, cx:cx + n]
                 for t in self.targets:  # the error shown: the mean over the channels of I - T
                     err = np.mean(e0 - target_imgs[t][cy:cy + n, cx:cx + n], axis=2)
@@ -201,20 +240,27 @@ class SceneExport:
         targets = {t: {"crop": self.add(f"target-{t}-crop", target_imgs[t], 16, "crop"),
                        "whole": self.add(f"target-{t}-whole", target_imgs[t], 8, "whole")} for t in self.targets}
         return {"scene": self.scene, "width": self.width, "height": self.height,
-                "crop": {"x": cx, "y": cy, "size": n,
-                         "how": f"the {n} x {n} window with the largest summed variance across the methods of set A "
-                                f"(seed 0, {plan.levels[0]} spp)"},
+                "crop": {"x": cx, "y": cy, "size": n, "how": crop_how},
+                "default": self.default_view(out_configs),
                 "wholeHow": WHOLE_DOC,
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "rowColumns": self.row_columns, "scales": scale,
                 "flipHow": "per-pixel LDR-FLIP of the seed-0 image against the target (imgdiff "
-                           "--flip-output, the "
-                           "flip column's map; its mean over the whole image and the seeds is the CSV's flip), "
-                           "crop only, 8 bits over 0..1",
-                "scaleHow": "99th percentile of |I - T| over the crop of every sampler of set A at that spp (seed 0)",
+                           "--flip-output, the flip column's map; its mean over the whole image and the seeds is "
+                           "the CSV's flip), 8 bits over 0..1; whole maps loaded on demand",
+                "scaleHow": "99th percentile of |I - T| over the crop of every method the answer names at that spp (seed 0)",
                 "plan": plan.describe(), "not_rendered": self.missing, "verified": {"images": len(seeds), "comparisons": self.checked,
                                                       "max_relative_difference": self.worst},
                 "images": self.images}
+
+
+    def default_view(self, out_configs):
+        """{cfg, pins, why}: the view the viewer opens on (answer.default_view), its ids among those exported."""
+        have = {c["id"] for c in out_configs}
+        ids = [i for i in self.default_ids() if i in have]
+        if not ids:
+            return None
+        return {"cfg": ids[0], "pins": ids[1:], "why": self.plan.default["why"], "target": self.plan.default["target"]}
 
 
 def write_js(path, data, call="ALIASLAB_VIEWER_ADD({})"):
