@@ -155,7 +155,7 @@ class CommittedViewerData(unittest.TestCase):
         self.assertLess(sum(sizes[f] for f in later), WHOLE_BUDGET, "the whole images, loaded on demand")
 
     def test_the_committed_script_is_the_packages(self):
-        for name in ("viewer.js", "viewer.css"):
+        for name in section.ASSETS:
             with open(os.path.join(VIEWER, name), encoding="utf-8") as f:
                 self.assertEqual(f.read(), section.asset(name), f"results/viewer/{name}: regenerate the page")
 
@@ -346,7 +346,7 @@ class Section(unittest.TestCase):
                                                              "comparisons": 1, "max_relative_difference": 0}}}}, f)
             open(os.path.join(data, "s.js"), "w").close()
             html = section.viewer_section(tmp)
-            for name in ("viewer.js", "viewer.css"):
+            for name in section.ASSETS:
                 with open(os.path.join(data, name), encoding="utf-8") as f:
                     self.assertEqual(f.read(), section.asset(name))
             self.assertIn("<script src='viewer/viewer.js'>", html)

@@ -24,6 +24,7 @@ Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or pytho
 import argparse
 import csv
 import glob
+import json
 import os
 import shutil
 import subprocess
@@ -148,6 +149,94 @@ def answer_checks(d, check, wait, page, work):
     ActionChains(d).send_keys("b").perform()
     wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
     check(d.execute_script(first) == a, "b again shows the current method again")
+
+
+def served_checks(d, check, wait, page, study, work, cache, rows):
+    """The served viewer (serve.py): renders a CSV row the exported data does not hold (a seed past the
+    flip-book's), its mse_target from the image equal to the CSV's per-seed value and its readout equal to the EXR
+    the raytracer wrote; loads a user EXR and shows its error map against a chosen target."""
+    held = set()
+    for name in glob.glob(os.path.join(page, "viewer", "*.js")):
+        with open(name, encoding="utf-8") as f:
+            text = f.read()
+        if text.startswith("ALIASLAB_VIEWER_ADD("):
+            data = json.loads(text[len("ALIASLAB_VIEWER_ADD("):text.rstrip().rindex(")")])
+            held |= {(data["scene"], c["id"], k) for c in data["configs"] for k in c["seeds"]}
+    scene = sorted({r["scene"] for r in rows})[0]
+    row = next(r for r in rows if r["scene"] == scene and r["reconstruction"] == "weighted" and
+               (scene, f"{r['sampler']}|{r['spp']}|{r['filter']}|{float(r['radius']):g}", 3) not in held)
+    mine = os.path.join(os.path.dirname(work), "mine.exr")
+    shutil.copy(next(iter(glob.glob(os.path.join(work, "*", "*-seed0.exr")))), mine)
+    proc = subprocess.Popen([sys.executable, "-m", "analysis", "viewer", page, "--study", os.path.join(study, "study.csv"),
+                             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--serve", "--port", "0",
+                             "--exr", mine], cwd=ARGS.source, stdout=subprocess.PIPE, text=True,
+                            env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
+    try:
+        line = proc.stdout.readline()
+        url = line.split(" on ")[1].split()[0] if " on http" in line else None
+        check(url is not None, f"the server says where it serves ({line.strip()})")
+        if not url:
+            return
+        d.get(url)
+        d.execute_script("document.getElementById('alv').scrollIntoView()")
+        check(wait("return !!window.ALIASLAB_VIEWER.served && !!document.querySelector('#alv .alv-serve')"),
+              "the served page shows the render controls")
+        d.execute_script("window.ALIASLAB_VIEWER.state.scene !== arguments[0] && "
+                         "document.querySelector(`#alv [data-scene='${arguments[0]}']`).click()", scene)
+        wait(f"return window.ALIASLAB_VIEWER.state.scene === '{scene}' && "
+             "document.querySelector('#alv .alv-main .alv-readout') !== null")
+        d.execute_script("window.ALIASLAB_VIEWER.serveRender({sampler: arguments[0], spp: arguments[1], filter: "
+                         "arguments[2], radius: arguments[3], seed: 3}).then(j => window._served = j, "
+                         "e => window._served = {error: String(e)})", row["sampler"], row["spp"], row["filter"],
+                         row["radius"])
+        check(wait("return !!window._served") or wait("return !!window._served"), "the server answers the render")
+        got = d.execute_script("return window._served")
+        seeds = {r["target"]: float(r["mse_target_seeds"].split(";")[3]) for r in rows
+                 if (r["scene"], r["sampler"], r["spp"], r["filter"], r["radius"], r["reconstruction"]) ==
+                 (scene, row["sampler"], row["spp"], row["filter"], row["radius"], "weighted")}
+        ver = {t: mine_v for t, mine_v, _ in (got or {}).get("verified", [])}
+        check(ver and set(ver) == set(seeds) and all(abs(ver[t] - seeds[t]) <= 1e-5 * abs(seeds[t]) for t in seeds),
+              f"the row rendered on request ({row['sampler']} {row['spp']} spp {row['filter']} r={row['radius']} "
+              f"seed 3) has the CSV's per-seed mse_target ({ver} vs {seeds}; {(got or {}).get('error')})")
+        cid = (got or {}).get("config", {}).get("id")
+        check(wait(f"return document.querySelector('#alv .alv-main').dataset.config === '{cid}' && "
+                   "document.querySelector('#alv .alv-main .alv-readout') !== null"), f"{cid} is shown")
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
+        from selenium.webdriver.common.action_chains import ActionChains
+        ActionChains(d).move_to_element_with_offset(canvas, 7, -9).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        values = [float(v) for v in span.get_attribute("data-value").split(",")]
+        img = read_image(got["config"]["path"])
+        diffs = [abs(v - float(img[y, x, c])) for c, v in enumerate(values)]
+        check(max(diffs) <= float(span.get_attribute("data-step")) / 2 + 1e-6,
+              f"the served image's readout at ({x}, {y}) {values} equals the raytracer's EXR {img[y, x, :len(values)]}")
+        # a user EXR, its error map against the second target
+        d.execute_script("window._exr = null; window.ALIASLAB_VIEWER.serveExr('mine.exr').then(j => window._exr = j, "
+                         "e => window._exr = {error: String(e)})")
+        check(wait("return !!window._exr") or wait("return !!window._exr"), "the server answers the EXR")
+        err = d.execute_script("return window._exr.error || null")
+        check(err is None and wait("return document.querySelector('#alv .alv-main').dataset.config === 'exr:mine.exr'"),
+              f"the user EXR is shown ({err})")
+        targets = d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].targets", scene)
+        d.execute_script("const V = window.ALIASLAB_VIEWER; V.state.target = arguments[0]; V.select('exr:mine.exr', "
+                         "'error', 'crop')", targets[-1])
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+        label = d.find_element("css selector", "#alv .alv-bar-label").text
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        ActionChains(d).move_to_element_with_offset(canvas, 5, 5).perform()
+        time.sleep(0.3)
+        text = d.find_element("css selector", "#alv .alv-main .alv-readout span").text
+        check(f"against {targets[-1]}" in label and "error" in text,
+              f"the user EXR's error map against {targets[-1]} ('{label[:50]}', readout '{text[:80]}')")
+        logs = [e for e in d.get_log("browser") if e.get("level") == "SEVERE"]
+        check(not logs, f"no console errors when served ({logs[:2]})")
+        d.save_screenshot(os.path.join(ARGS.artifacts, "viewer_served_1366.png"))
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
 
 
 def main():
@@ -359,6 +448,7 @@ def main():
         d.save_screenshot(shot)
         print(f"screenshot: {shot}")
         answer_checks(d, check, wait, page, work)
+        served_checks(d, check, wait, page, study, work, cache, rows)
         check(not [e for e in d.get_log("browser") if e.get("level") == "SEVERE"], "no console errors at the end")
     finally:
         d.quit()

@@ -173,6 +173,32 @@ class SceneExport:
             return []
         return [key_id(k) for k in [d["cfg"]] + d["pins"]]
 
+    def rows_of(self, c):
+        """({target: the CSV values of row_columns}, {target: per-seed mse_target}) of a configuration."""
+        rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
+                       & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
+        per_target, per_seed = {}, {}
+        for _, r in rows.iterrows():
+            vals = row_values(r)
+            per_target[str(r["target"])] = [vals[k] for k in self.row_columns]
+            per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
+        return per_target, per_seed
+
+    def verify(self, img, target_imgs, target_var, per_seed, k, base):
+        """Each target's mse_target of seed k's image (its variance subtracted) against the CSV's per-seed value;
+        fails when one differs by more than TOLERANCE; returns [(target, from the image, the CSV's)]."""
+        out = []
+        for t in self.targets:
+            mine = float(np.mean((img - target_imgs[t]) ** 2)) - target_var[t]
+            theirs = per_seed[t][k]
+            rel = abs(mine - theirs) / max(abs(theirs), 1e-12)
+            self.worst, self.checked = max(self.worst, rel), self.checked + 1
+            if rel > TOLERANCE:
+                errors.fail(f"{self.scene}: {base} seed {k}: mse_target against {t} from the image "
+                            f"{mine:.9g}, the CSV says {theirs:.9g}: the image is not the one measured")
+            out.append((t, mine, theirs))
+        return out
+
     def run(self):
         plan = self.plan
         target_imgs, target_var = {}, {}
@@ -200,24 +226,10 @@ class SceneExport:
         out_configs, refs = [], {}
         scales, flips = {}, self.flip_ids(configs)
         for i, c in enumerate(configs):
-            rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
-                           & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
-            per_target, per_seed = {}, {}
-            for _, r in rows.iterrows():
-                vals = row_values(r)
-                per_target[str(r["target"])] = [vals[k] for k in self.row_columns]
-                per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
+            per_target, per_seed = self.rows_of(c)
             base = image_stem(c, 0)[:-len("-seed0")]
             for k in c["seeds"]:
-                img = seeds[(image_stem(c, 0), k)]
-                for t in self.targets:
-                    mine = float(np.mean((img - target_imgs[t]) ** 2)) - target_var[t]
-                    theirs = per_seed[t][k]
-                    rel = abs(mine - theirs) / max(abs(theirs), 1e-12)
-                    self.worst, self.checked = max(self.worst, rel), self.checked + 1
-                    if rel > TOLERANCE:
-                        errors.fail(f"{self.scene}: {base} seed {k}: mse_target against {t} from the image "
-                                    f"{mine:.9g}, the CSV says {theirs:.9g}: the image is not the one measured")
+                self.verify(seeds[(image_stem(c, 0), k)], target_imgs, target_var, per_seed, k, base)
             ref_key = f"{c['filter']}|{c['radius']:g}"
             whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole")
             if ref_key not in refs:

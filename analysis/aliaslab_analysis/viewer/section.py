@@ -8,6 +8,7 @@ import json
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+ASSETS = ("viewer.js", "viewer_serve.js", "viewer.css")  # viewer_serve.js: active only when served (serve.py)
 
 
 def asset(name):
@@ -17,7 +18,7 @@ def asset(name):
 
 def write_assets(data_dir):
     """Copies viewer.js and viewer.css into data_dir where missing or different."""
-    for name in ("viewer.js", "viewer.css"):
+    for name in ASSETS:
         path, text = os.path.join(data_dir, name), asset(name)
         if os.path.isfile(path):
             with open(path, encoding="utf-8") as f:
@@ -75,7 +76,8 @@ def viewer_section(page_dir, data_dir=None, write=True):
             "<div class='alv-scenes'></div><div class='alv-controls'></div><div class='alv-status'></div>"
             "<canvas class='alv-bar' width='384' height='12'></canvas><span class='alv-bar-label'></span>"
             "<div class='alv-panels'></div></div>"
-            f"<script src='{html.escape(rel)}viewer.js'></script>" + teaching(data_dir))
+            f"<script src='{html.escape(rel)}viewer.js'></script>"
+            f"<script src='{html.escape(rel)}viewer_serve.js'></script>" + teaching(data_dir))
 
 
 def teaching(data_dir):

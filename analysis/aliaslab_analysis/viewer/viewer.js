@@ -21,6 +21,7 @@
   // select(id[, mode, region]): shows a configuration (the tests; a link to a method); false when it is not held
   window.ALIASLAB_VIEWER.select = (id, mode, region) => {
     if (!S.scene || !cfgOf(id)) return false;
+    S.note = "";
     S.cfg = id; if (mode) S.mode = mode; if (region && region !== S.region) { S.region = region; S.zoom = 0; }
     draw(); return true;
   };
@@ -198,7 +199,7 @@
   }
 
   function imageId(c) {  // the shown configuration image id (seed S.seed where rendered, else seed 0) and its seed
-    const seed = c.seeds.includes(S.seed) && S.region === "crop" ? S.seed : 0;
+    const seed = c.seeds.includes(S.seed) && S.region === "crop" ? S.seed : c.seeds[0];
     return [S.region === "crop" ? c.crop[String(seed)] : c.whole, seed];
   }
 
@@ -216,7 +217,8 @@
   }
 
   async function panelData(c) {
-    const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
+    const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region];
+    const r = c.ref && d.refs[c.ref] ? d.refs[c.ref][S.region] : null;
     const why = S.region === "whole" ? "whole image not stored for this one" : "crop not stored for this one";
     if (!id || !t) return {missing: true, seed: seed, why: why};
     if (S.mode === "ref" && !r) return {missing: true, seed: seed, why: "own reference not stored"};
@@ -307,8 +309,8 @@
     fig.appendChild(cv);
     const row = c.rows[S.target] || {};
     const cap = el("figcaption");
-    cap.appendChild(el("b", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
-    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? " (only seed 0 rendered)" : "";
+    cap.appendChild(el("b", {}, c.sets.includes("exr") ? `${c.sampler} (your EXR)` : `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
+    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? ` (only seed ${p.seed} held)` : "";
     cap.appendChild(el("span", {class: "alv-seed"}, ` seed ${S.mode === "flip" ? 0 : p.seed}` + seedNote));
     const dl = el("div", {class: "alv-values"});
     const item = (col, label, extra) => {
