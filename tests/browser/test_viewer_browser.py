@@ -17,6 +17,10 @@ chromium-driver, loads a page generated for a small study from file:// and check
     data file, loaded on demand): the map is displayed and its readout equals imgdiff's map against that target;
   - the key c shows the whole image of a method other than the grid (also in the second file): it loads, and the
     readout of a pixel equals that pixel of the configuration's image file within half the stored step;
+the view it opens on is the answer's default (three panels in one row at 1366 px); every method answer.csv calls
+equivalent can be selected and its whole image and whole FLIP map load; the grid shows no standard error; f keeps
+the sampler; b flips A/B in place; served (--serve) it renders a row not in the data with the CSV's per-seed
+mse_target and readout, and shows a user EXR's error map;
 and writes screenshots at 1366 px wide to ARTIFACTS/viewer_1366.png and viewer_flip_1366.png.
 
   test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
