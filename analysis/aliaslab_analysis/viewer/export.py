@@ -34,7 +34,9 @@ from .. import errors, figures
 from .encoding import channels, decode, png_entry  # noqa: F401 (decode: the tests' inverse of png_entry)
 from .exr import read_exr, read_exrs
 from .flip import flip_maps, map_path
-from .plan import crop_window, image_stem
+from . import view
+from .plan import image_stem
+from .view import config_id
 
 ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
                "cpu_ms")  # the CSV columns shown beside an image
@@ -45,15 +47,6 @@ TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_ta
 
 def crop_size(width, height):
     return int(max(8, min(24, min(width, height) // 2)))
-
-
-def key_id(k):
-    """The viewer's id of a configuration key (sampler, spp, filter, radius)."""
-    return f"{k[0]}|{k[1]}|{k[2]}|{k[3]:g}"
-
-
-def config_id(c):
-    return key_id((c["sampler"], c["spp"], c["filter"], c["radius"]))
 
 
 def row_values(r):
@@ -146,33 +139,6 @@ class SceneExport:
                 crop[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0), later=False)
         return out
 
-    def choose_crop(self, configs, seeds, n):
-        """The crop (plan.crop_window) over the default view's methods at the lowest spp (else every method
-        there): their mean images over the rendered seeds against the noise of those means."""
-        low = [c for c in configs if c["spp"] == self.plan.levels[0]]
-        view = [config_id(c) for c in low if config_id(c) in self.default_ids()]
-        chosen = [c for c in low if config_id(c) in view] if len(view) >= 2 else low
-        chosen = chosen or configs
-        means, noise = [], []
-        for c in chosen:
-            imgs = np.array([seeds[(image_stem(c, 0), k)].mean(axis=2) for k in c["seeds"]])
-            means.append(imgs.mean(axis=0))
-            noise.append(imgs.var(axis=0, ddof=1) / len(imgs) if len(imgs) > 1 else np.zeros(imgs.shape[1:]))
-        with_noise = any(len(c["seeds"]) > 1 for c in chosen)
-        x, y = crop_window(np.array(means), n, noise=np.array(noise) if with_noise else None)
-        names = ", ".join(f"{c['sampler']} {c['filter']} r={c['radius']:g}" for c in chosen[:4]) + \
-            (f" and {len(chosen) - 4} more" if len(chosen) > 4 else "")
-        how = (f"the {n} x {n} window where the mean images (over {max(len(c['seeds']) for c in chosen)} seeds) of "
-               f"{names} at {chosen[0]['spp']} spp differ most relative to their noise (the variance across the "
-               "methods over the window, divided by the noise of the means there plus the image's average)")
-        return x, y, how
-
-    def default_ids(self):
-        d = self.plan.default
-        if not d:
-            return []
-        return [key_id(k) for k in [d["cfg"]] + d["pins"]]
-
     def rows_of(self, c):
         """({target: the CSV values of row_columns}, {target: per-seed mse_target}) of a configuration."""
         rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
@@ -221,7 +187,7 @@ class SceneExport:
             errors.fail(f"{self.scene}: no rendered image in {self.work} (run without --no-render)")
         # the crop: where the default view's methods differ most relative to their noise (choose_crop)
         n = crop_size(self.width, self.height)
-        cx, cy, crop_how = self.choose_crop(configs, seeds, n)
+        cx, cy, crop_how = view.choose_crop(self.plan, configs, seeds, n)
         self.crop = (cx, cy, n)
         out_configs, refs = [], {}
         scales, flips = {}, self.flip_ids(configs)
@@ -253,7 +219,7 @@ class SceneExport:
                        "whole": self.add(f"target-{t}-whole", target_imgs[t], 8, "whole")} for t in self.targets}
         return {"scene": self.scene, "width": self.width, "height": self.height,
                 "crop": {"x": cx, "y": cy, "size": n, "how": crop_how},
-                "default": self.default_view(out_configs),
+                "default": view.default_view(self.plan, out_configs),
                 "wholeHow": WHOLE_DOC,
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "rowColumns": self.row_columns, "scales": scale,
@@ -264,15 +230,6 @@ class SceneExport:
                 "plan": plan.describe(), "not_rendered": self.missing, "verified": {"images": len(seeds), "comparisons": self.checked,
                                                       "max_relative_difference": self.worst},
                 "images": self.images}
-
-
-    def default_view(self, out_configs):
-        """{cfg, pins, why}: the view the viewer opens on (answer.default_view), its ids among those exported."""
-        have = {c["id"] for c in out_configs}
-        ids = [i for i in self.default_ids() if i in have]
-        if not ids:
-            return None
-        return {"cfg": ids[0], "pins": ids[1:], "why": self.plan.default["why"], "target": self.plan.default["target"]}
 
 
 def write_js(path, data, call="ALIASLAB_VIEWER_ADD({})"):

@@ -27,7 +27,8 @@ from .. import errors, figures
 from . import render
 from .encoding import channels, png_entry
 from .exr import read_exr
-from .export import SceneExport, key_id
+from .export import SceneExport
+from .view import key_id
 from .flip import flip_maps, map_path
 from .plan import image_stem, shown_rows
 
