@@ -264,7 +264,8 @@ def main():
         env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
         os.makedirs(page)
         run([sys.executable, "-m", "analysis", "viewer", page, "--study", os.path.join(study, "study.csv"),
-             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--flip-seeds", "2", "--quiet"], env=env)
+             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--flip-seeds", "2", "--whole", "answer",
+             "--quiet"], env=env)
         run([sys.executable, "-m", "analysis", "report", page, "--study", os.path.join(study, "study.csv"),
              "--reuse-charts"], env=env, stdout=subprocess.DEVNULL)
         rows = csv_rows(os.path.join(study, "study.csv"))

@@ -16,7 +16,7 @@ from .. import errors, figures, study_csv
 from ..teaching import build as teaching
 from . import export, render, serve
 from .flip import imgdiff_beside
-from .plan import Plan
+from .plan import WHOLE, Plan
 
 
 def manifest_of(study, scene):
@@ -43,6 +43,10 @@ def main(argv=None, prog=None):
     ap.add_argument("--no-render", action="store_true", help="export from the images already rendered (a "
                     "configuration's missing flip-book seeds are left out; seed 0 is required)")
     ap.add_argument("--render-only", action="store_true", help="render the images, export nothing")
+    ap.add_argument("--whole", choices=sorted(WHOLE), default="answer", help="whose whole image and whole FLIP "
+                    "maps are stored (the crops are stored for all): " + "; ".join(f"{k}: {v}" for k, v in
+                                                                               sorted(WHOLE.items())) +
+                    " (default %(default)s; 'all' is about 18 MB per 256 x 256 scene)")
     ap.add_argument("--serve", action="store_true", help="serve RESULTS (the page and its viewer) on "
                     "http://127.0.0.1:PORT and render any CSV row on request (serve.py); renders nothing first")
     ap.add_argument("--port", type=int, default=8765, help="--serve's port (0: any free one; default %(default)s)")
@@ -70,6 +74,7 @@ def main(argv=None, prog=None):
     try:
         df, notes = study_csv.load_study(args.study)
         plan = Plan(df, args.flip_seeds, notes)
+        plan.whole = args.whole
         scenes = sorted(plan.configs)
         if args.scenes:
             wanted = args.scenes.split(",")

@@ -118,9 +118,10 @@ class SceneExport:
         return self.same[same]
 
     def flip_ids(self, configs):
-        """{config index: ({primary target: crop id}, {target: whole id})}: the FLIP map of each configuration's
-        seed-0 image against every target (imgdiff over the whole image, 8 bits over the fixed scale FLIP 0..1);
-        the whole maps in the second file, the primary target's crop also in the first."""
+        """{config index: ({target: crop id}, {target: whole id})}: the FLIP map of each configuration's seed-0
+        image against every target (imgdiff over the whole image, 8 bits over the fixed scale FLIP 0..1): the
+        crops (the primary target's in the first file, the others' in the second), the whole maps (second file)
+        of the configurations whose whole image is held (view.holds_whole)."""
         if not self.imgdiff:
             return {}
         pairs, where = [], []
@@ -134,9 +135,10 @@ class SceneExport:
         for (i, t), m in zip(where, flip_maps(self.imgdiff, pairs, (self.width, self.height))):
             base = image_stem(configs[i], 0)
             crop, whole = out.setdefault(i, ({}, {}))
-            whole[t] = self.add(f"{base}-flip-{t}-whole", m[..., None], 8, "whole", (0.0, 1.0))
-            if t == self.targets[0]:
-                crop[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0), later=False)
+            if view.holds_whole(self.plan, configs[i]):
+                whole[t] = self.add(f"{base}-flip-{t}-whole", m[..., None], 8, "whole", (0.0, 1.0))
+            crop[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0),
+                               later=t != self.targets[0])
         return out
 
     def rows_of(self, c):
@@ -197,7 +199,8 @@ class SceneExport:
             for k in c["seeds"]:
                 self.verify(seeds[(image_stem(c, 0), k)], target_imgs, target_var, per_seed, k, base)
             ref_key = f"{c['filter']}|{c['radius']:g}"
-            whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole")
+            whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole") \
+                if view.holds_whole(self.plan, c) else None
             if ref_key not in refs:
                 g, _, describe = self.reference(c["filter"], c["radius"])
                 refs[ref_key] = {"crop": self.add(f"ref-{ref_key}-crop", g, 8, "crop"),

@@ -15,6 +15,9 @@ from .answer import Answer
 
 TEACHING_SAMPLERS = ("uniform", "jittered", "sobol")
 
+WHOLE = {"all": "every configuration shown", "answer": "the methods equivalent to the best (set E) and the default "
+         "view", "view": "the default view's methods"}  # --whole: whose whole image and whole FLIP maps are held
+
 
 def shown_rows(df):
     """The weighted, un-prefiltered rows (the viewer's configurations)."""
@@ -38,6 +41,7 @@ class Plan:
         self.teaching = [s for s in TEACHING_SAMPLERS if s in samplers]
         self.seeds = int(rows["seeds"].max())
         self.flip = min(self.seeds, flip_seeds)
+        self.whole = "answer"  # whose whole images are stored (a key of WHOLE; cli.py's --whole)
         answer = Answer(df, notes)
         self.default = answer.default_view()
         self.configs = {}
@@ -68,7 +72,8 @@ class Plan:
                 f"target, spp {', '.join(map(str, self.levels))}); P: the best of each sampler (its filter and "
                 f"radius with the lowest median ratio to the best over scenes) under every target at every spp; "
                 f"C: {', '.join(self.teaching)} at {self.levels[0]} spp with box r=0.5. Seed 0 of each, at "
-                f"{self.levels[0]} spp seeds 0-{self.flip - 1} of {self.seeds}")
+                f"{self.levels[0]} spp seeds 0-{self.flip - 1} of {self.seeds}. Whole images and whole FLIP maps: "
+                f"{WHOLE[self.whole]} (the crops of all)")
 
 
 def image_stem(c, seed):

@@ -51,3 +51,9 @@ def default_view(plan, out_configs):
     if not ids:
         return None
     return {"cfg": ids[0], "pins": ids[1:], "why": plan.default["why"], "target": plan.default["target"]}
+
+
+def holds_whole(plan, c):
+    """Whether configuration c's whole image and whole FLIP maps are stored (plan.whole: a key of WHOLE)."""
+    how = getattr(plan, "whole", "all")
+    return how == "all" or config_id(c) in default_ids(plan) or (how == "answer" and "E" in c["sets"])
