@@ -5,7 +5,8 @@ to commit), chosen from the study CSV alone (answer.py computes the answer from 
   P  the best of each sampler (its representative filter and radius) under every target at every spp: the
      leaders, the runners-up and the named losers of the findings;
   C  the teaching trio (uniform, jittered, sobol: those present) at the lowest spp with the box r = 0.5.
-Seed 0 of each; at the lowest spp seeds 0 .. flip_seeds - 1 (the flip-book, and the noise the crop is judged by).
+Seed 0 of each; at the lowest spp seeds 0 .. flip_seeds - 1 (the flip-book), for the default view's methods
+0 .. CROP_SEEDS - 1 (their noise, which the crop is judged by).
 
 A configuration is (scene, sampler, spp, filter, radius) in weighted reconstruction without pre-filtering; the
 rows of other modes are not shown."""
@@ -14,6 +15,7 @@ import numpy as np
 from .answer import Answer
 
 TEACHING_SAMPLERS = ("uniform", "jittered", "sobol")
+CROP_SEEDS = 4  # seeds rendered for the default view's methods (their mean images and noise choose the crop)
 
 WHOLE = {"all": "every configuration shown", "answer": "the methods equivalent to the best (set E) and the default "
          "view", "view": "the default view's methods"}  # --whole: whose whole image and whole FLIP maps are held
@@ -64,6 +66,9 @@ class Plan:
                     add(key, tag, why)
             for s in self.teaching:
                 add((s, self.levels[0], "box", 0.5), "C", ["teaching: box r=0.5 at the lowest spp"])
+            for key in ([self.default["cfg"]] + self.default["pins"]) if self.default else []:
+                if key in want:  # the default view's noise, which the crop is judged by, from more seeds
+                    want[key]["seeds"].update(range(min(self.seeds, max(self.flip, CROP_SEEDS))))
             self.configs[str(scene)] = [dict(c, seeds=sorted(c["seeds"]), sets=sorted(c["sets"]))
                                         for _, c in sorted(want.items())]
 
