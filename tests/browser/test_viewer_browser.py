@@ -132,14 +132,32 @@ def answer_checks(d, check, wait, page, work):
         check("\u00b1" not in caption and "no standard error" in caption,
               f"the fixed grid ({grid[0]}) shows no standard error: '{caption[:90]}'")
     from selenium.webdriver.common.action_chains import ActionChains
+    alone = d.execute_script("const cs = window.ALIASLAB_VIEWER.data[arguments[0]].configs; return (cs.find(c => "
+                             "cs.filter(x => x.sampler === c.sampler && x.spp === c.spp).length === 1) || {}).id",
+                             scene)
+    if alone:  # a sampler held with one filter at its spp: f stays and says why
+        d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0])", alone)
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
     before = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
     d.find_element("css selector", "#alv .alv-status").click()
     ActionChains(d).send_keys("f").perform()
     time.sleep(0.5)
     after = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
     status = d.find_element("css selector", "#alv .alv-status").text
-    check(after.split("|")[0] == before.split("|")[0] and (after != before or "held with this filter only" in status),
+    check(after.split("|")[0] == before.split("|")[0] and (after != before or "held with this filter only" in status)
+          and (not alone or (after == before and "held with this filter only" in status)),
           f"f keeps the sampler ({before} -> {after}) or says why ('{status[:80]}')")
+    if not alone:  # no such sampler in this study: make one (the scene's data without the current sampler's other
+        # configurations at its spp) and press f there
+        d.execute_script("const V = window.ALIASLAB_VIEWER, d = V.data[V.state.scene], c = d.configs.find(x => x.id "
+                         "=== V.state.cfg); d.configs = d.configs.filter(x => x === c || x.sampler !== c.sampler || "
+                         "x.spp !== c.spp); V.select(c.id)")
+        ActionChains(d).send_keys("f").perform()
+        time.sleep(0.5)
+        status = d.find_element("css selector", "#alv .alv-status").text
+        check(d.execute_script("return window.ALIASLAB_VIEWER.state.cfg") == after and
+              "held with this filter only" in status, f"f on a sampler held with one filter stays and says why "
+                                                      f"('{status[:90]}')")
     d.execute_script("const s = window.ALIASLAB_VIEWER.state, x = window.ALIASLAB_VIEWER.data[s.scene].default;"
                      "s.pins = x.pins.slice(); window.ALIASLAB_VIEWER.select(x.cfg)")
     wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
