@@ -87,8 +87,12 @@ class Served:
             cmd = render.command(self.raytracer, e.manifest["scene_path"], (e.width, e.height), e.manifest, c, k, path)
             render.render_all(self.raytracer, [(cmd, path)], 1, quiet=True)
             img = channels(read_exr(path))
-            checked = e.verify(img, {t: v[0] for t, v in e.tv.items()}, {t: v[1] for t, v in e.tv.items()},
-                               per_seed, k, image_stem(c, k))
+            try:
+                checked = e.verify(img, {t: v[0] for t, v in e.tv.items()}, {t: v[1] for t, v in e.tv.items()},
+                                   per_seed, k, image_stem(c, k))
+            except SystemExit:  # not the image measured: not kept for the next request either
+                os.remove(path)
+                raise
             ent = self.entries(e, path, img, crop_of(q))
         cid = "served:" + key_id((c["sampler"], c["spp"], c["filter"], c["radius"])) + f":seed{k}"
         config = dict(c, id=cid, sets=["served"], seeds=[k], why=[f"rendered on request, seed {k}, its mse_target "
