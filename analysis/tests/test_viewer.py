@@ -8,7 +8,6 @@ import csv
 import json
 import os
 import shutil
-import statistics
 import subprocess
 import tempfile
 import unittest
@@ -22,8 +21,10 @@ from ..aliaslab_analysis.viewer.exr import read_exr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")
-VIEWER = os.path.join(REPO, "results", "viewer")
-STUDY = os.path.join(REPO, "results", "presented", "study.csv")
+# ALIASLAB_VIEWER_DATA: check viewer data made elsewhere (e.g. a scratch export of the presented study)
+VIEWER = os.environ.get("ALIASLAB_VIEWER_DATA") or os.path.join(REPO, "results", "viewer")
+STUDY = os.environ.get("ALIASLAB_VIEWER_STUDY") or os.path.join(REPO, "results", "presented", "study.csv")
+ANSWER = os.path.join(os.path.dirname(VIEWER), "answer.csv")
 WHOLE_BUDGET = 20_000_000  # bytes of the whole-image files of all scenes (loaded only when asked for; 19.2 MB)
 
 
@@ -107,21 +108,29 @@ class CommittedViewerData(unittest.TestCase):
         for scene, d in self.scenes.items():
             n = d["crop"]["size"]
             for c in d["configs"]:
+                self.assertEqual(set(c["flipWhole"]), set(d["targets"]) if c["whole"] else set(), (scene, c["id"]))
                 self.assertEqual(set(c["flip"]), set(d["targets"]), (scene, c["id"]))
-                for t, key in c["flip"].items():
-                    # the primary target's in the first file, the others' in the file loaded on demand
-                    e = d["images"][key] if t == d["primary"] else self.whole[scene][key]
-                    self.assertEqual(key.startswith("w"), t != d["primary"], (scene, c["id"], t))
+                # the primary target's crop in the first file, the others' and every whole map in the second
+                maps = [(d["images"][c["flip"][d["primary"]]], (n, n, 1))] + \
+                    [(self.whole[scene][c["flip"][t]], (n, n, 1)) for t in d["targets"] if t != d["primary"]] + \
+                    [(self.whole[scene][k], (d["height"], d["width"], 1)) for k in c["flipWhole"].values()]
+                for e, shape in maps:
                     self.assertEqual((e["bits"], e["lo"], e["hi"], e["c"]), (8, 0.0, 1.0, 1))
                     v = export.decode(e)
-                    self.assertEqual(v.shape, (n, n, 1))
+                    self.assertEqual(v.shape, shape)
                     self.assertTrue(0.0 <= v.min() and v.max() <= 1.0)
+                if not c["whole"]:
+                    continue
+                crop = export.decode(self.whole[scene][c["flipWhole"][d["primary"]]])
+                x, y = d["crop"]["x"], d["crop"]["y"]
+                np.testing.assert_array_equal(crop[y:y + n, x:x + n], export.decode(d["images"][c["flip"][d["primary"]]]))
 
     def test_whole_images_of_every_configuration_in_the_second_file(self):
         for scene, d in self.scenes.items():
             w = self.whole[scene]
             self.assertFalse(any(k.startswith("w") for k in d["images"]), scene)
-            wanted = [c["whole"] for c in d["configs"]] + [r["whole"] for r in d["refs"].values()] + \
+            self.assertTrue(any(c["whole"] for c in d["configs"]), scene)
+            wanted = [c["whole"] for c in d["configs"] if c["whole"]] + [r["whole"] for r in d["refs"].values()] + \
                 [t["whole"] for t in d["targetImages"].values()]
             for key in wanted:
                 self.assertIn(key, w, scene)
@@ -135,7 +144,7 @@ class CommittedViewerData(unittest.TestCase):
         # their half steps of the same render
         for scene, d in self.scenes.items():
             x, y, n = d["crop"]["x"], d["crop"]["y"], d["crop"]["size"]
-            for c in d["configs"][:4]:
+            for c in [c for c in d["configs"] if c["whole"]][:4]:
                 we, ce = self.whole[scene][c["whole"]], d["images"][c["crop"]["0"]]
                 whole, crop = export.decode(we)[y:y + n, x:x + n], export.decode(ce)
                 step = (we["hi"] - we["lo"]) / 255 / 2 + (ce["hi"] - ce["lo"]) / 255 / 2
@@ -150,7 +159,7 @@ class CommittedViewerData(unittest.TestCase):
         self.assertLess(sum(sizes[f] for f in later), WHOLE_BUDGET, "the whole images, loaded on demand")
 
     def test_the_committed_script_is_the_packages(self):
-        for name in ("viewer.js", "viewer.css"):
+        for name in section.ASSETS:
             with open(os.path.join(VIEWER, name), encoding="utf-8") as f:
                 self.assertEqual(f.read(), section.asset(name), f"results/viewer/{name}: regenerate the page")
 
@@ -207,17 +216,70 @@ class Choices(unittest.TestCase):
         x, y = plan.crop_window(stack, 8)
         self.assertTrue(8 <= x <= 10 and 40 <= y <= 42, (x, y))
 
-    def test_good_filter_by_an_independent_median(self):
-        df = pd.read_csv(STUDY)
-        df = df[(df["reconstruction"] == "weighted") & (df["prefilter"] == "none")]
-        spp = sorted(df["spp"].unique())[len(df["spp"].unique()) // 2]
-        df = df[(df["spp"] == spp) & (df["deterministic"] == 0)]
-        per = {}
-        for (t, f, r), g in df.groupby(["target", "filter", "radius"]):
-            per.setdefault((f, float(r)), []).append(statistics.median(g["mse_target"]))
-        best = min(per, key=lambda k: statistics.median(per[k]))
-        renamed = pd.read_csv(STUDY).rename(columns={"filter": "filter_name"})
-        self.assertEqual(plan.good_filter(renamed), best)
+    def test_crop_is_structure_not_noise_when_the_noise_is_given(self):
+        rng = np.random.default_rng(3)
+        means = np.zeros((3, 64, 64))
+        noise = np.full((3, 64, 64), 1e-4)
+        means[:, 40:48, 8:16] = np.array([0.0, 0.1, 0.2])[:, None, None]  # a structural difference, quiet
+        means[:, 0:8, 40:48] = rng.normal(0, 0.5, (3, 8, 8))  # larger differences, all of them noise
+        noise[:, 0:8, 40:48] = 0.25
+        self.assertEqual(plan.crop_window(means, 8, noise=noise), (8, 40))
+        self.assertEqual(plan.crop_window(means, 8), (40, 0))  # by the variance alone: the noisy window
+
+
+def answer_rows():
+    """answer.csv beside the viewer data (read with the csv module), else the report's answer table computed from
+    the study (the code that writes answer.csv), as rows of strings."""
+    if os.path.isfile(ANSWER):
+        with open(ANSWER, newline="", encoding="utf-8") as f:
+            return list(csv.DictReader(f))
+    from ..aliaslab_analysis import study_csv
+    from ..aliaslab_analysis.findings.study import Study
+    df, notes = study_csv.load_study(STUDY)
+    return [{k: str(v) for k, v in r.items()} for r in Study(df, notes).answer.to_dict("records")]
+
+
+def named_methods(rows, scenes):
+    """{scene: {(sampler, spp, filter, radius): why}}: what answer.csv names, found independently of the viewer's
+    code: the rows called equivalent (a scene's, or across scenes: every scene) and, per (target, spp, sampler),
+    the across-scene row with the lowest ratio (ties: more scenes equivalent), plain weighted sampling only."""
+    rows = [r for r in rows if r["reconstruction"] == "weighted" and r["prefilter"] in ("none", "")]
+    key = lambda r: (r["sampler"], int(float(r["spp"])), r["filter"], float(r["radius"]))  # noqa: E731
+    out = {s: {} for s in scenes}
+    for r in rows:
+        if r["verdict"] == "equivalent":
+            for s in (scenes if r["scope"] == "all" else [r["scope"]]):
+                out[s][key(r)] = f"equivalent ({r['target']}, {r['spp']} spp, {r['scope']})"
+    best = {}
+    for r in rows:
+        if r["scope"] != "all" or not np.isfinite(float(r["ratio"] or "nan")):
+            continue
+        k = (r["target"], r["spp"], r["sampler"])
+        rank = (float(r["ratio"]), -int(float(r["equivalent_scenes"])))
+        if k not in best or rank < best[k][0]:
+            best[k] = (rank, r)
+    for (t, spp, sampler), (_, r) in best.items():
+        for s in scenes:
+            out[s].setdefault(key(r), f"best of {sampler} ({t}, {spp} spp)")
+    return out
+
+
+class TheAnswerIsInTheViewer(unittest.TestCase):
+    def test_every_method_answer_csv_names_is_in_the_viewer(self):
+        with open(os.path.join(VIEWER, "index.json"), encoding="utf-8") as f:
+            index = json.load(f)
+        held = {}
+        for s, v in index["scenes"].items():
+            d = load_js(os.path.join(VIEWER, v["file"]))
+            held[s] = {(c["sampler"], c["spp"], c["filter"], float(c["radius"])) for c in d["configs"]}
+            for c in d["configs"]:  # the methods equivalent to the best: their whole image and whole FLIP maps
+                if "E" in c["sets"]:
+                    self.assertTrue(c["whole"] and set(c["flipWhole"]) == set(d["targets"]), (s, c["id"]))
+        named = named_methods(answer_rows(), sorted(held))
+        missing = [(s, k, why) for s in named for k, why in named[s].items() if k not in held[s]]
+        self.assertGreater(sum(map(len, named.values())), 0)
+        self.assertEqual(missing, [], f"{len(missing)} named methods missing from {VIEWER} (regenerate it: "
+                                      "python3 -m analysis viewer)")
 
 
 class Teaching(unittest.TestCase):
@@ -251,6 +313,19 @@ class Teaching(unittest.TestCase):
         self.assertAlmostEqual(g["ratio"], 1.5)
 
 
+class ImageSizes(unittest.TestCase):
+    def test_teaching_img_has_the_pngs_size(self):
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+        from ..aliaslab_analysis.teaching import build
+        with tempfile.TemporaryDirectory() as tmp:
+            path = os.path.join(tmp, "a.png")
+            plt.imsave(path, np.zeros((7, 13)))  # 13 wide, 7 high
+            tag = build.img(path, "cap")
+            self.assertIn("width='13' height='7'", tag)
+
+
 class Section(unittest.TestCase):
     def test_no_data_no_section(self):
         self.assertEqual(section.viewer_section(os.path.join(REPO, "docs")), "")
@@ -276,7 +351,7 @@ class Section(unittest.TestCase):
                                                              "comparisons": 1, "max_relative_difference": 0}}}}, f)
             open(os.path.join(data, "s.js"), "w").close()
             html = section.viewer_section(tmp)
-            for name in ("viewer.js", "viewer.css"):
+            for name in section.ASSETS:
                 with open(os.path.join(data, name), encoding="utf-8") as f:
                     self.assertEqual(f.read(), section.asset(name))
             self.assertIn("<script src='viewer/viewer.js'>", html)

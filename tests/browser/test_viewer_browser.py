@@ -17,6 +17,10 @@ chromium-driver, loads a page generated for a small study from file:// and check
     data file, loaded on demand): the map is displayed and its readout equals imgdiff's map against that target;
   - the key c shows the whole image of a method other than the grid (also in the second file): it loads, and the
     readout of a pixel equals that pixel of the configuration's image file within half the stored step;
+the view it opens on is the answer's default (three panels in one row at 1366 px); every method answer.csv calls
+equivalent can be selected and its whole image and whole FLIP map load; the grid shows no standard error; f keeps
+the sampler; b flips A/B in place; served (--serve) it renders a row not in the data with the CSV's per-seed
+mse_target and readout, and shows a user EXR's error map;
 and writes screenshots at 1366 px wide to ARTIFACTS/viewer_1366.png and viewer_flip_1366.png.
 
   test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
@@ -24,6 +28,7 @@ Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or pytho
 import argparse
 import csv
 import glob
+import json
 import os
 import shutil
 import subprocess
@@ -81,6 +86,181 @@ def csv_rows(path):
         return list(csv.DictReader(f))
 
 
+def default_view_checks(d, check, wait):
+    """The view opened first: the answer's default (three methods at the lowest spp), its panels side by side
+    within the 1366 px window."""
+    v = d.execute_script("const V = window.ALIASLAB_VIEWER, s = V.state, x = V.data[s.scene];"
+                         "return [s.cfg, s.pins, x.default, x.levels[0]]")
+    cfg, pins, default, low = v
+    check(default is not None and cfg == default["cfg"] and pins == default["pins"] and len(pins) == 2,
+          f"the viewer opens on the answer's default view ({cfg} beside {pins})")
+    check(all(int(c.split("|")[1]) == low for c in [cfg] + pins), f"the default view is at the lowest spp ({low})")
+    boxes = d.execute_script("return [...document.querySelectorAll('#alv .alv-panel')].map(f => "
+                             "{const r = f.getBoundingClientRect(); return [r.left, r.right, r.top]})")
+    check(len(boxes) == 3 and len({round(b[2]) for b in boxes}) == 1 and max(b[1] for b in boxes) <= 1366,
+          f"the three default panels sit in one row within 1366 px ({boxes})")
+
+
+def answer_checks(d, check, wait, page, work):
+    """Every method answer.csv calls equivalent to the best can be selected, and its whole image and whole FLIP
+    map load; the fixed grid shows no standard error; `f` keeps the sampler or says why; b flips A/B in place."""
+    scene = d.execute_script("return window.ALIASLAB_VIEWER.state.scene")
+    held = set(d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].configs.map(c => c.id)", scene))
+    named = set()
+    for r in csv_rows(os.path.join(page, "answer.csv")):
+        if r["verdict"] == "equivalent" and r["scope"] in ("all", scene) and r["reconstruction"] == "weighted":
+            named.add(f"{r['sampler']}|{int(float(r['spp']))}|{r['filter']}|{float(r['radius']):g}")
+    check(named and named <= held, f"every method answer.csv calls equivalent in {scene} is held "
+                                   f"({len(named)}; missing {sorted(named - held)[:3]})")
+    ok = 0
+    for cid in sorted(named & held):
+        for mode in ("image", "flip"):
+            d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0], arguments[1], 'whole')", cid, mode)
+            loaded = wait("const f = document.querySelector('#alv .alv-main'); return f && f.dataset.config === "
+                          f"'{cid}' && f.querySelector('.alv-readout') !== null")
+            ok += bool(loaded)
+    check(ok == 2 * len(named & held), f"{ok} whole images and whole FLIP maps of the equivalent methods load")
+    d.execute_script("window.ALIASLAB_VIEWER.select(window.ALIASLAB_VIEWER.data[arguments[0]].default.cfg, "
+                     "'image', 'crop')", scene)
+    wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+    grid = d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].configs.filter(c => "
+                            "Object.values(c.rows)[0].deterministic).map(c => c.id)", scene)
+    if grid:
+        d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0])", grid[0])
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+        caption = d.find_element("css selector", "#alv .alv-main figcaption").text
+        check("\u00b1" not in caption and "no standard error" in caption,
+              f"the fixed grid ({grid[0]}) shows no standard error: '{caption[:90]}'")
+    from selenium.webdriver.common.action_chains import ActionChains
+    alone = d.execute_script("const cs = window.ALIASLAB_VIEWER.data[arguments[0]].configs; return (cs.find(c => "
+                             "cs.filter(x => x.sampler === c.sampler && x.spp === c.spp).length === 1) || {}).id",
+                             scene)
+    if alone:  # a sampler held with one filter at its spp: f stays and says why
+        d.execute_script("window.ALIASLAB_VIEWER.select(arguments[0])", alone)
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+    before = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
+    d.find_element("css selector", "#alv .alv-status").click()
+    ActionChains(d).send_keys("f").perform()
+    time.sleep(0.5)
+    after = d.execute_script("return window.ALIASLAB_VIEWER.state.cfg")
+    status = d.find_element("css selector", "#alv .alv-status").text
+    check(after.split("|")[0] == before.split("|")[0] and (after != before or "held with this filter only" in status)
+          and (not alone or (after == before and "held with this filter only" in status)),
+          f"f keeps the sampler ({before} -> {after}) or says why ('{status[:80]}')")
+    if not alone:  # no such sampler in this study: make one (the scene's data without the current sampler's other
+        # configurations at its spp) and press f there
+        d.execute_script("const V = window.ALIASLAB_VIEWER, d = V.data[V.state.scene], c = d.configs.find(x => x.id "
+                         "=== V.state.cfg); d.configs = d.configs.filter(x => x === c || x.sampler !== c.sampler || "
+                         "x.spp !== c.spp); V.select(c.id)")
+        ActionChains(d).send_keys("f").perform()
+        time.sleep(0.5)
+        status = d.find_element("css selector", "#alv .alv-status").text
+        check(d.execute_script("return window.ALIASLAB_VIEWER.state.cfg") == after and
+              "held with this filter only" in status, f"f on a sampler held with one filter stays and says why "
+                                                      f"('{status[:90]}')")
+    d.execute_script("const s = window.ALIASLAB_VIEWER.state, x = window.ALIASLAB_VIEWER.data[s.scene].default;"
+                     "s.pins = x.pins.slice(); window.ALIASLAB_VIEWER.select(x.cfg)")
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
+    first = "return document.querySelector('#alv .alv-main').dataset.config"
+    a = d.execute_script(first)
+    ActionChains(d).send_keys("b").perform()
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 2")
+    b = d.execute_script(first)
+    pins = d.execute_script("return window.ALIASLAB_VIEWER.state.pins")
+    check(a != b and b == pins[0], f"b shows the first pinned method in the first panel ({a} -> {b})")
+    ActionChains(d).send_keys("b").perform()
+    wait("return document.querySelectorAll('#alv .alv-panel .alv-readout').length === 3")
+    check(d.execute_script(first) == a, "b again shows the current method again")
+
+
+def served_checks(d, check, wait, page, study, work, cache, rows):
+    """The served viewer (serve.py): renders a CSV row the exported data does not hold (a seed past the
+    flip-book's), its mse_target from the image equal to the CSV's per-seed value and its readout equal to the EXR
+    the raytracer wrote; loads a user EXR and shows its error map against a chosen target."""
+    held = set()
+    for name in glob.glob(os.path.join(page, "viewer", "*.js")):
+        with open(name, encoding="utf-8") as f:
+            text = f.read()
+        if text.startswith("ALIASLAB_VIEWER_ADD("):
+            data = json.loads(text[len("ALIASLAB_VIEWER_ADD("):text.rstrip().rindex(")")])
+            held |= {(data["scene"], c["id"], k) for c in data["configs"] for k in c["seeds"]}
+    scene = sorted({r["scene"] for r in rows})[0]
+    row = next(r for r in rows if r["scene"] == scene and r["reconstruction"] == "weighted" and
+               (scene, f"{r['sampler']}|{r['spp']}|{r['filter']}|{float(r['radius']):g}", 3) not in held)
+    mine = os.path.join(os.path.dirname(work), "mine.exr")
+    shutil.copy(next(iter(glob.glob(os.path.join(work, "*", "*-seed0.exr")))), mine)
+    proc = subprocess.Popen([sys.executable, "-m", "analysis", "viewer", page, "--study", os.path.join(study, "study.csv"),
+                             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--serve", "--port", "0",
+                             "--exr", mine], cwd=ARGS.source, stdout=subprocess.PIPE, text=True,
+                            env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"))
+    try:
+        line = proc.stdout.readline()
+        url = line.split(" on ")[1].split()[0] if " on http" in line else None
+        check(url is not None, f"the server says where it serves ({line.strip()})")
+        if not url:
+            return
+        d.get(url)
+        d.execute_script("document.getElementById('alv').scrollIntoView()")
+        check(wait("return !!window.ALIASLAB_VIEWER.served && !!document.querySelector('#alv .alv-serve')"),
+              "the served page shows the render controls")
+        d.execute_script("window.ALIASLAB_VIEWER.state.scene !== arguments[0] && "
+                         "document.querySelector(`#alv [data-scene='${arguments[0]}']`).click()", scene)
+        wait(f"return window.ALIASLAB_VIEWER.state.scene === '{scene}' && "
+             "document.querySelector('#alv .alv-main .alv-readout') !== null")
+        d.execute_script("window.ALIASLAB_VIEWER.serveRender({sampler: arguments[0], spp: arguments[1], filter: "
+                         "arguments[2], radius: arguments[3], seed: 3}).then(j => window._served = j, "
+                         "e => window._served = {error: String(e)})", row["sampler"], row["spp"], row["filter"],
+                         row["radius"])
+        check(wait("return !!window._served") or wait("return !!window._served"), "the server answers the render")
+        got = d.execute_script("return window._served")
+        seeds = {r["target"]: float(r["mse_target_seeds"].split(";")[3]) for r in rows
+                 if (r["scene"], r["sampler"], r["spp"], r["filter"], r["radius"], r["reconstruction"]) ==
+                 (scene, row["sampler"], row["spp"], row["filter"], row["radius"], "weighted")}
+        ver = {t: mine_v for t, mine_v, _ in (got or {}).get("verified", [])}
+        check(ver and set(ver) == set(seeds) and all(abs(ver[t] - seeds[t]) <= 1e-5 * abs(seeds[t]) for t in seeds),
+              f"the row rendered on request ({row['sampler']} {row['spp']} spp {row['filter']} r={row['radius']} "
+              f"seed 3) has the CSV's per-seed mse_target ({ver} vs {seeds}; {(got or {}).get('error')})")
+        cid = (got or {}).get("config", {}).get("id")
+        check(wait(f"return document.querySelector('#alv .alv-main').dataset.config === '{cid}' && "
+                   "document.querySelector('#alv .alv-main .alv-readout') !== null"), f"{cid} is shown")
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
+        from selenium.webdriver.common.action_chains import ActionChains
+        ActionChains(d).move_to_element_with_offset(canvas, 7, -9).perform()
+        time.sleep(0.3)
+        span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
+        x, y = int(span.get_attribute("data-x")), int(span.get_attribute("data-y"))
+        values = [float(v) for v in span.get_attribute("data-value").split(",")]
+        img = read_image(got["config"]["path"])
+        diffs = [abs(v - float(img[y, x, c])) for c, v in enumerate(values)]
+        check(max(diffs) <= float(span.get_attribute("data-step")) / 2 + 1e-6,
+              f"the served image's readout at ({x}, {y}) {values} equals the raytracer's EXR {img[y, x, :len(values)]}")
+        # a user EXR, its error map against the second target
+        d.execute_script("window._exr = null; window.ALIASLAB_VIEWER.serveExr('mine.exr').then(j => window._exr = j, "
+                         "e => window._exr = {error: String(e)})")
+        check(wait("return !!window._exr") or wait("return !!window._exr"), "the server answers the EXR")
+        err = d.execute_script("return window._exr.error || null")
+        check(err is None and wait("return document.querySelector('#alv .alv-main').dataset.config === 'exr:mine.exr'"),
+              f"the user EXR is shown ({err})")
+        targets = d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].targets", scene)
+        d.execute_script("const V = window.ALIASLAB_VIEWER; V.state.target = arguments[0]; V.select('exr:mine.exr', "
+                         "'error', 'crop')", targets[-1])
+        wait("return document.querySelector('#alv .alv-main .alv-readout') !== null")
+        label = d.find_element("css selector", "#alv .alv-bar-label").text
+        canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        ActionChains(d).move_to_element_with_offset(canvas, 5, 5).perform()
+        time.sleep(0.3)
+        text = d.find_element("css selector", "#alv .alv-main .alv-readout span").text
+        check(f"against {targets[-1]}" in label and "error" in text,
+              f"the user EXR's error map against {targets[-1]} ('{label[:50]}', readout '{text[:80]}')")
+        logs = [e for e in d.get_log("browser") if e.get("level") == "SEVERE"]
+        check(not logs, f"no console errors when served ({logs[:2]})")
+        d.save_screenshot(os.path.join(ARGS.artifacts, "viewer_served_1366.png"))
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
+
+
 def main():
     d = browser()
     from selenium.webdriver.common.action_chains import ActionChains
@@ -102,7 +282,8 @@ def main():
         env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
         os.makedirs(page)
         run([sys.executable, "-m", "analysis", "viewer", page, "--study", os.path.join(study, "study.csv"),
-             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--flip-seeds", "2", "--quiet"], env=env)
+             "--raytracer", ARGS.raytracer, "--work", work, "--cache", cache, "--flip-seeds", "2", "--whole", "answer",
+             "--quiet"], env=env)
         run([sys.executable, "-m", "analysis", "report", page, "--study", os.path.join(study, "study.csv"),
              "--reuse-charts"], env=env, stdout=subprocess.DEVNULL)
         rows = csv_rows(os.path.join(study, "study.csv"))
@@ -113,6 +294,7 @@ def main():
         wait = lambda js: next((True for _ in range(100) if d.execute_script(js) or time.sleep(0.1)), False)
         check(wait("return document.querySelectorAll('#alv .alv-panel canvas').length > 0"), "the viewer draws its panels")
         time.sleep(0.5)
+        default_view_checks(d, check, wait)
         main_canvas = "return document.querySelector('#alv .alv-main canvas').toDataURL()"
         state = "return window.ALIASLAB_VIEWER.state.cfg"
         before_cfg, before_pic = d.execute_script(state), d.execute_script(main_canvas)
@@ -120,12 +302,15 @@ def main():
         ActionChains(d).send_keys(Keys.ARROW_RIGHT).perform()
         time.sleep(1.0)
         after_cfg, after_pic = d.execute_script(state), d.execute_script(main_canvas)
-        check(after_cfg != before_cfg and after_cfg.split("|")[1:] == before_cfg.split("|")[1:],
-              f"ArrowRight switches the sampler ({before_cfg} -> {after_cfg})")
+        # each sampler is held at its own best filter and radius: the spp stays, the filter may follow the sampler
+        check(after_cfg != before_cfg and after_cfg.split("|")[0] != before_cfg.split("|")[0]
+              and after_cfg.split("|")[1] == before_cfg.split("|")[1],
+              f"ArrowRight switches the sampler at the same spp ({before_cfg} -> {after_cfg})")
         check(after_pic != before_pic, "the displayed image changes with it")
 
         # the readout of one pixel against the configuration's image file
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         size = canvas.size
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
         time.sleep(0.3)
@@ -202,6 +387,7 @@ def main():
         check("FLIP" in label and "0" in label and "1" in label and len(set(bar)) > 1,
               f"the FLIP colour bar is shown, coloured {bar}, labelled '{label[:60]}...'")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 5, size["height"] // 7).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -235,6 +421,7 @@ def main():
         readout = "return document.querySelector('#alv .alv-main .alv-readout') !== null"
         check(other != primary and wait(readout), f"the FLIP map against {other} (not the primary {primary}) is shown")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, -size["width"] // 6, size["height"] // 5).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -261,6 +448,7 @@ def main():
         sampler, spp, filt, radius = cfg.split("|")
         check(sampler != "uniform", f"{cfg} is not the grid")
         canvas = d.find_element("css selector", "#alv .alv-main canvas")
+        d.execute_script("arguments[0].scrollIntoView({block: 'center'})", canvas)
         ActionChains(d).move_to_element_with_offset(canvas, size["width"] // 4, -size["height"] // 3).perform()
         time.sleep(0.3)
         span = d.find_element("css selector", "#alv .alv-main .alv-readout span")
@@ -282,6 +470,9 @@ def main():
         shot = os.path.join(ARGS.artifacts, "viewer_whole_1366.png")
         d.save_screenshot(shot)
         print(f"screenshot: {shot}")
+        answer_checks(d, check, wait, page, work)
+        served_checks(d, check, wait, page, study, work, cache, rows)
+        check(not [e for e in d.get_log("browser") if e.get("level") == "SEVERE"], "no console errors at the end")
     finally:
         d.quit()
         shutil.rmtree(tmp, ignore_errors=True)

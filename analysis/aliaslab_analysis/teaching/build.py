@@ -23,10 +23,22 @@ def uri(path):
         return "data:image/png;base64," + base64.b64encode(f.read()).decode("ascii")
 
 
+def png_size(path):
+    """(width, height) of a PNG file, from its IHDR chunk."""
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
+
+
 def img(path, caption, cls=""):
+    """A figure embedding the PNG at path, its <img> sized (width, height: the page lays out before it decodes)."""
     if not os.path.isfile(path):
         return ""
-    return (f"<figure class='{cls}'><img src='{uri(path)}' alt='{html.escape(caption)}'>"
+    size = png_size(path)
+    dims = f" width='{size[0]}' height='{size[1]}'" if size else ""
+    return (f"<figure class='{cls}'><img src='{uri(path)}'{dims} alt='{html.escape(caption)}'>"
             f"<figcaption>{caption}</figcaption></figure>")
 
 

@@ -1,12 +1,17 @@
 """The comparison viewer of the page (issue 30): the study's own images side by side on the same region.
 
-  plan.py     which configurations are shown (a subset chosen from the CSV) and the crop window
+  answer.py   the methods the answer names (as answer.csv: equivalent to the best, best of each sampler) and
+              the default view
+  plan.py     which configurations are shown (those answer.py names, the teaching trio) and the crop window
+  view.py     the view opened first (the answer's default) and its crop
+  serve.py    --serve: the page on localhost, any CSV row rendered on request, the user's EXRs
   render.py   renders them with the raytracer (the sweep's sampler, seed and filter: the same images)
   exr.py      reads EXR images through Debian's oiiotool
   encoding.py an image's values as a PNG data URI (8 or 16 bits over its own range) and back
   export.py   checks each image against the CSV's per-seed mse_target and writes RESULTS/viewer/<scene>.js
-              (loaded when the scene is opened) and <scene>_whole.js (whole images, FLIP maps against the
-              other targets: loaded when asked for)
-  section.py  the page's section; copies viewer.js and viewer.css into RESULTS/viewer/ (the page refers to them)
-  cli.py      `python3 -m analysis viewer RESULTS --study CSV --raytracer build/bin/raytracer`
+              (loaded when the scene is opened) and <scene>_whole.js (whole images, whole FLIP maps against
+              every target: loaded when asked for)
+  section.py  the page's section; copies viewer.js, viewer_serve.js and viewer.css into RESULTS/viewer/ (the
+              page refers to them)
+  cli.py      `python3 -m analysis viewer RESULTS --study CSV --raytracer build/bin/raytracer [--serve]`
 """

@@ -6,16 +6,17 @@ folder and exports the viewer's data beside the page (export.py).
 
 writes RESULTS/viewer/<scene>.js (one per scene, loaded by the page when that scene is opened) and
 RESULTS/viewer/index.json (what was chosen and how); the FLIP maps (imgdiff) are kept in the work folder too;
-`report` then shows the viewer when RESULTS/viewer exists."""
+`report` then shows the viewer when RESULTS/viewer exists. With --serve [--port N] [--exr FILE ...] it renders
+nothing first: it serves RESULTS on localhost and renders any CSV row on request (serve.py)."""
 import argparse
 import json
 import os
 
 from .. import errors, figures, study_csv
 from ..teaching import build as teaching
-from . import export, render
+from . import export, render, serve
 from .flip import imgdiff_beside
-from .plan import Plan
+from .plan import WHOLE, Plan
 
 
 def manifest_of(study, scene):
@@ -42,6 +43,15 @@ def main(argv=None, prog=None):
     ap.add_argument("--no-render", action="store_true", help="export from the images already rendered (a "
                     "configuration's missing flip-book seeds are left out; seed 0 is required)")
     ap.add_argument("--render-only", action="store_true", help="render the images, export nothing")
+    ap.add_argument("--whole", choices=sorted(WHOLE), default="answer", help="whose whole image and whole FLIP "
+                    "maps are stored (the crops are stored for all): " + "; ".join(f"{k}: {v}" for k, v in
+                                                                               sorted(WHOLE.items())) +
+                    " (default %(default)s; 'all' is about 18 MB per 256 x 256 scene)")
+    ap.add_argument("--serve", action="store_true", help="serve RESULTS (the page and its viewer) on "
+                    "http://127.0.0.1:PORT and render any CSV row on request (serve.py); renders nothing first")
+    ap.add_argument("--port", type=int, default=8765, help="--serve's port (0: any free one; default %(default)s)")
+    ap.add_argument("--exr", nargs="*", default=[], help="with --serve: EXR files of your own the viewer can load "
+                    "beside the study's (the scene's size)")
     ap.add_argument("--quiet", action="store_true")
     args = ap.parse_args(argv)
     if not os.path.isfile(args.study):
@@ -52,9 +62,19 @@ def main(argv=None, prog=None):
         errors.fail("--flip-seeds: must be at least 1")
     if args.jobs < 1:
         errors.fail("--jobs: must be at least 1")
-    try:
+    for p in args.exr:
+        if not os.path.isfile(p):
+            errors.fail(f"--exr: {p}: no such file")
+    if args.serve:
         df, _ = study_csv.load_study(args.study)
-        plan = Plan(df, args.flip_seeds)
+        imgdiff = args.imgdiff or imgdiff_beside(args.raytracer)
+        return serve.serve(serve.Served(args.results, args.study, df, args.raytracer,
+                                        imgdiff if os.path.isfile(imgdiff) else None, args.work, args.cache,
+                                        args.exr), args.port)
+    try:
+        df, notes = study_csv.load_study(args.study)
+        plan = Plan(df, args.flip_seeds, notes)
+        plan.whole = args.whole
         scenes = sorted(plan.configs)
         if args.scenes:
             wanted = args.scenes.split(",")

@@ -4,8 +4,10 @@ for a whole image or a FLIP map against a target other than the primary one (a p
 drawn from a file:// image; images from data: URIs it does not taint). The first file calls
 ALIASLAB_VIEWER_ADD(scene data) with:
 
-  crop      {x, y, size, how}: the window where the methods differ most (plan.crop_window over set A's seed-0
-            images at the lowest spp: the largest summed variance across methods)
+  crop      {x, y, size, how}: the window where the default view's methods differ most relative to their noise
+            (plan.crop_window over their mean images at the lowest spp and the noise of those means: choose_crop)
+  default   {cfg, pins, why, target}: the view opened first (answer.default_view: the leading method at the lowest
+            spp, the runner-up family's best, jittered at its own best)
   images    id -> {w, h, c, bits, lo, hi, src[, src2]} (ids short numbers; equal entries stored once): PNG data URIs holding one image's values (one channel
             when R = G = B, as in the grey scenes, else three), value = lo + q (hi - lo) / (2^bits - 1) with q the
             stored integer: 8 bits for a method's image and the references, 16 bits for the targets' crops (the
@@ -13,14 +15,14 @@ ALIASLAB_VIEWER_ADD(scene data) with:
             lo, hi the image's own minimum and maximum, so the step is stated per image
   configs   per configuration: sampler, spp, filter, radius, the seeds rendered, its image ids (crop per seed;
             whole: the whole image of seed 0, 8 bits), its own reference and its CSV rows, one per target: the
-            CSV's values of the columns rowColumns (ROW_COLUMNS present in the CSV), in that order;
-            flip: {target: the FLIP map's id} for every target (the crop, seed 0)
+            CSV's values of the columns rowColumns (ROW_COLUMNS present in the CSV), in that order; why: the
+            answer's reasons it is shown; flip: {primary target: the FLIP map's crop id}, flipWhole: {target:
+            the whole FLIP map's id} for every target (seed 0; in the second file)
   targets   the target images (crop and whole); refs: each filter x radius's own reference G (crop and whole)
-  wholeFile the second file's name; its ids (prefix "w": every whole image, the FLIP maps against the targets
-            other than the primary one) are not in `images` until it is loaded: it calls
+  wholeFile the second file's name; its ids (prefix "w": every whole image, every whole FLIP map) are not in `images` until it is loaded: it calls
             ALIASLAB_VIEWER_WHOLE(scene, {id: entry}) (WHOLE_DOC)
   scales    the signed error's colour scale per (spp, target): the 99th percentile of |I_0 - T| (the mean over
-            the channels) over set A's methods at that spp in the crop
+            the channels) over the answer's methods (sets E, P) at that spp in the crop
   verified  every image's per-seed mse_target recomputed from the EXRs against the CSV's mse_target_seeds
 
 RESULTS/viewer/index.json says what was chosen (plan.describe()) and the verification."""
@@ -32,12 +34,14 @@ from .. import errors, figures
 from .encoding import channels, decode, png_entry  # noqa: F401 (decode: the tests' inverse of png_entry)
 from .exr import read_exr, read_exrs
 from .flip import flip_maps, map_path
-from .plan import crop_window, image_stem
+from . import view
+from .plan import image_stem
+from .view import config_id
 
 ROW_COLUMNS = ("mse_target", "mse_target_se", "aliasing", "noise", "blur", "cross", "flip", "flagged", "deterministic",
                "cpu_ms")  # the CSV columns shown beside an image
 WHOLE_DOC = ("whole images (seed 0 of every configuration shown, every own reference, every target; 8 bits over "
-             "each image's own range) and the FLIP maps against the targets other than the primary one")
+             "each image's own range) and the whole FLIP maps against every target")
 TOLERANCE = 1e-5  # relative: the EXR images against the sweep's per-seed mse_target (float images, double sums)
 
 
@@ -113,10 +117,11 @@ class SceneExport:
         self.images[self.same[same]] = e
         return self.same[same]
 
-    def flip_crops(self, configs):
-        """{config index: {target: image id}}: the FLIP map of each configuration's seed-0 image against every
-        target (imgdiff over the whole image, the crop stored, 8 bits over the fixed scale FLIP 0..1; the maps
-        against the targets other than the primary one in the second file)."""
+    def flip_ids(self, configs):
+        """{config index: ({target: crop id}, {target: whole id})}: the FLIP map of each configuration's seed-0
+        image against every target (imgdiff over the whole image, 8 bits over the fixed scale FLIP 0..1): the
+        crops (the primary target's in the first file, the others' in the second), the whole maps (second file)
+        of the configurations whose whole image is held (view.holds_whole)."""
         if not self.imgdiff:
             return {}
         pairs, where = [], []
@@ -129,8 +134,37 @@ class SceneExport:
         out = {}
         for (i, t), m in zip(where, flip_maps(self.imgdiff, pairs, (self.width, self.height))):
             base = image_stem(configs[i], 0)
-            out.setdefault(i, {})[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0),
-                                                later=t != self.targets[0])
+            crop, whole = out.setdefault(i, ({}, {}))
+            if view.holds_whole(self.plan, configs[i]):
+                whole[t] = self.add(f"{base}-flip-{t}-whole", m[..., None], 8, "whole", (0.0, 1.0))
+            crop[t] = self.add(f"{base}-flip-{t}-crop", m[..., None], 8, "crop", (0.0, 1.0),
+                               later=t != self.targets[0])
+        return out
+
+    def rows_of(self, c):
+        """({target: the CSV values of row_columns}, {target: per-seed mse_target}) of a configuration."""
+        rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
+                       & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
+        per_target, per_seed = {}, {}
+        for _, r in rows.iterrows():
+            vals = row_values(r)
+            per_target[str(r["target"])] = [vals[k] for k in self.row_columns]
+            per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
+        return per_target, per_seed
+
+    def verify(self, img, target_imgs, target_var, per_seed, k, base):
+        """Each target's mse_target of seed k's image (its variance subtracted) against the CSV's per-seed value;
+        fails when one differs by more than TOLERANCE; returns [(target, from the image, the CSV's)]."""
+        out = []
+        for t in self.targets:
+            mine = float(np.mean((img - target_imgs[t]) ** 2)) - target_var[t]
+            theirs = per_seed[t][k]
+            rel = abs(mine - theirs) / max(abs(theirs), 1e-12)
+            self.worst, self.checked = max(self.worst, rel), self.checked + 1
+            if rel > TOLERANCE:
+                errors.fail(f"{self.scene}: {base} seed {k}: mse_target against {t} from the image "
+                            f"{mine:.9g}, the CSV says {theirs:.9g}: the image is not the one measured")
+            out.append((t, mine, theirs))
         return out
 
     def run(self):
@@ -153,46 +187,32 @@ class SceneExport:
             seeds[key] = channels(img)
         if not configs:
             errors.fail(f"{self.scene}: no rendered image in {self.work} (run without --no-render)")
-        # the crop: where set A's seed-0 images at the lowest spp differ most
+        # the crop: where the default view's methods differ most relative to their noise (choose_crop)
         n = crop_size(self.width, self.height)
-        stack = [seeds[(image_stem(c, 0), 0)] for c in configs if "A" in c["sets"] and c["spp"] == plan.levels[0]]
-        stack = stack or [seeds[(image_stem(c, 0), 0)] for c in configs]
-        cx, cy = crop_window(np.array([a.mean(axis=2) for a in stack]), n)
+        cx, cy, crop_how = view.choose_crop(self.plan, configs, seeds, n)
         self.crop = (cx, cy, n)
         out_configs, refs = [], {}
-        scales, flips = {}, self.flip_crops(configs)
+        scales, flips = {}, self.flip_ids(configs)
         for i, c in enumerate(configs):
-            rows = self.sd[(self.sd["sampler"] == c["sampler"]) & (self.sd["spp"] == c["spp"])
-                           & (self.sd["filter_name"] == c["filter"]) & (self.sd["radius"] == c["radius"])]
-            per_target, per_seed = {}, {}
-            for _, r in rows.iterrows():
-                vals = row_values(r)
-                per_target[str(r["target"])] = [vals[k] for k in self.row_columns]
-                per_seed[str(r["target"])] = [float(x) for x in str(r["mse_target_seeds"]).split(";") if x]
+            per_target, per_seed = self.rows_of(c)
             base = image_stem(c, 0)[:-len("-seed0")]
             for k in c["seeds"]:
-                img = seeds[(image_stem(c, 0), k)]
-                for t in self.targets:
-                    mine = float(np.mean((img - target_imgs[t]) ** 2)) - target_var[t]
-                    theirs = per_seed[t][k]
-                    rel = abs(mine - theirs) / max(abs(theirs), 1e-12)
-                    self.worst, self.checked = max(self.worst, rel), self.checked + 1
-                    if rel > TOLERANCE:
-                        errors.fail(f"{self.scene}: {base} seed {k}: mse_target against {t} from the image "
-                                    f"{mine:.9g}, the CSV says {theirs:.9g}: the image is not the one measured")
+                self.verify(seeds[(image_stem(c, 0), k)], target_imgs, target_var, per_seed, k, base)
             ref_key = f"{c['filter']}|{c['radius']:g}"
-            whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole")
+            whole = self.add(f"{base}-seed0-whole", seeds[(image_stem(c, 0), 0)], 8, "whole") \
+                if view.holds_whole(self.plan, c) else None
             if ref_key not in refs:
                 g, _, describe = self.reference(c["filter"], c["radius"])
                 refs[ref_key] = {"crop": self.add(f"ref-{ref_key}-crop", g, 8, "crop"),
                                  "whole": self.add(f"ref-{ref_key}-whole", g, 8, "whole"), "describe": describe}
             crops = {str(k): self.add(f"{base}-seed{k}-crop", seeds[(image_stem(c, 0), k)], 8, "crop")
                      for k in c["seeds"]}
-            out_configs.append({"id": f"{c['sampler']}|{c['spp']}|{c['filter']}|{c['radius']:g}",
+            flip_crop, flip_whole = flips.get(i, ({}, {}))
+            out_configs.append({"id": config_id(c), "why": c.get("why", []),
                                 "sampler": c["sampler"], "spp": c["spp"], "filter": c["filter"],
                                 "radius": c["radius"], "sets": c["sets"], "seeds": c["seeds"], "crop": crops,
-                                "whole": whole, "ref": ref_key, "rows": per_target, "flip": flips.get(i, {})})
-            if "A" in c["sets"]:
+                                "whole": whole, "ref": ref_key, "rows": per_target, "flip": flip_crop, "flipWhole": flip_whole})
+            if {"E", "P"} & set(c["sets"]):
                 e0 = seeds[(image_stem(c, 0), 0)][cy:cy + n, cx:cx + n]
                 for t in self.targets:  # the error shown: the mean over the channels of I - T
                     err = np.mean(e0 - target_imgs[t][cy:cy + n, cx:cx + n], axis=2)
@@ -201,17 +221,15 @@ class SceneExport:
         targets = {t: {"crop": self.add(f"target-{t}-crop", target_imgs[t], 16, "crop"),
                        "whole": self.add(f"target-{t}-whole", target_imgs[t], 8, "whole")} for t in self.targets}
         return {"scene": self.scene, "width": self.width, "height": self.height,
-                "crop": {"x": cx, "y": cy, "size": n,
-                         "how": f"the {n} x {n} window with the largest summed variance across the methods of set A "
-                                f"(seed 0, {plan.levels[0]} spp)"},
+                "crop": {"x": cx, "y": cy, "size": n, "how": crop_how},
+                "default": view.default_view(self.plan, out_configs),
                 "wholeHow": WHOLE_DOC,
                 "levels": plan.levels, "targets": self.targets, "primary": self.targets[0], "configs": out_configs,
                 "refs": refs, "targetImages": targets, "rowColumns": self.row_columns, "scales": scale,
                 "flipHow": "per-pixel LDR-FLIP of the seed-0 image against the target (imgdiff "
-                           "--flip-output, the "
-                           "flip column's map; its mean over the whole image and the seeds is the CSV's flip), "
-                           "crop only, 8 bits over 0..1",
-                "scaleHow": "99th percentile of |I - T| over the crop of every sampler of set A at that spp (seed 0)",
+                           "--flip-output, the flip column's map; its mean over the whole image and the seeds is "
+                           "the CSV's flip), 8 bits over 0..1; whole maps loaded on demand",
+                "scaleHow": "99th percentile of |I - T| over the crop of every method the answer names at that spp (seed 0)",
                 "plan": plan.describe(), "not_rendered": self.missing, "verified": {"images": len(seeds), "comparisons": self.checked,
                                                       "max_relative_difference": self.worst},
                 "images": self.images}

@@ -8,6 +8,7 @@ import json
 import os
 
 HERE = os.path.dirname(os.path.abspath(__file__))
+ASSETS = ("viewer.js", "viewer_serve.js", "viewer.css")  # viewer_serve.js: active only when served (serve.py)
 
 
 def asset(name):
@@ -17,7 +18,7 @@ def asset(name):
 
 def write_assets(data_dir):
     """Copies viewer.js and viewer.css into data_dir where missing or different."""
-    for name in ("viewer.js", "viewer.css"):
+    for name in ASSETS:
         path, text = os.path.join(data_dir, name), asset(name)
         if os.path.isfile(path):
             with open(path, encoding="utf-8") as f:
@@ -57,11 +58,14 @@ def viewer_section(page_dir, data_dir=None, write=True):
              "for all).") if later else ""
     worst = max(v["verified"]["max_relative_difference"] for v in meta["scenes"].values())
     return (f"<h2 id='viewer'>Compare by eye</h2><p>The study's own images, side by side on the same region: "
-            "per scene a crop where the methods differ most and the whole image, magnified without smoothing. "
+            "it opens on the answer (the leading method at the lowest spp beside the runner-up family's best and "
+            "jittered, on the crop where their mean images differ most relative to their noise) and holds every "
+            "method the answer names (equivalent to the best, the best of each sampler); the whole image too, "
+            "magnified without smoothing. "
             "Switch the sampler, spp, filter, radius and target with the buttons or keys (click in the viewer "
             "first); show the image, its own reference, the target, the signed error against the target or the "
-            "FLIP map (the project's imgdiff, seed 0, on the crop), each with its colour bar; pin methods to "
-            "compare them with zoom and pan in step; point at a pixel "
+            "FLIP map (the project's imgdiff, seed 0), each with its colour bar; pin methods to "
+            "compare them with zoom and pan in step (b flips the first panel between two methods in place); point at a pixel "
             "for its value and error; flip through the seeds (aliasing stays put, noise moves). The numbers "
             "beside each image are its CSV row's. Which configurations are shown: "
             f"{html.escape(meta['plan'])}. Each image was rendered by the raytracer with the sweep's sampler, "
@@ -72,7 +76,8 @@ def viewer_section(page_dir, data_dir=None, write=True):
             "<div class='alv-scenes'></div><div class='alv-controls'></div><div class='alv-status'></div>"
             "<canvas class='alv-bar' width='384' height='12'></canvas><span class='alv-bar-label'></span>"
             "<div class='alv-panels'></div></div>"
-            f"<script src='{html.escape(rel)}viewer.js'></script>" + teaching(data_dir))
+            f"<script src='{html.escape(rel)}viewer.js'></script>"
+            f"<script src='{html.escape(rel)}viewer_serve.js'></script>" + teaching(data_dir))
 
 
 def teaching(data_dir):
