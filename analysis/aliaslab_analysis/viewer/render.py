@@ -16,24 +16,12 @@ def tracing_flags(manifest):
     return shlex.split(manifest.get("tracing", ""))
 
 
-# True once `raytracer --filter gaussian` is the library's gaussian (sigma = r / 3, the sweep's; the course's
-# fixed sigma 0.5 then being `course-gaussian`): the one line to switch when that raytracer lands (issue 45 item 3).
-# While False, the course dialect is assumed and the sweep's sigma is passed explicitly (sigma_flags).
-RAYTRACER_GAUSSIAN_IS_LIBRARY = False
-
-
-def sigma_flags(c):
-    """The flags that make the raytracer's gaussian the sweep's (none once RAYTRACER_GAUSSIAN_IS_LIBRARY)."""
-    if c["filter"] != "gaussian" or RAYTRACER_GAUSSIAN_IS_LIBRARY:
-        return []
-    return ["--filter-param", f"sigma={float(c['radius']) / 3.0!r}"]
-
-
 def command(raytracer, scene_path, size, manifest, c, seed, out):
     cmd = [raytracer, "--input", scene_path, "--size", str(size[0]), str(size[1]), "--sampler", c["sampler"],
            "--spp", str(c["spp"]), "--filter", c["filter"], "--radius", f"{c['radius']:g}", "--seed", str(seed),
            "--threads", "1", "--output", out] + tracing_flags(manifest)
-    return cmd + sigma_flags(c)
+    # `--filter gaussian` is the library's gaussian (sigma = r / 3), the sweep's: no width rule is repeated here
+    return cmd
 
 
 def render_all(raytracer, jobs_list, jobs=2, quiet=False):
