@@ -40,6 +40,7 @@ from .viewer.exr import read_exrs
 
 GUARD = 8         # measure/registration.h kRegistrationGuard: pixels kept clear of the interpolation's border error
 SCALE_X, SCALE_Y = 2, 3  # pixels per image pixel and per frame in the PNG
+PAD, TEXT = 6, 12        # gap between panels; height of a line of label
 FIELDS = ["scene", "panel", "label", "why", "sampler", "spp", "filter", "radius", "seed", "row", "frames",
           "motion_dx", "motion_dy", "png"]
 
@@ -75,11 +76,11 @@ def choose(df, target):
         sd = sd[sd["reconstruction"].astype(str) == "weighted"]
         low = int(sd["spp"].min())
         grid = "uniform" if "uniform" in set(sd["sampler"]) else sorted(sd["sampler"])[0]
-        panels = [("target", f"the target ({filt} r={radius:g}, the reference's sampling)", None, None, filt, radius)]
+        panels = [(f"target: {filt} r={radius:g}", "the reference's samples", None, None, filt, radius)]
         for sampler in (grid, "jittered"):
             if ((sd["sampler"] == sampler) & (sd["spp"] == low) & (sd["filter_name"] == "box")
                     & (np.isclose(sd["radius"].astype(float), 0.5))).any():
-                panels.append((f"{sampler} {low} spp box r=0.5", "point sampling at the lowest spp",
+                panels.append((f"{sampler} {low} spp box r=0.5", "point sampling",
                                sampler, low, "box", 0.5))
         cells = [(int(spp), cell) for (s, spp), cell in sd.groupby(["sampler", "spp"]) if s == grid]
         pick = next(((spp, c) for spp, c in sorted(cells, key=lambda x: x[0])
@@ -93,9 +94,9 @@ def choose(df, target):
             key = (grid, spp, str(r["filter_name"]), float(r["radius"]))
             label = f"{grid} {spp} spp {key[2]} r={key[3]:g}"
             if any(p[2:] == key for p in panels):  # the same row twice: one panel, both reasons
-                panels = [p if p[2:] != key else (p[0], p[1] + f"; {why} at {spp} spp", *p[2:]) for p in panels]
+                panels = [p if p[2:] != key else (p[0], f"{p[1]}; {why}", *p[2:]) for p in panels]
             else:
-                panels.append((label, f"{why} at {grid} {spp} spp", *key))
+                panels.append((label, why, *key))
         out[str(scene)] = panels
     return out
 
@@ -114,28 +115,32 @@ def render_frames(raytracer, manifest, size, cfg, seed, frames, motion, out, reg
 
 
 def compose(slices, labels, keep):
-    """The PNG of one scene: per slice, its label, the slice (columns keep[0]:keep[1]) and below it its change."""
+    """The PNG of one scene: per slice, its label (lines of text), the slice (columns keep[0]:keep[1]) and below it
+    its change."""
     from PIL import Image, ImageDraw
     pictures = []
     for s in slices:
         part = s[:, keep[0]:keep[1]]
         pictures.append((display(part), error_map(part - part.mean(axis=0, keepdims=True))))
     f, w = pictures[0][0].shape[:2]
-    pw, ph, pad, text = w * SCALE_X, f * SCALE_Y, 6, 14
-    canvas = Image.new("RGB", (len(slices) * (pw + pad) + pad, 2 * text + 2 * ph + 3 * pad), "white")
+    pw, ph, pad = w * SCALE_X, f * SCALE_Y, PAD
+    top = TEXT * max(len(lines) for lines in labels)
+    canvas = Image.new("RGB", (len(slices) * (pw + pad) + pad, top + TEXT + 2 * ph + 3 * pad), "white")
     draw = ImageDraw.Draw(canvas)
-    for k, ((picture, change), label) in enumerate(zip(pictures, labels)):
+    for k, ((picture, change), lines) in enumerate(zip(pictures, labels)):
         x = pad + k * (pw + pad)
-        draw.text((x, 2), label, fill="black")
-        canvas.paste(Image.fromarray(picture).resize((pw, ph), Image.NEAREST), (x, text + pad))
-        draw.text((x, text + ph + pad + 2), "change (row - mean of rows)", fill="black")
-        canvas.paste(Image.fromarray(change).resize((pw, ph), Image.NEAREST), (x, 2 * text + ph + 2 * pad))
+        for i, line in enumerate(lines):
+            draw.text((x, 2 + i * TEXT), line, fill="black")
+        canvas.paste(Image.fromarray(picture).resize((pw, ph), Image.NEAREST), (x, top + pad))
+        draw.text((x, top + ph + pad + 2), "change: row - mean of rows", fill="black")
+        canvas.paste(Image.fromarray(change).resize((pw, ph), Image.NEAREST), (x, top + TEXT + ph + 2 * pad))
     return canvas
 
 
-def panel_origin(k, frames, width):
-    """(x, y) of the top-left pixel of panel k's slice in compose()'s PNG (for tests)."""
-    return 6 + k * (width * SCALE_X + 6), 14 + 6
+def panel_origin(k, width, lines):
+    """(x, y) of the top-left pixel of panel k's slice (width columns kept) in compose()'s PNG with `lines` lines
+    of label (for tests)."""
+    return PAD + k * (width * SCALE_X + PAD), TEXT * lines + PAD
 
 
 def write_slices(study, raytracer, out, frames, row=None, jobs=2):
@@ -170,7 +175,7 @@ def write_slices(study, raytracer, out, frames, row=None, jobs=2):
             slices = [slice_rows(read_exrs(p), y)[..., :3] for p in paths]
             m = margin(frames, *motion)
             png = os.path.join(out, f"xt-{figures.slug(scene)}.png")
-            compose(slices, [j[1] for j in jobs_list], (m, size[0] - m)).save(png + ".partial.png", optimize=True)
+            compose(slices, [(j[1], j[2]) for j in jobs_list], (m, size[0] - m)).save(png + ".partial.png", optimize=True)
             os.replace(png + ".partial.png", png)
             for k, label, why, cfg, seed in jobs_list:
                 records.append(dict(scene=scene, panel=k, label=label, why=why, sampler=cfg["sampler"],
