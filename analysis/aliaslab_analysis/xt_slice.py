@@ -39,7 +39,8 @@ from .viewer import render
 from .viewer.exr import read_exrs
 
 GUARD = 8         # measure/registration.h kRegistrationGuard: pixels kept clear of the interpolation's border error
-SCALE_X, SCALE_Y = 2, 3  # pixels per image pixel and per frame in the PNG
+SCALE_X, SCALE_Y = 2, 3  # pixels per image pixel and per frame in the PNG (at least)
+MIN_WIDTH, MIN_HEIGHT = 160, 48  # a slice drawn at least this large (a label's width; a few frames still visible)
 PAD, TEXT = 6, 12        # gap between panels; height of a line of label
 FIELDS = ["scene", "panel", "label", "why", "sampler", "spp", "filter", "radius", "seed", "row", "frames",
           "motion_dx", "motion_dy", "png"]
@@ -114,6 +115,17 @@ def render_frames(raytracer, manifest, size, cfg, seed, frames, motion, out, reg
     return paths
 
 
+def scales(width, frames):
+    """(pixels per image pixel, pixels per frame) of a slice of `width` columns and `frames` rows in the PNG."""
+    return max(SCALE_X, math.ceil(MIN_WIDTH / width)), max(SCALE_Y, math.ceil(MIN_HEIGHT / frames))
+
+
+def panel_origin(k, width, frames, lines):
+    """(x, y) of the top-left pixel of panel k's slice (width columns kept, frames rows) in compose()'s PNG with
+    `lines` lines of label."""
+    return PAD + k * (width * scales(width, frames)[0] + PAD), TEXT * lines + PAD
+
+
 def compose(slices, labels, keep):
     """The PNG of one scene: per slice, its label (lines of text), the slice (columns keep[0]:keep[1]) and below it
     its change."""
@@ -123,24 +135,19 @@ def compose(slices, labels, keep):
         part = s[:, keep[0]:keep[1]]
         pictures.append((display(part), error_map(part - part.mean(axis=0, keepdims=True))))
     f, w = pictures[0][0].shape[:2]
-    pw, ph, pad = w * SCALE_X, f * SCALE_Y, PAD
+    sx, sy = scales(w, f)
+    pw, ph, pad = w * sx, f * sy, PAD
     top = TEXT * max(len(lines) for lines in labels)
     canvas = Image.new("RGB", (len(slices) * (pw + pad) + pad, top + TEXT + 2 * ph + 3 * pad), "white")
     draw = ImageDraw.Draw(canvas)
     for k, ((picture, change), lines) in enumerate(zip(pictures, labels)):
-        x = pad + k * (pw + pad)
+        x, y = panel_origin(k, w, f, len(lines))
         for i, line in enumerate(lines):
             draw.text((x, 2 + i * TEXT), line, fill="black")
         canvas.paste(Image.fromarray(picture).resize((pw, ph), Image.NEAREST), (x, top + pad))
         draw.text((x, top + ph + pad + 2), "change: row - mean of rows", fill="black")
         canvas.paste(Image.fromarray(change).resize((pw, ph), Image.NEAREST), (x, top + TEXT + ph + 2 * pad))
     return canvas
-
-
-def panel_origin(k, width, lines):
-    """(x, y) of the top-left pixel of panel k's slice (width columns kept) in compose()'s PNG with `lines` lines
-    of label (for tests)."""
-    return PAD + k * (width * SCALE_X + PAD), TEXT * lines + PAD
 
 
 def write_slices(study, raytracer, out, frames, row=None, jobs=2):

@@ -89,10 +89,12 @@ class RegisteredSlices(unittest.TestCase):
         png = os.path.join(self.tmp.name, "xt.png")
         xt_slice.compose(slices, [("a", "why"), ("b", "why")], keep).save(png)
         img = np.asarray(Image.open(png).convert("RGB"))
-        x0, y0 = xt_slice.panel_origin(1, keep[1] - keep[0], 2)
+        x0, y0 = xt_slice.panel_origin(1, keep[1] - keep[0], FRAMES, 2)
+        sx, sy = xt_slice.scales(keep[1] - keep[0], FRAMES)
+        self.assertEqual((sx, sy), (2, 6))  # 108 columns x 2 >= 160 px; 8 frames x 6 >= 48 px
         for t in range(FRAMES):
-            y = y0 + t * xt_slice.SCALE_Y + 1
-            shown = img[y, x0:x0 + (keep[1] - keep[0]) * xt_slice.SCALE_X:xt_slice.SCALE_X]
+            y = y0 + t * sy + sy // 2
+            shown = img[y, x0:x0 + (keep[1] - keep[0]) * sx:sx]
             np.testing.assert_array_equal(shown, display(slices[1][t, keep[0]:keep[1]]))
 
 
