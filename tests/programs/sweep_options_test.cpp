@@ -43,9 +43,10 @@ std::string config(const std::string& name, const std::string& key, const std::s
   return p.string();
 }
 
-// The option under test, a value the sweep refuses, how TOML writes it, and a part of the expected message.
+// The option under test, a value the sweep refuses, how TOML writes it, a part of the expected message, and
+// options it needs beside it.
 struct BadValue {
-  std::string option, value, toml, expect;
+  std::string option, value, toml, expect, extra;
 };
 
 const std::vector<BadValue> kBad = {
@@ -71,6 +72,8 @@ const std::vector<BadValue> kBad = {
     {"out", "/dev/null/o", "\"/dev/null/o\"", "--out"},
     {"cache", "/dev/null/c", "\"/dev/null/c\"", "--cache"},
     {"csv", "/dev/null/x.csv", "\"/dev/null/x.csv\"", "--csv"},
+    {"size", "0 0", "[0, 0]", "--size"},
+    {"align-ref-spp", "0", "0", "--align-ref-spp", " --align-offsets 8"},
 };
 
 // A tiny valid study but for the option under test (left out here, given in one of the three forms).
@@ -89,7 +92,7 @@ std::string baseArgs(const std::string& without) {
 TEST(SweepOptionForms, EveryOptionIsReadAlikeInItsThreeForms) {
   for (const BadValue& b : kBad) {
     SCOPED_TRACE(b.option);
-    const std::string base = baseArgs(b.option);
+    const std::string base = baseArgs(b.option) + b.extra;
     const Result spaced = sweep(base + " --" + b.option + " " + b.value);
     const Result equals = sweep(base + " --" + b.option + "=" + b.value);
     const Result file = sweep(base + " --config " + config(b.option, b.option, b.toml));
