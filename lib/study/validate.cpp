@@ -110,6 +110,13 @@ StudyPlan validateStudy(const StudyConfig& c) {
   };
   once(c.samplers, "samplers"), once(c.spp, "spp"), once(c.filters, "filters"), once(c.radii, "radii");
   once(c.reconstruction, "reconstruction");
+  // Radii are the CSV's key in its text (%.9g): two radii written alike would be one row for two configurations.
+  for (size_t i = 0; i < c.radii.size(); ++i)
+    for (size_t j = i + 1; j < c.radii.size(); ++j)
+      if (formatNumber(c.radii[i], "%.9g") == formatNumber(c.radii[j], "%.9g"))
+        throw OptionError("radii", "lists " + formatNumber(c.radii[i], "%.17g") + " and " +
+                                       formatNumber(c.radii[j], "%.17g") + ", which the CSV writes alike (" +
+                                       formatNumber(c.radii[i], "%.9g") + ")");
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
