@@ -27,10 +27,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 N=${1:-$(nproc)}
 [[ $# -gt 0 ]] && shift
-if [[ ! $N =~ ^[0-9]+$ || $N -lt 1 ]]; then
+if [[ ! $N =~ ^[0-9]{1,6}$ ]] || ((10#$N < 1)); then
   echo "usage: $0 [N shards] [extra sweep options...]" >&2
   exit 2
 fi
+N=$((10#$N))  # decimal: a leading zero is not octal
 export SWEEP=${SWEEP:-build/bin/sweep}
 if [[ ! -x $SWEEP ]]; then
   echo "$0: $SWEEP not found: build first (cmake --build build --target sweep)" >&2

@@ -168,20 +168,26 @@ inline std::string checkConfigFile(const CLI::App& app, const std::string& path)
 /// otherwise the exit code: 0 after printing --help or --version, 2 after
 /// printing a usage error as "<program>: <message>" (CLI11's own codes are
 /// not used, so every front end exits 2 for bad options).
-inline int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
+/// The first problem (checkConfigFile) of a --config file that argv names, or "" (none named, or none found).
+inline std::string commandLineConfigProblem(const CLI::App& app, int argc, char** argv) {
   if (const CLI::Option* config = app.get_config_ptr())
-    for (int i = 1; i + 1 < argc; ++i) {
+    for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       std::string file;
       for (const std::string& name : config->get_lnames())
-        if (a == "--" + name) file = argv[i + 1];
+        if (a == "--" + name && i + 1 < argc) file = argv[i + 1];
         else if (a.rfind("--" + name + "=", 0) == 0) file = a.substr(name.size() + 3);
       if (file.empty()) continue;
-      if (const std::string problem = checkConfigFile(app, file); !problem.empty()) {
-        std::fprintf(stderr, "%s: --config: %s\n", program, problem.c_str());
-        return 2;
-      }
+      if (std::string problem = checkConfigFile(app, file); !problem.empty()) return problem;
     }
+  return {};
+}
+
+inline int parseCommandLine(CLI::App& app, int argc, char** argv, const char* program) {
+  if (const std::string problem = commandLineConfigProblem(app, argc, argv); !problem.empty()) {
+    std::fprintf(stderr, "%s: --config: %s\n", program, problem.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
     refuseNonFiniteNumbers(app);

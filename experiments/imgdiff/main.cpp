@@ -50,8 +50,7 @@ int main(int argc, char** argv) {
       if (!path.empty() && !isSupportedImageExtension(path))
         throw OptionError(opt, "'" + path + "': unsupported image extension (use .png, .tga or .exr)");
     // No output may be an input (nor the other output): writing it would destroy what is compared.
-    if (!output.empty()) refuseOutputOverInput("--output", output, {a, b});
-    if (!flipOutput.empty()) refuseOutputOverInput("--flip-output", flipOutput, {a, b, output});
+    refuseOutputsOverInputs({{"--output", output}, {"--flip-output", flipOutput}}, {a, b});
     // Fails before reading when the images cannot fit: per pixel, each image's decoded channels and its Image,
     // the difference images of --output, the FLIP map and FLIP's working planes (about 48 floats a pixel for
     // both images together, measure/flip.h): an upper estimate, not a measurement.

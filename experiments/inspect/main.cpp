@@ -19,6 +19,8 @@
 #include "common/front_end.h"
 #include "study/manifest_summary.h"
 #include "core/error.h"
+#include "core/files.h"
+#include "core/format.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
@@ -47,10 +49,19 @@ int main(int argc, char** argv) {
   app.add_option("FILE", file, "image file (EXR, PNG, ...)")->required();
   if (const int rc = parseCommandLine(app, argc, argv, "inspect"); rc >= 0) return rc;
   return runFrontEnd(kInspect, [&] {
+    requireRegularFile(file, "an image is read from a regular file");  // a FIFO would block the reader
     auto input = OIIO::ImageInput::open(file);
     if (!input) throw FileError(file, "cannot read the image: " + OIIO::geterror());
     const OIIO::ImageSpec spec = input->spec();
     const int w = spec.width, h = spec.height, nc = spec.nchannels;
+    // The header's size decides before anything is allocated (a damaged or hostile header can claim any size).
+    const double bytes = double(w) * h * nc * sizeof(float);
+    if (const MemoryLimit limit = memoryLimit(); limit.bytes > 0 && bytes > limit.bytes)
+      throw FileError(file, "its header claims " + std::to_string(w) + " x " + std::to_string(h) + " pixels of " +
+                                std::to_string(nc) + " channels: reading them needs " +
+                                formatNumber(bytes / 1e9, "%.3g") + " GB, more than the " +
+                                formatNumber(limit.bytes / 1e9, "%.3g") + " GB this process may use (" + limit.source +
+                                "); nothing read");
     std::vector<float> px(static_cast<size_t>(w) * h * nc);
     if (!input->read_image(0, 0, 0, nc, OIIO::TypeDesc::FLOAT, px.data()))
       throw FileError(file, "cannot read the pixels: " + input->geterror());

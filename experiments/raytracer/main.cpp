@@ -79,12 +79,7 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
   // Scene, accelerator, tracer.
   Scene scene = parseScene(o.input);  // (its camera is swapped per frame with -frames)
   // No output may overwrite an input: the scene is checked with the options, its OBJ files here.
-  const std::pair<const char*, std::string> outputs[] = {
-      {"-output", o.output}, {"-normals", o.normals}, {"-depth", o.depth.empty() ? "" : o.depth[2]},
-      {"-render_samples", o.renderSamples.empty() ? "" : o.renderSamples[0]},
-      {"-render_filter", o.renderFilter.empty() ? "" : o.renderFilter[0]}};
-  for (const auto& [option, path] : outputs)
-    if (!path.empty()) refuseOutputOverInput(option, path, scene.dependencies);
+  refuseOutputsOverInputs(writtenFiles(o), scene.dependencies);
   const auto t1 = Clock::now();
   std::unique_ptr<Aggregate> aggregate =
       o.bruteForce ? makeBruteForce(*scene.root)

@@ -162,6 +162,19 @@ std::string framePath(const std::string& output, int frame) {
   return (p.parent_path() / (p.stem().string() + number + p.extension().string())).string();
 }
 
+std::vector<OutputFile> writtenFiles(const RaytracerOptions& o) {
+  std::vector<OutputFile> files;
+  if (o.frames > 0)
+    for (int t = 0; t < o.frames; ++t) files.push_back({"-output", framePath(o.output, t)});  // -output names the frames
+  else if (!o.output.empty())
+    files.push_back({"-output", o.output});
+  if (!o.normals.empty()) files.push_back({"-normals", o.normals});
+  if (!o.depth.empty()) files.push_back({"-depth", o.depth[2]});
+  if (!o.renderSamples.empty()) files.push_back({"-render_samples", o.renderSamples[0]});
+  if (!o.renderFilter.empty()) files.push_back({"-render_filter", o.renderFilter[0]});
+  return files;
+}
+
 void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   namespace fs = std::filesystem;
   // Image size and tracing parameters.
@@ -224,24 +237,8 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
       throw OptionError(v == &o.renderSamples ? "-render_samples" : "-render_filter",
                         "the zoomed image (size x zoom) must be at most 16384 on each side, like -size; found " +
                             std::to_string(w) + " x " + std::to_string(h) + " at zoom " + (*v)[1]);
-  // Every image its own file (one would silently overwrite another).
-  std::vector<std::pair<std::string, std::string>> files;  // (option, path)
-  if (!o.output.empty()) files.emplace_back("-output", o.output);
-  if (!o.normals.empty()) files.emplace_back("-normals", o.normals);
-  if (!o.depth.empty()) files.emplace_back("-depth", o.depth[2]);
-  if (!o.renderSamples.empty()) files.emplace_back("-render_samples", o.renderSamples[0]);
-  if (!o.renderFilter.empty()) files.emplace_back("-render_filter", o.renderFilter[0]);
-  auto same = [](const std::string& x, const std::string& y) {
-    std::error_code ex, ey;
-    const fs::path cx = fs::weakly_canonical(x, ex), cy = fs::weakly_canonical(y, ey);
-    return ex || ey ? fs::absolute(x).lexically_normal() == fs::absolute(y).lexically_normal() : cx == cy;
-  };
-  for (size_t a = 0; a < files.size(); ++a)
-    for (size_t b = a + 1; b < files.size(); ++b)
-      if (same(files[a].second, files[b].second))
-        throw OptionError(files[b].first, "'" + files[b].second + "' is also the " + files[a].first +
-                                              " file; give each image its own name");
-  for (const auto& [option, path] : files) refuseOutputOverInput(option, path, {o.input});  // any output = an input
+  // Every file written its own (one would silently overwrite another), and none the scene (its OBJ files: main).
+  refuseOutputsOverInputs(writtenFiles(o), {o.input});
   if (o.output.empty() && o.normals.empty() && o.depth.empty() && o.renderSamples.empty() && o.renderFilter.empty())
     throw OptionError("-output", "nothing to write: give -output, -depth, -normals, -render_samples or -render_filter");
 

@@ -12,6 +12,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/files.h"
+
 namespace aliaslab {
 
 struct RaytracerOptions {
@@ -63,6 +65,10 @@ std::string classicMessage(std::string message);
 
 /// The file of frame t of -output: "<stem>_<t, 4 digits>.<ext>", e.g. out.png -> out_0003.png.
 std::string framePath(const std::string& output, int frame);
+
+/// Every file the options make the raytracer write, with its flag: -output (with -frames instead each frame's
+/// framePath), -normals, -depth, -render_samples and -render_filter (checked by refuseOutputsOverInputs).
+std::vector<OutputFile> writtenFiles(const RaytracerOptions& o);
 
 /// Checks values, files and folders before any work; throws OptionError
 /// naming the option, or FileError for an unreadable input.

@@ -80,13 +80,15 @@ int main(int argc, char** argv) {
                   scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) + " with " +
                       std::to_string(specs.size()) + " references");
     // No output may be an input: the images and manifest must not replace the scene file.
-    refuseOutputOverInput("--out", (fs::path(out) / "manifest.json").string(), {scenePath});
+    std::vector<OutputFile> outputs{{"--out", (fs::path(out) / "manifest.json").string()}};
     for (const FilterSpec& s : specs) {
       char radius[32];
       std::snprintf(radius, sizeof radius, "%g", s.second);
-      refuseOutputOverInput("--out", (fs::path(out) / (scene->stem + "-" + s.first + "-r" + radius + ".exr")).string(),
-                            {scenePath});
+      outputs.push_back({"--out", (fs::path(out) / (scene->stem + "-" + s.first + "-r" + radius + ".exr")).string()});
     }
+    std::vector<std::string> inputs = scene->scene.dependencies;  // the scene file and its OBJ files
+    inputs.push_back(scenePath);
+    refuseOutputsOverInputs(outputs, inputs);
     std::vector<std::pair<std::string, std::string>> folders{{out, "out"}};
     if (!cache.empty()) folders.emplace_back(cache, "cache");
     requireOutputFolders(folders);

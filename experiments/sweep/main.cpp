@@ -3,7 +3,7 @@
 //
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
-//   sweep --preset default                     (the quick study: every bundled scene at 48 px, results/study)
+//   sweep --preset default                     (the quick study: every bundled scene at most 48 px, results/study)
 //   sweep --preset presented                   (the presented study: every bundled scene at 256 px,
 //                                               results/presented; sharded: experiments/run_presented_study.sh)
 //   sweep ... --radii 0.5,1,2,natural          (every filter also at its own natural radius)
@@ -22,20 +22,22 @@
 #include "common/cli.h"
 #include "common/front_end.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "study/config.h"
 #include "study/contract.h"
 #include "study/merge.h"
 #include "study/motion_frame.h"
 #include "study/presets.h"
 #include "study/sweep.h"
+#include "options.h"
 
 using namespace aliaslab;
 
 namespace {
 // The samplers' bounds on the finished CSV (study/contract.h): a summary line, and every violation as a warning.
-void printContract(const std::vector<ContractCheck>& checks) {
+void printContract(const std::vector<ContractCheck>& checks, std::FILE* summary = stdout) {
   if (checks.empty()) return;
-  std::printf("%s\n", contractSummary(checks).c_str());
+  std::fprintf(summary, "%s\n", contractSummary(checks).c_str());
   for (const std::string& v : contractViolations(checks))
     std::fprintf(stderr, "warning: sampler bound violated (the pattern misbehaves in this render): %s\n", v.c_str());
 }
@@ -56,99 +58,38 @@ const FrontEnd kSweep{"sweep",
 }  // namespace
 
 int main(int argc, char** argv) {
-  StudyConfig c;  // a preset first, so that explicit options override it
-  for (int i = 1; i + 1 < argc; ++i)
-    if (std::string(argv[i]) == "--preset") applyStudyPreset(argv[i + 1], c);
-
+  // The preset first, read by the same parser as every option (--preset X, --preset=X, preset = X in --config),
+  // so that the options given explicitly override it.
+  SweepArgs a;
+  if (const std::string preset = commandLinePreset(argc, argv); !preset.empty()) applyStudyPreset(preset, a.c);
   CLI::App app{"sweep: measure aliasing, noise and time over samplers x filters x radii (aliaslab)"};
   setupCommandLine(app, "sweep");
-  std::string preset, shard, motion;
-  std::vector<int> size;
-  std::vector<std::string> merge;
-  app.set_config("--config", "", "read options from a TOML/INI file (keys = long option names)");
-  app.add_option("--preset", preset,
-                 "'default': the quick study, every bundled scene at 48 px (results/study); 'presented': the study "
-                 "results/index.html presents, every bundled scene at 256 px, every sampler and filter at radii "
-                 "0.5,1,2,natural (results/presented; over an hour on 2 cores: experiments/run_presented_study.sh shards "
-                 "it); both with spp 4,16,64, 8 seeds, references at 4096 spp, the fixed grid at 8 camera offsets "
-                 "(their references at 256 spp) and three "
-                 "targets (docs/science.md \"The bundled studies\"); explicit options still override")
-      ->check(CLI::IsMember(studyPresetNames()));
-  app.add_option("--scenes", c.scenes, "scene files or folders of *.txt")->delimiter(',');
-  app.add_option("--samplers", c.samplers, "sampler names")->delimiter(',')->capture_default_str();
-  app.add_option("--spp", c.spp, "samples per pixel list")->delimiter(',')->capture_default_str();
-  app.add_option("--filters", c.filters, "filter names")->delimiter(',')->capture_default_str();
-  std::vector<std::string> radii = studyRadiusTokens(c);
-  app.add_option("--radii", radii,
-                 "filter radii in pixels, and 'natural': every filter also at its own natural radius (box 0.5, "
-                 "tent 1, gaussian 1.5, mitchell, catmullrom and blackmanharris 2, lanczos and hann 3), each "
-                 "(filter, radius) once; box also gets its classic 0.5")
-      ->delimiter(',')->capture_default_str();
-  app.add_option("--reconstruction", c.reconstruction, "weighted|classic|importance|supersample")
-      ->delimiter(',')->capture_default_str();
-  app.add_option("--prefilter", c.prefilter,
-                 "none|footprint: texture pre-filtering over each hit's pixel footprint, crossed with the rest "
-                 "(references stay un-prefiltered; docs/prefiltering.md)")
-      ->delimiter(',')->capture_default_str();
-  app.add_option("--seeds", c.seeds, "K independent seeds per configuration (>= 2)")->capture_default_str();
-  app.add_option("--ref-spp", c.refSpp, "reference samples per pixel")->capture_default_str();
-  app.add_option("--ref-sampler", c.refSampler, "reference sampler")->capture_default_str();
-  app.add_option("--size", size, "W H: image size for every scene (default: each scene's # render: line)")
-      ->expected(2);
-  app.add_option("--max-size", c.maxSize, "scale scenes down so the larger side is at most this (0 = off)")
-      ->capture_default_str();
-  app.add_option("--long-side", c.longSide,
-                 "scale scenes up or down so the larger side is exactly this (0 = off; overrides --max-size)")
-      ->capture_default_str();
-  app.add_option("--target", c.targets,
-                 "the targets T of mse_target, blur, cross, blurred_mse and lowfreq_error, a comma list (first = "
-                 "primary; one CSV row per configuration and target): 'area' (the pixel-area reference, box r=0.5, "
-                 "written box:0.5) or filter:radius, e.g. gaussian:1.5 or lanczos:3; each is another reference "
-                 "rendered and cached with the others (definitions: docs/science.md)")
-      ->delimiter(',')->capture_default_str();
-  app.add_option("--frames", c.frames,
-                 "F frames of a moving camera per configuration and seed (1: a still study; F > 1 adds the CSV's "
-                 "motion columns: shimmer and flicker, docs/science.md \"Motion\")")
-      ->capture_default_str();
-  app.add_option("--motion", motion, "dx,dy: the camera's motion in pixels per frame (with --frames; default 0.25,0)");
-  app.add_option("--align-offsets", c.alignOffsets,
-                 "K: the fixed grid (sampler uniform) also measured over K seeded sub-pixel camera offsets, each "
-                 "against the targets rendered at that offset (CSV columns align_*; 0 = off; docs/science.md \"The "
-                 "grid and alignment\")")
-      ->capture_default_str();
-  app.add_option("--align-ref-spp", c.alignRefSpp, "samples per pixel of the references at each alignment offset")
-      ->capture_default_str();
-  app.add_option("--out", c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
-  app.add_option("--csv", c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
-  app.add_option("--cache", c.cache, "reference cache folder")->capture_default_str();
-  app.add_option("--threads", c.threads, "worker threads (0 = all cores)")->capture_default_str();
-  bool imagesOn = false, imagesOff = false, quiet = false;
-  app.add_flag("--images", imagesOn, "write images (default: when the study has at most 200 configurations)");
-  app.add_flag("--no-images", imagesOff, "write no images");
-  app.add_option("--shard", shard, "i/N, i = 0..N-1: run the groups g with g mod N == i");
-  app.add_flag("--refs-only", c.refsOnly, "render and cache the references, then stop");
-  app.add_flag("--quiet", quiet, "no progress output");
-  app.add_option("--merge", merge, "merge the shard CSVs IN1 IN2 ... into OUT in canonical order, then stop")
-      ->expected(2, -1)->option_text("OUT IN1 [IN2 ...]");
+  addSweepOptions(app, a);
   if (const int rc = parseCommandLine(app, argc, argv, "sweep"); rc >= 0) return rc;
 
+  StudyConfig& c = a.c;
   return runFrontEnd(kSweep, [&] {
-    if (!merge.empty()) {
-      mergeStudy(merge[0], std::vector<std::string>(merge.begin() + 1, merge.end()), "sweep --merge");
-      std::printf("merged %zu files into %s\n", merge.size() - 1, merge[0].c_str());
-      printContract(checkContract(contractRows(merge[0])));
+    if (!a.merge.empty()) {
+      mergeStudy(a.merge[0], std::vector<std::string>(a.merge.begin() + 1, a.merge.end()), "sweep --merge");
+      // Messages on stderr: the output may be stdout or a pipe, which must carry the CSV alone.
+      std::fprintf(stderr, "merged %zu files into %s\n", a.merge.size() - 1, a.merge[0].c_str());
+      if (outputTarget(a.merge[0]).special)  // a stream cannot be read back (and has no spectra beside it)
+        std::fprintf(stderr, "note: %s is not a regular file: the CSV only (no spectra, contact sheets or sampler "
+                     "bound check)\n", a.merge[0].c_str());
+      else
+        printContract(checkContract(contractRows(a.merge[0])), stderr);
       return 0;
     }
-    if (imagesOn && imagesOff) throw OptionError("--images", "give --images or --no-images, not both");
-    if (imagesOn || imagesOff) c.images = imagesOn;
-    c.progress = !quiet;
-    if (!size.empty() && (size[0] <= 0 || size[1] <= 0))  // (0 0 would silently mean "each scene's own size")
-      throw OptionError("size", "expected two positive numbers W H, found " + std::to_string(size[0]) + " " +
-                                    std::to_string(size[1]) + " (leave --size out for each scene's own size)");
-    if (!size.empty()) c.width = size[0], c.height = size[1];
-    if (!shard.empty()) parseShard(shard, c.shardIndex, c.shardCount);
-    if (!motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(motion), c.motionGiven = true;
-    if (app.count("--radii")) setStudyRadii(c, radii);
+    if (a.imagesOn && a.imagesOff) throw OptionError("--images", "give --images or --no-images, not both");
+    if (a.imagesOn || a.imagesOff) c.images = a.imagesOn;
+    c.progress = !a.quiet;
+    if (!a.size.empty() && (a.size[0] <= 0 || a.size[1] <= 0))  // (0 0 would silently mean "each scene's own size")
+      throw OptionError("size", "expected two positive numbers W H, found " + std::to_string(a.size[0]) + " " +
+                                    std::to_string(a.size[1]) + " (leave --size out for each scene's own size)");
+    if (!a.size.empty()) c.width = a.size[0], c.height = a.size[1];
+    if (!a.shard.empty()) parseShard(a.shard, c.shardIndex, c.shardCount);
+    if (!a.motion.empty()) std::tie(c.motionDx, c.motionDy) = parseMotion(a.motion), c.motionGiven = true;
+    if (app.count("--radii")) setStudyRadii(c, a.radii);
     const SweepSummary s = runSweep(c);
     if (!c.refsOnly)
       std::printf("%zu rows written, %zu resumed, %zu sample sets traced (%llu primary rays) in %.1f s -> %s\n",

@@ -14,6 +14,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 
 #include "core/error.h"
@@ -153,12 +154,25 @@ bool sameFile(const std::string& a, const std::string& b) {
   return fs::absolute(a, ea).lexically_normal() == fs::absolute(b, eb).lexically_normal();
 }
 
-void refuseOutputOverInput(const std::string& key, const std::string& output,
-                           const std::vector<std::string>& inputs) {
-  for (const std::string& in : inputs)
-    if (!in.empty() && sameFile(output, in))
-      throw OptionError(key, "'" + output + "' is also an input ('" + in +
-                                    "'); writing it would destroy the input: give the output another name");
+void refuseOutputsOverInputs(const std::vector<OutputFile>& outputs, const std::vector<std::string>& inputs) {
+  namespace fs = std::filesystem;
+  std::map<std::string, size_t> written;  // an output's file (links and dots resolved) -> its first index
+  for (size_t k = 0; k < outputs.size(); ++k) {
+    const OutputFile& o = outputs[k];
+    if (o.path.empty()) continue;
+    for (const std::string& in : inputs)
+      if (!in.empty() && sameFile(o.path, in))
+        throw OptionError(o.key, "'" + o.path + "' is also an input ('" + in +
+                                     "'); writing it would destroy the input: give the output another name");
+    std::error_code ec;
+    fs::path file = fs::weakly_canonical(o.path, ec);
+    if (ec) file = fs::absolute(o.path, ec).lexically_normal();
+    const auto [it, fresh] = written.emplace(file.string(), k);
+    if (!fresh)
+      throw OptionError(o.key, "'" + o.path + "' is also written as " + outputs[it->second].key + " ('" +
+                                   outputs[it->second].path + "'); one would replace the other: give each output "
+                                   "its own name");
+  }
 }
 
 size_t removeStaleTemporaries(const std::string& dir) {

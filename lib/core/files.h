@@ -31,9 +31,18 @@ OutputTarget outputTarget(const std::string& path);
 /// True when a and b name the same file (same inode when both exist, else the same normalised absolute path).
 bool sameFile(const std::string& a, const std::string& b);
 
-/// Throws OptionError(key) when `output` is any of `inputs` (writing it would destroy an input).
-void refuseOutputOverInput(const std::string& key, const std::string& output,
-                           const std::vector<std::string>& inputs);
+/// A file a program writes, with the key of the option that names it (the front end maps keys to flags).
+struct OutputFile {
+  std::string key;
+  std::string path;
+};
+
+/// The one rule for outputs, in every program: called with every file the program will write (images, frame
+/// names, CSVs, spectra, manifests, lock files) and every file it reads, before anything is written. Throws
+/// OptionError(the output's key) when an output is an input (writing it would destroy the input: "'<path>' is
+/// also an input ('<input>')") or is another output too (one would silently replace the other: "'<path>' is also
+/// written as <other key>"). Empty paths are skipped.
+void refuseOutputsOverInputs(const std::vector<OutputFile>& outputs, const std::vector<std::string>& inputs);
 
 /// Removes the temporaries ("*.partial.<pid>.*", see temporaryPathFor) that a killed run left in `dir` and its
 /// sub-folders: those whose process <pid> is no longer running. Returns how many were removed.

@@ -3,10 +3,16 @@
 #include "scene/parser_impl.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/format.h"
 
 namespace aliaslab::detail {
+
+namespace {
+// The largest |frequency| of a Marble, Wood or Pattern (see the pattern fields below).
+constexpr float kMaxPatternFrequency = 1e6f;
+}  // namespace
 
 void SceneParser::parseMaterials() {
   t_.expect("{", "after 'Materials'");
@@ -104,8 +110,16 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
   materialDepth_.resize(static_cast<size_t>(index) + 1, 1), materialDepth_[index] = depth;
   materialCost_.resize(static_cast<size_t>(index) + 1, 1), materialCost_[index] = cost;
 
-  // The pattern's own fields.
+  // The pattern's own fields. A frequency multiplies texture coordinates into a phase: beyond 1e6 a float phase
+  // keeps no digit of its fraction (and near 3e38 it overflows to infinity, every pixel NaN).
   const FieldSpec octaves{"octaves", FieldKind::Integer, 0, 32};
+  auto frequency = [](const FieldBlock& f) {
+    const float v = f.number("frequency");
+    if (!(std::abs(v) <= kMaxPatternFrequency))
+      f.fail("frequency", "must be at most " + formatNumber(kMaxPatternFrequency) + " in magnitude (a float phase "
+                          "beyond it keeps no digit of its fraction), found " + formatNumber(v));
+    return v;
+  };
   if (kind == "Checkerboard") {
     FieldBlock f(t_, kind, {});
     return makeCheckerboard(m, blend[0], blend[1]);
@@ -119,7 +133,7 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
     FieldBlock f(t_, kind, {octaves, {"frequency"}, {"amplitude"}});
     f.require({"octaves", "frequency", "amplitude"});
     const int o = f.integer("octaves");
-    const float fr = f.number("frequency"), a = f.number("amplitude");
+    const float fr = frequency(f), a = f.number("amplitude");
     return kind == "Marble" ? makeMarble(m, blend[0], blend[1], o, fr, a) : makeWood(m, blend[0], blend[1], o, fr, a);
   }
   // Pattern (aliaslab extension).
@@ -134,7 +148,7 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
   else if (type == "grating") pk = PatternKind::Grating;
   else f.fail("type", "must be zoneplate, sinc, siemens, stripes or grating, found '" + type + "'");
   if (pk != PatternKind::Grating && f.has("angle")) f.fail("angle", "is a key of the grating only");
-  return makePattern(m, blend[0], blend[1], pk, f.number("frequency"), f.number("angle", 0.f));
+  return makePattern(m, blend[0], blend[1], pk, frequency(f), f.number("angle", 0.f));
 }
 
 }  // namespace aliaslab::detail

@@ -185,9 +185,9 @@ std::vector<Target> parseTargets(const std::vector<std::string>& texts) {
   for (const std::string& t : texts) {
     Target parsed = parseTarget(t);
     for (const Target& seen : out)
-      if (seen.spec == parsed.spec)
-        throw OptionError("target",
-                          "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label + "')");
+      if (seen.spec == parsed.spec || seen.label == parsed.label)  // the label is the CSV's key: one row each
+        throw OptionError("target", "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label +
+                                        "'" + (seen.spec == parsed.spec ? ")" : ": the CSV labels both alike)"));
     out.push_back(std::move(parsed));
   }
   return out;

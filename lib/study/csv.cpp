@@ -231,6 +231,7 @@ CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
   fd_ = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
   if (fd_ < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());
   if (!exists) {
+    created_ = true;
     const std::string h = csvHeader(motion) + '\n';
     if (const std::string why = writeFully(fd_, h); !why.empty()) throw FileError(path, "write failed: " + why);
   }
@@ -247,7 +248,14 @@ void CsvAppender::append(const std::vector<CsvRow>& rows) {
   for (const CsvRow& row : rows) lines += formatCsvRow(row) + '\n';
   if (const std::string why = writeFully(fd_, lines); !why.empty()) throw FileError(path_, "write failed: " + why);
   ::fdatasync(fd_);
+  wrote_ = wrote_ || !rows.empty();
   for (const CsvRow& row : rows) keys_.insert(csvKey(row));
+}
+
+bool CsvAppender::discardIfUnused() {
+  if (fd_ >= 0) ::close(fd_), fd_ = -1;
+  std::error_code ec;
+  return created_ && !wrote_ && fs::remove(path_, ec);
 }
 
 }  // namespace aliaslab

@@ -171,10 +171,15 @@ class CsvAppender {
   void append(const CsvRow& row);
   /// Writes several rows with one write() and one fsync (a torn tail is cut on resume). Throws FileError.
   void append(const std::vector<CsvRow>& rows);
+  /// After a refusal: removes the file when this appender created it and no row was ever written to it (a
+  /// header-only CSV would look like a study); returns whether it did. The appender is closed either way.
+  bool discardIfUnused();
 
  private:
   std::string path_;
   int fd_ = -1;
+  bool created_ = false;  ///< the file was created (or was empty) here
+  bool wrote_ = false;    ///< a row was appended
   std::set<std::string> keys_;
   std::vector<std::string> lines_;
 };

@@ -15,6 +15,7 @@
 #include "study/csv.h"
 #include "study/lock.h"
 #include "study/spectrum_files.h"
+#include "study/study_identity.h"
 
 namespace aliaslab {
 
@@ -117,7 +118,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
     std::string values;
   };
   std::map<std::string, Origin> seen;  // key -> where it came from first
-  for (const std::string& in : inputs) refuseOutputOverInput("merge", out, {in});
+  refuseOutputsOverInputs({{"merge", out}, {"merge", CsvLock::lockPath(out)}}, inputs);
   // A shard with no rows is legitimate only when the study has fewer groups than shards: shard i holds the groups
   // g with g mod N == i, so then every non-empty shard holds exactly one (scene, sampler, spp) group and the
   // empty ones are the highest-numbered. Anything else means rows were lost.
@@ -126,6 +127,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
   int highestWithRows = -1;
   bool severalGroups = false;
   std::optional<bool> motion;  // every shard the same kind: still, or with frames
+  std::optional<std::pair<std::string, StudyIdentity>> first;  // the first shard with rows, and its study
   for (const std::string& in : inputs) {
     std::smatch m;
     const std::string file = fs::path(in).filename().string();
@@ -139,6 +141,13 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
       empty.emplace_back(std::stoi(m[1].str()), in);
       continue;
     }
+    // One study: the values every row of a study shares, the same in every shard (as a resume checks them).
+    const StudyIdentity id = studyIdentity(lines);
+    if (!first) first = std::make_pair(in, id);
+    if (const std::string diff = studyDifference(first->second, first->first, id, in); !diff.empty())
+      throw OptionError("merge", (in == first->first ? in : in + " and " + first->first) +
+                                     " hold different studies (" + diff +
+                                     "): merge the shards of one study only (made with the same options)");
     std::set<std::string> groups;
     for (const std::string& l : lines) {
       const auto f = splitCsvLine(l);
@@ -179,8 +188,12 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
 
 void mergeStudy(const std::string& out, const std::vector<std::string>& inputs, const std::string& command) {
   checkShardSet(inputs);
-  const CsvLock lock(out, command);
+  // A device or FIFO (/dev/stdout, a pipe) receives the CSV only: no lock, spectra or contact sheets beside it.
+  const bool stream = outputTarget(out).special;
+  std::optional<CsvLock> lock;
+  if (!stream) lock.emplace(out, command);
   mergeCsvFiles(out, inputs, [&] { checkShardSpectra(inputs); });  // every shard whole before anything is written
+  if (stream) return;
   mergeSpectrumFiles(out, inputs);  // the shards' spectra (spectra/<scene>.<shard>.csv) into the merged CSV's
   // Contact sheets of the whole study when the shards wrote images beside it.
   const fs::path images = fs::path(out).parent_path() / "images";

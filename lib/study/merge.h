@@ -5,7 +5,11 @@
 // files (checkShardSet: every i once, one N), holds the output CSV's lock,
 // merges the rows in canonical order (mergeCsvFiles), the shards'
 // spectra (study/spectrum_files.h mergeSpectrumFiles) and, when the shards
-// wrote images beside the output, draws the study's contact sheets.
+// wrote images beside the output, draws the study's contact sheets. The
+// shards must hold one study: the values all its rows share (seeds, reference
+// spp, frames and motion, alignment offsets, targets, each scene's size;
+// study/study_identity.h) are the same in every shard, as a resume demands.
+// An output that is a device or FIFO (/dev/stdout) receives the CSV only.
 // Errors: OptionError keyed "merge" for the set of inputs, FileError and
 // ParseError for the files themselves.
 #pragma once
@@ -27,7 +31,8 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows 
 
 /// Merges shard CSVs into `out` in canonical order (rows with the same key and the same results are kept
 /// once). Every input is read with readShardCsv; two rows with the same key but different results (timing and
-/// threads aside) are an error naming both files and lines; `out` equal to an input is refused. A header-only
+/// threads aside) are an error naming both files and lines, and so are shards of different studies
+/// (OptionError "merge" naming both files and the value that differs); `out` equal to an input is refused. A header-only
 /// shard (study.shard-i-of-N.csv) is accepted only when the study has fewer groups than shards (every shard
 /// with rows holds one group and no higher-numbered shard has rows).
 /// `beforeWrite`, when given, runs after every input is checked and before `out` is written (mergeStudy checks

@@ -63,6 +63,29 @@ void applyPresentedPreset(StudyConfig& c) {
 
 std::vector<std::string> studyPresetNames() { return {"default", "presented"}; }
 
+std::string describeStudyPreset(const std::string& name) {
+  StudyConfig c;
+  if (!applyStudyPreset(name, c)) return {};
+  auto list = [](const std::vector<std::string>& values) {
+    std::string s;
+    for (const std::string& v : values) s += (s.empty() ? "" : ",") + v;
+    return s;
+  };
+  std::vector<std::string> spp;
+  for (int n : c.spp) spp.push_back(std::to_string(n));
+  const bool allSamplers = c.samplers == samplerNames(), allFilters = c.filters == filterNames();
+  const std::string size = c.longSide > 0 ? "at " + std::to_string(c.longSide) + " px on the larger side"
+                                          : "scaled to at most " + std::to_string(c.maxSize) + " px on the larger side";
+  return "every bundled scene " + size + ", " +
+         (allSamplers ? "every sampler (" + std::to_string(c.samplers.size()) + ")" : "the samplers " + list(c.samplers)) +
+         ", " + (allFilters ? "every filter (" + std::to_string(c.filters.size()) + ")" : "the filters " + list(c.filters)) +
+         " at radii " + list(studyRadiusTokens(c)) + ", spp " + list(spp) + ", " + std::to_string(c.seeds) +
+         " seeds, references at " + std::to_string(c.refSpp) + " spp, the fixed grid at " +
+         std::to_string(c.alignOffsets) + " camera offsets (references at " + std::to_string(c.alignRefSpp) +
+         " spp), the targets " + list(c.targets) + ", " + (c.images.value_or(false) ? "with" : "no") +
+         " per-configuration images, into " + c.out;
+}
+
 bool applyStudyPreset(const std::string& name, StudyConfig& config) {
   if (name == "default") applyDefaultPreset(config);
   else if (name == "presented") applyPresentedPreset(config);

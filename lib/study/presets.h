@@ -29,6 +29,10 @@ namespace aliaslab {
 /// The preset names, in the order of --help ("default", "presented").
 std::vector<std::string> studyPresetNames();
 
+/// What the preset `name` studies, in words computed from the preset itself (scenes and size, samplers,
+/// filters, radii, spp, seeds, references, alignment, targets, images, output folder); "" for an unknown name.
+std::string describeStudyPreset(const std::string& name);
+
 /// Fills `config` with the preset `name`; returns false (config unchanged) for an unknown name.
 bool applyStudyPreset(const std::string& name, StudyConfig& config);
 

@@ -254,10 +254,19 @@ SweepSummary runSweep(const StudyConfig& config) {
   SweepSummary sum;
   const std::vector<SampleSetGroup> groups = planShard(config, plan, sum);
   SweepRun run(config, plan, sum, groups.size());
-  for (size_t gi = 0; gi < groups.size();) {
-    const auto scene = sceneGroups(groups, gi);  // per scene: its references, then each group run and written
-    runScene(run, scene);
-    gi += scene.size();
+  try {
+    for (size_t gi = 0; gi < groups.size();) {
+      const auto scene = sceneGroups(groups, gi);  // per scene: its references, then each group run and written
+      runScene(run, scene);
+      gi += scene.size();
+    }
+  } catch (...) {  // a refusal after the CSV was opened (e.g. a scene rendering to NaN) leaves no header-only CSV
+    try {
+      run.writer.wait();
+    } catch (...) {  // the first error is the one reported
+    }
+    if (run.out) run.out->discardIfUnused();
+    throw;
   }
   finishSweep(run);
   sum.seconds = clock.seconds();

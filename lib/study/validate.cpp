@@ -15,6 +15,7 @@
 #include "sampling/sampler.h"
 #include "study/alignment.h"
 #include "study/csv.h"
+#include "study/lock.h"
 #include "study/spectrum_files.h"
 #include "study/study_scene.h"
 #include "study/sweep_memory.h"
@@ -109,6 +110,13 @@ StudyPlan validateStudy(const StudyConfig& c) {
   };
   once(c.samplers, "samplers"), once(c.spp, "spp"), once(c.filters, "filters"), once(c.radii, "radii");
   once(c.reconstruction, "reconstruction");
+  // Radii are the CSV's key in its text (%.9g): two radii written alike would be one row for two configurations.
+  for (size_t i = 0; i < c.radii.size(); ++i)
+    for (size_t j = i + 1; j < c.radii.size(); ++j)
+      if (formatNumber(c.radii[i], "%.9g") == formatNumber(c.radii[j], "%.9g"))
+        throw OptionError("radii", "lists " + formatNumber(c.radii[i], "%.17g") + " and " +
+                                       formatNumber(c.radii[j], "%.17g") + ", which the CSV writes alike (" +
+                                       formatNumber(c.radii[i], "%.9g") + ")");
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
@@ -138,14 +146,19 @@ StudyPlan validateStudy(const StudyConfig& c) {
   const double references =
       double(studyFilters(c).size() + c.targets.size() + 1) * (6 * sizeof(float) + 4 * sizeof(double));
   const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
-  for (const std::string& path : expandScenePaths(c.scenes)) {
+  // No file the run writes may be a scene: the CSV, its lock, and per scene its spectra and reference manifest.
+  const std::vector<std::string> scenePaths = expandScenePaths(c.scenes);
+  std::vector<OutputFile> outputs;
+  if (!c.refsOnly) outputs = {{"csv", csvPath(c)}, {"csv", CsvLock::lockPath(csvPath(c))}};
+  for (const std::string& path : scenePaths) {
+    const std::string stem = fs::path(path).stem().string();
+    if (!c.refsOnly) outputs.push_back({"csv", spectrumCsvPath(csvPath(c), stem)});
+    outputs.push_back({"out", (fs::path(c.out) / "references" / (stem + ".json")).string()});
+  }
+  refuseOutputsOverInputs(outputs, scenePaths);
+  for (const std::string& path : scenePaths) {
     requireRegularFile(path, "a scene is read from a regular file");
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
-    refuseOutputOverInput("csv", csvPath(c), {path});
-    // nor the scene's spectra file or reference manifest (the other files a run writes by scene name)
-    refuseOutputOverInput("csv", spectrumCsvPath(csvPath(c), fs::path(path).stem().string()), {path});
-    refuseOutputOverInput("out", (fs::path(c.out) / "references" / (fs::path(path).stem().string() + ".json")).string(),
-                          {path});
     const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
     // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
     // the references.

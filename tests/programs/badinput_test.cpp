@@ -79,6 +79,21 @@ std::string nestedScene(int levels, bool transforms) {
   return s.str();
 }
 
+/// A PNG of `path` (written 1 x 1) whose header then claims width x height: IHDR patched, its CRC recomputed.
+void writePngClaiming(const fs::path& path, uint32_t width, uint32_t height) {
+  aliaslab::writeImage(path.string(), aliaslab::Image(1, 1));
+  std::string png = aliaslab::testing::readText(path.string());
+  for (int k = 0; k < 4; ++k) png[16 + k] = char(width >> (24 - 8 * k)), png[20 + k] = char(height >> (24 - 8 * k));
+  uint32_t crc = 0xFFFFFFFFu;  // CRC-32 of the chunk type and data (bytes 12..28), as PNG defines it
+  for (size_t i = 12; i < 29; ++i) {
+    crc ^= uint8_t(png[i]);
+    for (int b = 0; b < 8; ++b) crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
+  }
+  crc ^= 0xFFFFFFFFu;
+  for (int k = 0; k < 4; ++k) png[29 + k] = char(crc >> (24 - 8 * k));
+  std::ofstream(path, std::ios::binary) << png;
+}
+
 /// Scratch folders of this test run; @GEN@ holds the generated inputs.
 const fs::path& scratch() {
   static const fs::path dir = [] {
@@ -94,6 +109,7 @@ const fs::path& scratch() {
     aliaslab::writeImage((d / "gen" / "b.exr").string(), b);
     a.set(1, 2, aliaslab::Color(NAN, 0.f, 0.f));
     aliaslab::writeImage((d / "gen" / "nan.exr").string(), a);
+    writePngClaiming(d / "gen" / "huge_header.png", 100000, 100000);  // 1e10 pixels claimed, 1 stored
     for (const char* fifo : {"fifo.txt", "fifo.csv", "fifo.exr"}) ::mkfifo((d / "gen" / fifo).c_str(), 0644);
     std::ofstream(d / "gen" / "manifest.json") << nestedScene(0, false);  // a scene where reference writes its manifest
     return d;

@@ -45,6 +45,28 @@ struct FlatScene {
   }
 };
 
+// docs/adaptive.md "What all three guarantee": with first=1 (nothing left to decide) adaptive-contrast:B is B sample
+// for sample when B's pixel sequence is progressive (random, halton, sobol, pmj02) or B gives no warning at that
+// spp (bluenoise; the grid at square counts); at other counts the grid is drawn as parts it handles fully (7 =
+// 4 + 2 + 1), and jittered is progressive jittered: never its points, only their distribution at 4^k.
+TEST(AdaptiveFirstPass, IsTheBaseSampleForSampleExactlyWhereTheDocsSay) {
+  FlatScene s;
+  auto same = [&](const std::string& base, int spp) {
+    const SampleBuffer a =
+        traceAdaptive(*s.tracer, *makeAdaptiveSampler("adaptive-contrast:" + base + "+first=1", spp, 4), 8, 8, 2);
+    const SampleBuffer b = traceSamples(*s.tracer, *makeSampler(base, spp, 4), 8, 8, 2);
+    if (a.samples().size() != b.samples().size()) return false;
+    for (size_t k = 0; k < a.samples().size(); ++k)
+      if (a.samples()[k].x != b.samples()[k].x || a.samples()[k].y != b.samples()[k].y) return false;
+    return true;
+  };
+  for (int spp : {7, 16, 64}) {
+    for (const char* base : {"random", "halton", "sobol", "pmj02", "bluenoise"}) EXPECT_TRUE(same(base, spp)) << base << " " << spp;
+    EXPECT_FALSE(same("jittered", spp)) << spp;
+    EXPECT_EQ(same("uniform", spp), spp != 7) << spp;  // 7 is not a square: 4 + 2 + 1
+  }
+}
+
 TEST(ProgressiveJittered, EveryPowerOfFourPrefixIsJittered) {
   for (uint64_t seed : {1u, 2u})
     for (int px = 0; px < 3; ++px) {
