@@ -11,7 +11,7 @@ import os
 import numpy as np
 
 from .. import study_csv
-from ..findings.study import facts, is_quick
+from ..findings.study import facts, is_quick, plural
 from ..stats import factors, sizes
 
 
@@ -125,8 +125,8 @@ def prose(c, small, large, top):
     both = int((a["same_samplers"] & a["same_filters"]).sum())
     rho = c.ranks["rho"].to_numpy(dtype=float)
     by_scene = c.ranks.groupby("scene")["rho"].median().sort_values()
-    text = [f"Over the {len(c.scenes)} shared scenes, {len(c.levels)} spp levels and {len(c.targets)} targets "
-            f"({n} answers): the leading samplers are the same at both sizes in {same_s} of {n}, the filter and "
+    text = [f"Over the {plural(len(c.scenes), 'shared scene')}, {plural(len(c.levels), 'spp level')} and "
+            f"{plural(len(c.targets), 'target')} ({plural(n, 'answer')}): the leading samplers are the same at both sizes in {same_s} of {n}, the filter and "
             f"radius in {same_f}, both in {both}.",
             f"The methods' order (Spearman's &rho; of their ratios to the best, per scene, target and spp over "
             f"{int(np.median(c.ranks['n']))} shared methods in the median) agrees with median &rho; = "
@@ -165,7 +165,8 @@ def section(page_df, quick_path, margin):
         return head + ("<p>The two studies share no scene, spp level and target: nothing to compare. "
                        f"{html.escape(missing_text(c, small, large))}</p>")
     top = max(c.levels)
-    where = html.escape(os.path.relpath(quick_path))
+    rel = os.path.relpath(quick_path)
+    where = html.escape(os.path.abspath(quick_path) if rel.startswith("..") else rel)
     intro = (f"<p>The quick study (<code>{where}</code>, {size_of(small_df)}) and this one ({size_of(large_df)}) "
              "rank the same methods on the same scenes; here only what both hold: scenes "
              f"{html.escape(', '.join(c.scenes))}; spp {', '.join(map(str, c.levels))}; targets "
