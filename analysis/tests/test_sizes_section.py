@@ -110,8 +110,8 @@ class SizesSection(unittest.TestCase):
         self.assertNotIn("sobol", by_spp[16][3])
         self.assertIn("tent r=1", by_spp[16][3])
         self.assertEqual(by_spp[16][4], "other samplers, other filter")
-        self.assertIn("the leading samplers are the same at both sizes in 1 of 2, the filter and radius in 1, "
-                      "both in 1", text(self.html))
+        self.assertIn("the leading samplers are the same at both sizes in 1 of 2 (they share at least one in 1), "
+                      "the filter and radius in 1, both in 1", text(self.html))
 
     def test_rank_agreement_recomputed_with_pandas(self):
         m = self.shared()

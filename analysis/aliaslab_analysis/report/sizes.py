@@ -23,10 +23,15 @@ def quick_csv(results, study, given=None):
     return path
 
 
-def names(samplers, present):
-    """Samplers with families named (factors.family_names)."""
-    out = [f"{n} ({len(m)})" if m else n for n, m in factors.family_names(list(samplers), present)]
+def names(samplers, present, fixed=()):
+    """Samplers with families named (factors.family_names), the fixed grid (the samplers in `fixed`) named so."""
+    out = [f"{n} ({len(m)})" if m else n + (" (fixed grid)" if n in fixed else "")
+           for n, m in factors.family_names(list(samplers), present)]
     return ", ".join(out) if out else "none"
+
+
+STATUS = {factors.MOST: "<i>none in half the scenes; most often:</i> ",
+          factors.NONE: "<i>none within the margin; closest:</i> "}
 
 
 def pct(v):
@@ -46,7 +51,7 @@ def spread(rho):
 
 def size_of(df):
     f = facts(df)
-    return f"{f['size']} px" + (f" (smallest scene {f['smallest']} px)" if f["smallest"] != f["size"] else "")
+    return f"{f['size']} px" + (f", the smallest scene {f['smallest']} px" if f["smallest"] != f["size"] else "")
 
 
 def missing_text(c, small, large):
@@ -62,11 +67,13 @@ def missing_text(c, small, large):
 
 def answer_rows(c, small, large):
     rows = []
+    fixed = set(c.moves.loc[c.moves["deterministic_small"].astype(bool), "sampler"])
     for _, a in c.answers.iterrows():
         r = c.ranks[(c.ranks["target"] == a["target"]) & (c.ranks["spp"] == a["spp"])]["rho"].to_numpy(dtype=float)
         cells = []
         for side in sizes.SIDES:
-            cells.append(f"{html.escape(names(a['samplers_' + side], c.samplers))}<br><small>with "
+            lead = STATUS.get(a["status_" + side], "")
+            cells.append(f"{lead}{html.escape(names(a['samplers_' + side], c.samplers, fixed))}<br><small>with "
                          f"{html.escape(', '.join(a['configs_' + side]) or '-')}</small>")
         same = ("same samplers" if a["same_samplers"] else "<b>other samplers</b>") + ", " + \
                ("same filter" if a["same_filters"] else "<b>other filter</b>")
@@ -82,7 +89,7 @@ def scene_rows(c, small, large, top):
     for scene in c.scenes:
         r = c.ranks[c.ranks["scene"] == scene]["rho"].to_numpy(dtype=float)
         sh = c.shares[c.shares["scene"] == scene]
-        noise = " &middot; ".join(f"{s['spp']}: {pct(s['noise_share_small'])} &rarr; {pct(s['noise_share_large'])}"
+        noise = "<br>".join(f"{s['spp']}: {pct(s['noise_share_small'])} &rarr; {pct(s['noise_share_large'])}"
                                   for _, s in sh.iterrows())
         g = c.grid[(c.grid["scene"] == scene) & (c.grid["spp"] == top)]
         grid = (f"{ratio(g.iloc[0]['ratio_small'])} &rarr; {ratio(g.iloc[0]['ratio_large'])}" if len(g)
@@ -114,8 +121,8 @@ def mover_text(m, small, large):
                      f"({html.escape(name(lo))}, {nl} rows)")
     if not parts:
         return ""
-    return (f"What moves: the median over a group's rows of (ratio to the best at {large}) / (ratio at {small}) "
-            f"(above 1: further behind the best at {large}) runs {'; '.join(parts)}.")
+    return (f"<b>What moves.</b> The median over a group's rows of (ratio to the best at {large}) / (ratio at "
+            f"{small}) (above 1: further behind the best at {large}) runs {'; '.join(parts)}.")
 
 
 def prose(c, small, large, top):
@@ -123,12 +130,14 @@ def prose(c, small, large, top):
     n = len(a)
     same_s, same_f = int(a["same_samplers"].sum()), int(a["same_filters"].sum())
     both = int((a["same_samplers"] & a["same_filters"]).sum())
+    overlap = int(a["overlap"].sum())
     rho = c.ranks["rho"].to_numpy(dtype=float)
     by_scene = c.ranks.groupby("scene")["rho"].median().sort_values()
-    text = [f"Over the {plural(len(c.scenes), 'shared scene')}, {plural(len(c.levels), 'spp level')} and "
-            f"{plural(len(c.targets), 'target')} ({plural(n, 'answer')}): the leading samplers are the same at both sizes in {same_s} of {n}, the filter and "
-            f"radius in {same_f}, both in {both}.",
-            f"The methods' order (Spearman's &rho; of their ratios to the best, per scene, target and spp over "
+    text = [f"<b>The answer.</b> Over the {plural(len(c.scenes), 'shared scene')}, {plural(len(c.levels), 'spp level')}"
+            f" and {plural(len(c.targets), 'target')} ({plural(n, 'answer')}): the leading samplers are the same at "
+            f"both sizes in {same_s} of {n} (they share at least one in {overlap}), the filter and radius in {same_f}, "
+            f"both in {both} (first table).",
+            f"<b>The order.</b> The methods' order (Spearman's &rho; of their ratios to the best, per scene, target and spp over "
             f"{int(np.median(c.ranks['n']))} shared methods in the median) agrees with median &rho; = "
             f"{np.nanmedian(rho):.2f} (range {np.nanmin(rho):.2f} to {np.nanmax(rho):.2f}); most in "
             f"{html.escape(by_scene.index[-1])} (median {by_scene.iloc[-1]:.2f}), least in "
@@ -136,19 +145,19 @@ def prose(c, small, large, top):
     sh = c.shares.assign(d=lambda d: (d["noise_share_large"] - d["noise_share_small"]).abs())
     if len(sh) and np.isfinite(sh["d"]).any():
         w = sh.loc[sh["d"].idxmax()]
-        text.append(f"The make-up of the error moves most in {html.escape(w['scene'])} at {w['spp']} spp: noise is "
+        text.append(f"<b>Where the error comes from.</b> Its make-up moves most in {html.escape(w['scene'])} at {w['spp']} spp: noise is "
                     f"{pct(w['noise_share_small'])} of the error (median over the shared methods) at {small}, "
-                    f"{pct(w['noise_share_large'])} at {large}; the rest is mostly blur. Aliasing against each "
+                    f"{pct(w['noise_share_large'])} at {large} (the rest: blur, aliasing and the cross term). Aliasing against each "
                     f"filter's own reference is told from zero (above 2 se) in {pct(np.nanmean(c.shares['aliased_small']))} "
                     f"of the randomised rows at {small} and {pct(np.nanmean(c.shares['aliased_large']))} at {large} "
                     "(mean over scenes and spp).")
     g = c.grid[c.grid["spp"] == top]
     if len(g):
         worse = int((g["ratio_large"] > g["ratio_small"]).sum())
-        text.append(f"The fixed grid (deterministic) at its best filter, {top} spp: further behind the best at "
+        text.append(f"<b>The fixed grid</b> (deterministic) at its best filter, {top} spp: further behind the best at "
                     f"{large} in {worse} of {len(g)} scenes (per scene in the second table).")
     text.append(mover_text(c.moves, small, large))
-    return " ".join(t for t in text if t)
+    return "<ul class='sizes'>" + "".join(f"<li>{t}</li>" for t in text if t) + "</ul>"
 
 
 def section(page_df, quick_path, margin):
@@ -163,7 +172,9 @@ def section(page_df, quick_path, margin):
     small, large = f"{ns} px", f"{nl} px"
     if c.answers.empty or not c.scenes:
         return head + ("<p>The two studies share no scene, spp level and target: nothing to compare. "
-                       f"{html.escape(missing_text(c, small, large))}</p>")
+                       f"{html.escape(missing_text(c, small, large))} A pixel at {small} covers {(nl / ns) ** 2:.3g} times the "
+             f"scene area of one at {large}: the same content lies {nl / ns:.3g} times higher in frequency per "
+             "pixel.</p>")
     top = max(c.levels)
     rel = os.path.relpath(quick_path)
     where = html.escape(os.path.abspath(quick_path) if rel.startswith("..") else rel)
@@ -173,14 +184,16 @@ def section(page_df, quick_path, margin):
              f"{html.escape(', '.join(c.targets))}; samplers {html.escape(', '.join(c.samplers))}. Each study's "
              f"shared rows are ranked as in answer.csv (margin {100 * margin:g} %): a ratio is to the best shared "
              "method of the scene, which may differ from the best of the whole study. "
-             f"{html.escape(missing_text(c, small, large))}</p>")
+             f"{html.escape(missing_text(c, small, large))} A pixel at {small} covers {(nl / ns) ** 2:.3g} times the "
+             f"scene area of one at {large}: the same content lies {nl / ns:.3g} times higher in frequency per "
+             "pixel.</p>")
     note = ("<p class='note'>Leading: the samplers equivalent to the best in at least half of the shared scenes "
             "(else those equivalent in the most scenes), each at its best filter and radius, as in the answer "
             "table; a family is named with its count. &rho;: Spearman's rank correlation of the shared methods' "
             "ratios to the best between the two sizes (1: same order). Noise share: the median over the shared "
             "methods of noise / error against the first target. The fixed grid's ratio: its lowest among rows "
             "told from zero.</p>")
-    return (head + intro + f"<p>{prose(c, small, large, top)}</p>" + answer_rows(c, small, large)
+    return (head + intro + prose(c, small, large, top) + answer_rows(c, small, large)
             + scene_rows(c, small, large, top) + note)
 
 

@@ -11,7 +11,8 @@ compare(small, large, margin) returns a Comparison:
   missing   [(what, only in the small study, only in the large one)] of scenes, spp, targets, samplers,
             filters, radii: what cannot be compared
   answers   per (target, spp): each study's leading samplers (factors.leaders) with their status and the filter
-            and radius of each leader's representative; `same_samplers` / `same_filters` when the sets are equal
+            and radius of each leader's representative; `same_samplers` / `same_filters` when the sets are equal,
+            `overlap` when the two sets of leading samplers share one
   ranks     per (target, spp, scene): Spearman's rank correlation of the shared methods' ratio to the best
             (rows with a finite ratio in both; the Pearson correlation of the average ranks), and `n` methods
   moves     per row of both: ratio_small, ratio_large and factor = ratio_large / ratio_small
@@ -97,6 +98,7 @@ def answers(lead_small, lead_large):
             rec[f"configs_{side}"] = tuple(sorted({config(r) for _, r in rows.iterrows()}))
         rec["same_samplers"] = rec["samplers_small"] == rec["samplers_large"]
         rec["same_filters"] = rec["configs_small"] == rec["configs_large"]
+        rec["overlap"] = bool(set(rec["samplers_small"]) & set(rec["samplers_large"]))
         out.append(rec)
     return pd.DataFrame(out)
 
