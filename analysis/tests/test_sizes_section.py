@@ -170,6 +170,11 @@ class SizesSection(unittest.TestCase):
         self.assertIsNone(section.quick_csv(results, quick))  # the quick study's own page
         self.assertIsNone(section.quick_csv(self.tmp.name, self.large))  # none beside it
 
+    def test_no_section_when_the_quick_study_is_not_smaller(self):
+        small, _ = study_csv.load_study(self.small)
+        self.assertEqual(section.section(small, self.large, 0.10), "")  # the page of the 48-px study
+        self.assertEqual(section.section(small, self.small, 0.10), "")
+
 
 if __name__ == "__main__":
     unittest.main()

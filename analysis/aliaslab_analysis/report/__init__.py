@@ -36,7 +36,7 @@ from its anchors (navigation.py; every scene and every chart has one), click-to-
      time, every method kept: heavy-tailed hollow, the fixed grid as
      crosses), and the targets as a trade-off (tradeoff.py: per target,
      noise plus aliasing against blur for every filter over its radii);
-     then, for a study that is not quick, the quick study against it
+     then, when a quick study of smaller images is found, it against this one
      (sizes.py: the same scenes at another size, --quick CSV, default
      RESULTS_DIR/study/study.csv: whether the answer is the same, the rank
      agreement of the methods, what moves with size, what cannot be compared);

@@ -2,8 +2,8 @@
 on what both hold (stats/sizes.py: the shared scenes, spp, targets and methods, ranked as answer.csv ranks
 them), in words and a table generated from the two CSVs.
 
-The page shows it when it is made for a study that is not quick and a quick study is found: `report --quick
-CSV`, else RESULTS/study/study.csv when it exists and is not the page's own study. Nothing is shown (and the
+The page shows it when a quick study is found (`report --quick CSV`, else RESULTS/study/study.csv when it exists
+and is not the page's own study) whose images are smaller than those of the page's study. Nothing is shown (and the
 page says why in one line) when the two share no scene, spp level or target."""
 import html
 import os
@@ -11,7 +11,7 @@ import os
 import numpy as np
 
 from .. import study_csv
-from ..findings.study import facts, is_quick, plural
+from ..findings.study import facts, plural
 from ..stats import factors, sizes
 
 
@@ -163,10 +163,10 @@ def prose(c, small, large, top):
 def section(page_df, quick_path, margin):
     """HTML of the section comparing the page's study (page_df) with the quick study at quick_path."""
     head = "<h2 id='sizes'>The quick study against the presented one</h2>"
-    q, _ = study_csv.load_study(quick_path)
-    pair = sorted([(facts(q)["size"], q), (facts(page_df)["size"], page_df)], key=lambda t: t[0])
-    (ns, small_df), (nl, large_df) = pair
-    if ns == nl:
+    small_df, _ = study_csv.load_study(quick_path)
+    large_df = page_df
+    ns, nl = facts(small_df)["size"], facts(large_df)["size"]
+    if ns >= nl:
         return ""
     c = sizes.compare(small_df, large_df, margin)
     small, large = f"{ns} px", f"{nl} px"
@@ -198,8 +198,8 @@ def section(page_df, quick_path, margin):
 
 
 def sizes_section(c):
-    """The page section (page.py SECTIONS): '' unless the page's study is not quick and a quick study is found."""
+    """The page section (page.py SECTIONS): '' unless a smaller quick study is found (module doc)."""
     path = quick_csv(c.results, c.study, getattr(c, "quick", None))
-    if path is None or is_quick(facts(c.df)):
+    if path is None:
         return ""
     return section(c.df, path, c.s.margin)
