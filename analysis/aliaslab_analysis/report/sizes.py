@@ -155,13 +155,25 @@ def prose(c, small, large, top):
     if len(g):
         worse = int((g["ratio_large"] > g["ratio_small"]).sum())
         text.append(f"<b>The fixed grid</b> (deterministic) at its best filter, {top} spp: further behind the best at "
-                    f"{large} in {worse} of {len(g)} scenes (per scene in the second table).")
+                    f"{large} in {worse} of {plural(len(g), 'scene')} (per scene in the second table).")
     text.append(mover_text(c.moves, small, large))
     return "<ul class='sizes'>" + "".join(f"<li>{t}</li>" for t in text if t) + "</ul>"
 
 
-def section(page_df, quick_path, margin):
-    """HTML of the section comparing the page's study (page_df) with the quick study at quick_path."""
+def where(quick_path, results):
+    """The quick study's CSV as the page names it, linked to its own page when it has one beside it."""
+    rel = os.path.relpath(quick_path)
+    shown = f"<code>{html.escape(os.path.abspath(quick_path) if rel.startswith('..') else rel)}</code>"
+    page = os.path.join(os.path.dirname(os.path.abspath(quick_path)), "index.html")
+    if results and os.path.isfile(page):
+        href = os.path.relpath(page, os.path.abspath(results)).replace(os.sep, "/")
+        return f"<a href='{html.escape(href)}'>{shown}</a>"
+    return shown
+
+
+def section(page_df, quick_path, margin, results=None):
+    """HTML of the section comparing the page's study (page_df) with the quick study at quick_path; results: the
+    page's folder (the quick study's page is linked from it)."""
     head = "<h2 id='sizes'>The quick study against the presented one</h2>"
     small_df, _ = study_csv.load_study(quick_path)
     large_df = page_df
@@ -176,9 +188,7 @@ def section(page_df, quick_path, margin):
              f"scene area of one at {large}: the same content lies {nl / ns:.3g} times higher in frequency per "
              "pixel.</p>")
     top = max(c.levels)
-    rel = os.path.relpath(quick_path)
-    where = html.escape(os.path.abspath(quick_path) if rel.startswith("..") else rel)
-    intro = (f"<p>The quick study (<code>{where}</code>, {size_of(small_df)}) and this one ({size_of(large_df)}) "
+    intro = (f"<p>The quick study ({where(quick_path, results)}, {size_of(small_df)}) and this one ({size_of(large_df)}) "
              "rank the same methods on the same scenes; here only what both hold: scenes "
              f"{html.escape(', '.join(c.scenes))}; spp {', '.join(map(str, c.levels))}; targets "
              f"{html.escape(', '.join(c.targets))}; samplers {html.escape(', '.join(c.samplers))}. Each study's "
@@ -202,4 +212,4 @@ def sizes_section(c):
     path = quick_csv(c.results, c.study, getattr(c, "quick", None))
     if path is None:
         return ""
-    return section(c.df, path, c.s.margin)
+    return section(c.df, path, c.s.margin, c.results)
