@@ -1,9 +1,9 @@
-"""The comparison viewer's data and the teaching strand's numbers (issue 30).
+"""The comparison viewer's data (issue 30).
 
 The committed viewer data of the presented study (results/viewer) against its CSV, read here with the csv module
 (not the package's loader): every value the viewer displays beside an image equals the CSV row's. The image
-encoding round trip, the crop choice and the plan's filter choice against independent computations, and the
-teaching strand's rules on a small synthetic table."""
+encoding round trip, the crop choice and the plan's filter choice against independent computations. (The viewer
+holds the answer: test_viewer_answer; the teaching strand's rules: test_teaching_facts.)"""
 import csv
 import json
 import os
@@ -13,9 +13,7 @@ import tempfile
 import unittest
 
 import numpy as np
-import pandas as pd
 
-from ..aliaslab_analysis.teaching import facts
 from ..aliaslab_analysis.viewer import export, flip, plan, section
 from ..aliaslab_analysis.viewer.exr import read_exr
 
@@ -225,92 +223,6 @@ class Choices(unittest.TestCase):
         noise[:, 0:8, 40:48] = 0.25
         self.assertEqual(plan.crop_window(means, 8, noise=noise), (8, 40))
         self.assertEqual(plan.crop_window(means, 8), (40, 0))  # by the variance alone: the noisy window
-
-
-def answer_rows():
-    """answer.csv beside the viewer data (read with the csv module), else the report's answer table computed from
-    the study (the code that writes answer.csv), as rows of strings."""
-    if os.path.isfile(ANSWER):
-        with open(ANSWER, newline="", encoding="utf-8") as f:
-            return list(csv.DictReader(f))
-    from ..aliaslab_analysis import study_csv
-    from ..aliaslab_analysis.findings.study import Study
-    df, notes = study_csv.load_study(STUDY)
-    return [{k: str(v) for k, v in r.items()} for r in Study(df, notes).answer.to_dict("records")]
-
-
-def named_methods(rows, scenes):
-    """{scene: {(sampler, spp, filter, radius): why}}: what answer.csv names, found independently of the viewer's
-    code: the rows called equivalent (a scene's, or across scenes: every scene) and, per (target, spp, sampler),
-    the across-scene row with the lowest ratio (ties: more scenes equivalent), plain weighted sampling only."""
-    rows = [r for r in rows if r["reconstruction"] == "weighted" and r["prefilter"] in ("none", "")]
-    key = lambda r: (r["sampler"], int(float(r["spp"])), r["filter"], float(r["radius"]))  # noqa: E731
-    out = {s: {} for s in scenes}
-    for r in rows:
-        if r["verdict"] == "equivalent":
-            for s in (scenes if r["scope"] == "all" else [r["scope"]]):
-                out[s][key(r)] = f"equivalent ({r['target']}, {r['spp']} spp, {r['scope']})"
-    best = {}
-    for r in rows:
-        if r["scope"] != "all" or not np.isfinite(float(r["ratio"] or "nan")):
-            continue
-        k = (r["target"], r["spp"], r["sampler"])
-        rank = (float(r["ratio"]), -int(float(r["equivalent_scenes"])))
-        if k not in best or rank < best[k][0]:
-            best[k] = (rank, r)
-    for (t, spp, sampler), (_, r) in best.items():
-        for s in scenes:
-            out[s].setdefault(key(r), f"best of {sampler} ({t}, {spp} spp)")
-    return out
-
-
-class TheAnswerIsInTheViewer(unittest.TestCase):
-    def test_every_method_answer_csv_names_is_in_the_viewer(self):
-        with open(os.path.join(VIEWER, "index.json"), encoding="utf-8") as f:
-            index = json.load(f)
-        held = {}
-        for s, v in index["scenes"].items():
-            d = load_js(os.path.join(VIEWER, v["file"]))
-            held[s] = {(c["sampler"], c["spp"], c["filter"], float(c["radius"])) for c in d["configs"]}
-            for c in d["configs"]:  # the methods equivalent to the best: their whole image and whole FLIP maps
-                if "E" in c["sets"]:
-                    self.assertTrue(c["whole"] and set(c["flipWhole"]) == set(d["targets"]), (s, c["id"]))
-        named = named_methods(answer_rows(), sorted(held))
-        missing = [(s, k, why) for s in named for k, why in named[s].items() if k not in held[s]]
-        self.assertGreater(sum(map(len, named.values())), 0)
-        self.assertEqual(missing, [], f"{len(missing)} named methods missing from {VIEWER} (regenerate it: "
-                                      "python3 -m analysis viewer)")
-
-
-class Teaching(unittest.TestCase):
-    def rows(self):
-        base = dict(scene="s", spp=4, target="box:0.5", reconstruction="weighted", prefilter="none",
-                    deterministic=0, undefined_pixels=0, mse_target_se=0.001)
-        rows = []
-        for sampler, f, r, mse, noise, und in (("jittered", "box", 0.5, 0.02, 0.01, 0),
-                                                ("uniform", "box", 0.5, 0.03, 0.0, 0),
-                                                ("jittered", "lanczos", 0.5, 5.0, 1.5, 0),
-                                                ("jittered", "tent", 0.5, 0.05, 0.02, 7),
-                                                ("jittered", "box", 2.0, 0.04, 0.001, 0)):
-            rows.append(dict(base, sampler=sampler, filter_name=f, radius=r, mse_target=mse, noise=noise,
-                             undefined_pixels=und, deterministic=int(sampler == "uniform")))
-        return pd.DataFrame(rows)
-
-    def test_broken_filters_are_apart_and_not_worst(self):
-        rows = self.rows()
-        bad = facts.degenerate(rows)
-        self.assertIn(("s", "jittered", 4, "lanczos", 0.5), bad)  # noise 150 times the box's
-        self.assertIn(("s", "jittered", 4, "tent", 0.5), bad)  # undefined pixels
-        self.assertEqual(len(bad), 2)
-        ext, spp = facts.extremes(rows, bad)
-        best, worst, degen = ext["s"]
-        self.assertEqual((best["filter_name"], worst["filter_name"], worst["radius"]), ("box", "box", 2.0))
-        self.assertEqual(len(degen), 2)
-
-    def test_grid_scene(self):
-        g = facts.grid_scene(self.rows())
-        self.assertEqual((g["scene"], g["wins"], g["scenes"]), ("s", 0, 1))
-        self.assertAlmostEqual(g["ratio"], 1.5)
 
 
 class ImageSizes(unittest.TestCase):

@@ -14,6 +14,7 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "core/parallel.h"
+#include "measure/registration.h"
 #include "options.h"
 #include "render/render.h"
 #include "sampling_plan.h"
@@ -106,6 +107,10 @@ int run(const RaytracerOptions& o, const SamplingPlan& plan) {
     for (int t = 0; t < o.frames; ++t) {
       scene.camera = makeShiftedCamera(*base, frameScreenOffset(t, dx, dy, w, h));
       RenderedImage r = renderImage(tracer, plan, w, h, o.threads);
+      if (o.registerFrames && t > 0) {  // out(p) = frame t(p - t d): frame 0's content where it is the same
+        const std::vector<double> moved = shiftImage(r.image, t * dx, t * dy);
+        std::transform(moved.begin(), moved.end(), r.image.data(), [](double v) { return static_cast<float>(v); });
+      }
       images.emplace_back(framePath(o.output, t), std::move(r.image));
     }
     scene.camera.reset();

@@ -23,7 +23,7 @@ const char* const kClassicFlags[] = {"input",          "size",           "output
                                      "depth",          "normals",        "stats",           "random_samples",
                                      "uniform_samples", "jittered_samples", "box_filter",    "tent_filter",
                                      "gaussian_filter", "render_samples", "render_filter", "frames",
-                                     "motion"};
+                                     "motion",         "register"};
 
 /// An output image path: supported extension, existing writable folder.
 void checkOutput(const std::string& option, const std::string& path) {
@@ -77,6 +77,9 @@ void addRaytracerOptions(CLI::App& app, RaytracerOptions& o) {
   app.add_option("--motion", o.motion, "dx,dy: the camera's motion in pixels per frame (default 0,0; needs -frames)")
       ->delimiter(',')
       ->expected(2);
+  app.add_flag("--register", o.registerFrames,
+               "with -frames: write frame t moved back by t (dx, dy) pixels onto frame 0's content (the library's "
+               "band-limited shift, docs/science.md \"Motion\"): what still changes is shimmer and noise");
   // Classic sampling.
   app.add_option("--random_samples", o.randomSamples, "n independent uniform samples per pixel");
   app.add_option("--uniform_samples", o.uniformSamples, "n samples on a regular grid per pixel");
@@ -190,6 +193,8 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
       if (!std::isfinite(v) || std::abs(v) > 1e6)
         throw OptionError("-motion", "dx and dy must be finite numbers of pixels per frame (at most 1e6)");
   }
+  if (o.registerFrames && !app.count("--frames"))
+    throw OptionError("-register", "needs -frames (it registers the frames to frame 0's content)");
   if (o.frames > 0) {
     if (o.output.empty()) throw OptionError("-frames", "needs -output (its name gives the frames' names)");
     if (!o.depth.empty() || !o.normals.empty() || !o.renderSamples.empty() || !o.renderFilter.empty())

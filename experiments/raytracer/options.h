@@ -35,6 +35,7 @@ struct RaytracerOptions {
   // t (dx, dy) pixels (-motion dx,dy; default 0,0), named by framePath(-output, t).
   int frames = 0;                  ///< -frames F: 0 = one image at -output (the classic behaviour)
   std::vector<double> motion;      ///< -motion dx,dy in pixels per frame
+  bool registerFrames = false;     ///< -register: frame t written moved by +t (dx, dy) (measure/registration.h)
   // Classic sampling (imply classic reconstruction).
   int randomSamples = 0, uniformSamples = 0, jitteredSamples = 0;  ///< -<kind>_samples n
   float boxFilter = 0.f, tentFilter = 0.f, gaussianFilter = 0.f;  ///< radius r, r, sigma

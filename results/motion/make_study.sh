@@ -7,8 +7,10 @@
 #   2. an 8-frame loop of the grating (raytracer -frames, point sampling with box r 0.5 and gaussian r 1.5,
 #      and the pixel-area reference), each frame's error by imgdiff -> results/motion/study/loop.png and loop.csv
 #      (analysis motion_loop.py)
-#   3. the page -> results/motion/index.html (python3 -m analysis report) and results/motion.md
-# Run from the repository root after building (build/bin). About 5 minutes of CPU on 2 cores.
+#   3. x-t slices: one row over 32 frames registered to the content (raytracer -frames -register), for rows
+#      chosen from the CSV (analysis xt_slice.py) -> results/motion/study/xt/ (xt-SCENE.png, xt.csv)
+#   4. the page -> results/motion/index.html (python3 -m analysis report) and results/motion.md
+# Run from the repository root after building (build/bin). About 9 minutes of CPU on 2 cores.
 set -eu
 BIN=${BIN:-build/bin}
 OUT=results/motion
@@ -35,5 +37,7 @@ done
 /usr/bin/python3 -m analysis.aliaslab_analysis.motion_loop --frames "$FRAMES" --reference ref \
   --errors "$FRAMES/errors.csv" \
   --methods "box=uniform 1 spp box r 0.5,gauss=uniform 1 spp gaussian r 1.5" --out "$OUT/study/loop.png"
+/usr/bin/python3 -m analysis.aliaslab_analysis.xt_slice --study "$OUT/study/study.csv" --bin "$BIN" --frames 32 \
+  --out "$OUT/study/xt"
 /usr/bin/python3 -m analysis report "$OUT" --study "$OUT/study/study.csv"
 /usr/bin/python3 "$OUT/make_motion_md.py"

@@ -20,7 +20,8 @@ chromium-driver, loads a page generated for a small study from file:// and check
 the view it opens on is the answer's default (three panels in one row at 1366 px); every method answer.csv calls
 equivalent can be selected and its whole image and whole FLIP map load; the grid shows no standard error; f keeps
 the sampler; b flips A/B in place; served (--serve) it renders a row not in the data with the CSV's per-seed
-mse_target and readout, and shows a user EXR's error map;
+mse_target and readout, shows a user EXR's error map, and the x-t slice of a row over registered frames
+(served_xt.py);
 and writes screenshots at 1366 px wide to ARTIFACTS/viewer_1366.png and viewer_flip_1366.png.
 
   test_viewer_browser.py --sweep BIN --raytracer BIN --source REPO --artifacts DIR
@@ -36,6 +37,8 @@ import sys
 import tempfile
 import time
 import urllib.parse
+
+from served_xt import xt_checks
 
 SKIP = 77
 
@@ -253,6 +256,7 @@ def served_checks(d, check, wait, page, study, work, cache, rows):
         text = d.find_element("css selector", "#alv .alv-main .alv-readout span").text
         check(f"against {targets[-1]}" in label and "error" in text,
               f"the user EXR's error map against {targets[-1]} ('{label[:50]}', readout '{text[:80]}')")
+        xt_checks(d, check, wait, ARGS.source, ARGS.artifacts, row)  # the x-t slice of the row (served_xt.py)
         logs = [e for e in d.get_log("browser") if e.get("level") == "SEVERE"]
         check(not logs, f"no console errors when served ({logs[:2]})")
         d.save_screenshot(os.path.join(ARGS.artifacts, "viewer_served_1366.png"))

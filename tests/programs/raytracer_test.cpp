@@ -359,6 +359,25 @@ TEST_F(RaytracerTest, FramesOfAMovingCamera) {
   EXPECT_FALSE(identical(f0, f2));
 }
 
+// -register writes frame t moved by +t (dx, dy) (the library's band-limited shift, measure/registration.h): with a
+// whole-pixel motion the shift is exact, so registered frame 2 is frame 0 away from the 2 pixels entering at the
+// left (and the few pixels the unregistered frames already differ at); unregistered, frame 2 differs from frame 0.
+TEST_F(RaytracerTest, RegisteredFramesShowFrameZerosContent) {
+  const std::string moving = "-input " + kScene + " -size 16 16 -frames 3 -motion 1,0 -output ";
+  ASSERT_EQ(run(moving + path("r.exr") + " -register").code, 0);
+  ASSERT_EQ(run(moving + path("c.exr")).code, 0);
+  EXPECT_TRUE(identical(readImage(path("r_0000.exr")), readImage(path("c_0000.exr"))));  // frame 0 as rendered
+  const Image f0 = readImage(path("c_0000.exr")), f2 = readImage(path("c_0002.exr")), r2 = readImage(path("r_0002.exr"));
+  int same = 0, all = 0;
+  for (int y = 0; y < 16; ++y)
+    for (int x = 2; x < 16; ++x, ++all) same += (r2.get(x, y) - f0.get(x, y)).cwiseAbs().maxCoeff() < 1e-4f ? 1 : 0;
+  EXPECT_GE(same, all - 4);
+  EXPECT_FALSE(identical(f0, f2));
+  const Result r = run("-input " + kScene + " -size 16 16 -register -output " + path("x.png"));
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("-register: needs -frames"), std::string::npos) << r.err;
+}
+
 TEST_F(RaytracerTest, FramesRefuseBadValues) {
   const std::string base = "-input " + kScene + " -size 16 16 -output " + path("x.png");
   for (const auto& [args, words] : std::vector<std::pair<std::string, std::string>>{

@@ -6,7 +6,9 @@ with frames (sweep --frames F > 1: the motion columns of lib/study/csv.h), again
     (shimmer, and flicker with one seed per sequence), each in order with its top group (tied with the best by
     the two-standard-error rule, stats/ties.py top_group) in bold;
   - the animated loop of frames of one scene with each frame's error (motion_loop.py), when loop.png and its
-    loop.csv are beside the CSV.
+    loop.csv are beside the CSV;
+  - per scene the x-t slices of a row over registered frames (xt_slice.py, report/motion_xt.py), when xt/xt.csv
+    is beside the CSV.
 Every number in the prose comes from facts(), computed from the CSV; analysis/tests/test_motion_report.py
 recomputes them from the CSV's text by another path. '' for a still study (no frames column, or F = 1).
 Rows whose measure is not finite are left out of that measure's ranking and counts."""
@@ -20,6 +22,7 @@ from .. import figures, palette
 from ..figures import plt
 from ..stats import ties
 from .elements import figure
+from .motion_xt import read_panels, xt_figure
 
 MEASURES = [("still (mse_target)", "mse_target", "mse_target_se", True),
             ("in motion: shimmer", "shimmer", "shimmer_se", False),
@@ -180,6 +183,7 @@ def motion_section(c):
             "without the standard errors: a rise within noise counts against it). The still image's best method "
             f"is not the steadiest in {f['differ_shimmer']} of {f['cells']} cells by shimmer and in "
             f"{f['differ_flicker']} by flicker (lowest value; ties in the tables below).</div>"]
+    panels = read_panels(os.path.dirname(os.path.abspath(c.study)))
     for scene in sorted(rows["scene"].unique()):
         png = chart(rows, scene, c.charts_dir)
         body.append(f"<h3>{html.escape(str(scene))}</h3>")
@@ -190,5 +194,6 @@ def motion_section(c):
         body.append("<p>Rankings, lowest first, with the value; <b>bold</b>: tied with the best by the "
                     "two-standard-error rule (mse_target paired over seeds, the motion measures unpaired).</p>")
         body.append(ranking_table(rows, scene))
+        body.append(xt_figure(c, rows, scene, panels))
     body.append(loop_part(c.results, os.path.dirname(os.path.abspath(c.study)), c.embed))
     return "\n".join(p for p in body if p)

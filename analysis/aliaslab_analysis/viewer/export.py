@@ -257,7 +257,7 @@ def export_study(results, study, df, plan, scenes, work, cache=None, quiet=False
     out = os.path.join(results, "viewer")
     errors.prepare_out(out, "RESULTS/viewer")
     index = {"study": os.path.relpath(os.path.abspath(study), os.path.abspath(results)).replace(os.sep, "/"),
-             "plan": plan.describe(), "scenes": {}}
+             "plan": plan.describe(), "whole": getattr(plan, "whole", "all"), "scenes": {}}
     for scene in scenes:
         e = SceneExport(study, df, plan, scene, work, cache, imgdiff)
         data = e.run()

@@ -13,6 +13,9 @@ answers the viewer's requests under /alv-api/:
                             every target) and the check (verified: [[target, from the image, the CSV's]])
   exr?scene&name&x&y&n      a user's EXR (one of --exr, the scene's size) as a configuration of its own, with its
                             FLIP maps against every target
+  xt?scene&sampler&spp&filter&radius&seed&row&frames
+                            the x-t slice of that row's image row `row` over frames of a moving camera registered
+                            to the content, beside the primary target's (serve_xt.py)
 
 Renders go to the work folder as the export's do (kept; a second request reuses the file)."""
 import json
@@ -24,7 +27,7 @@ from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 import numpy as np
 
 from .. import errors, figures
-from . import render
+from . import render, serve_xt
 from .encoding import channels, png_entry
 from .exr import read_exr
 from .export import SceneExport
@@ -145,6 +148,8 @@ def handler(served):
             try:
                 if what == "info":
                     body = served.info()
+                elif what == "xt":
+                    body = serve_xt.xt(served, q)
                 elif what in ("render", "exr"):
                     body = (served.render if what == "render" else served.user_exr)(q)
                 else:

@@ -2,7 +2,8 @@
 // comes over http and /alv-api/info answers, a row of controls renders any configuration of the CSV with the
 // raytracer and that row's seed (the server checks its mse_target against the CSV's per-seed value, as the export
 // does) or loads an EXR the user named (--exr); each arrives as a configuration of its own (whole image, crop,
-// whole FLIP maps against every target), shown as the current method with the previous one pinned beside it.
+// whole FLIP maps against every target), shown as the current method with the previous one pinned beside it; or
+// the x-t slice of the chosen row (an image row over registered frames of a moving camera, beside the target's).
 (function () {
   "use strict";
   const V = window.ALIASLAB_VIEWER, root = document.getElementById("alv");
@@ -50,6 +51,27 @@
   V.serveRender = (row) => request("render", row);  // row: {sampler, spp, filter, radius, seed}
   V.serveExr = (name) => request("exr", {name: name});
 
+  // The x-t slice (serve_xt.py): an image row over frames of a moving camera registered to the content, beside
+  // the primary target's; its controls in a row of their own, the picture below them (enlarged, pixels kept sharp).
+  const xtBox = el("div", {class: "alv-row alv-xt"}), xtOut = el("div", {class: "alv-xt-out"});
+  V.serveXt = (row) => {  // row: {sampler, spp, filter, radius, seed, row, frames}
+    const q = new URLSearchParams(Object.assign({scene: V.state.scene}, row));
+    say.textContent = "rendering the frames with the raytracer ...";
+    return fetch("/alv-api/xt?" + q).then((r) => r.json()).then((j) => {
+      if (j.error) throw new Error(j.error);
+      xtOut.textContent = "";
+      const img = el("img", {src: j.png, alt: "x-t slice", style: "image-rendering:pixelated;max-width:100%"});
+      img.onload = () => { img.style.width = Math.min(2, Math.floor(900 / img.naturalWidth) || 1) * img.naturalWidth + "px"; };
+      xtOut.append(img, el("div", {class: "alv-xt-caption"}, `x-t slice: image row ${j.row} (from the top) in ` +
+        `${j.frames} frames of the camera moving (${j.motion.join(", ")}) px per frame, frame 0 at the top, ` +
+        `registered to the content (columns within ${j.margin} px of a side left out). Vertical streaks: steady; ` +
+        "slanted or crawling texture: shimmer; speckle: noise. Below: each row minus the mean of the rows."));
+      say.textContent = "x-t slice of " + j.labels[1].join(", ");
+      V.xt = j;  // the last answer (its frame paths: what the browser test compares the picture with)
+      return j;
+    }).catch((e) => { say.textContent = "failed: " + (e.message || e); throw e; });
+  };
+
   function build() {
     box.textContent = "";
     box.appendChild(el("span", {class: "alv-label"}, "render"));
@@ -70,6 +92,20 @@
       V.serveRender({sampler: s, spp: spp, filter: f, radius: r, seed: seed.value}).catch(() => {});
     };
     box.append(rows, " seed ", seed, go);
+    const d0 = V.data[V.state.scene], y = el("input", {type: "number", min: "0", class: "alv-serve-xt-row",
+      style: "width:4em", value: String(d0 && d0.crop ? d0.crop.y + Math.floor(d0.crop.size / 2) : 0)});
+    const frames = el("input", {type: "number", min: "2", max: "64", value: "16", class: "alv-serve-xt-frames",
+      style: "width:4em"});
+    const xtGo = el("button", {type: "button", class: "alv-serve-xt"}, "x-t slice");
+    xtGo.onclick = () => {
+      fill();
+      const [s, spp, f, r] = info.scenes[V.state.scene][Number(rows.value)];
+      V.serveXt({sampler: s, spp: spp, filter: f, radius: r, seed: seed.value, row: y.value, frames: frames.value})
+        .catch(() => {});
+    };
+    xtBox.textContent = "";
+    xtBox.append(el("span", {class: "alv-label"}, "x-t"), "the row chosen above: image row ", y, " over ", frames,
+      " frames ", xtGo);
     if (info.exrs.length) {
       const ex = el("select", {class: "alv-serve-exr"});
       for (const name of info.exrs) ex.appendChild(el("option", {value: name}, name));
@@ -79,6 +115,8 @@
     }
     box.appendChild(say);
     root.insertBefore(box, root.querySelector(".alv-panels"));
+    root.insertBefore(xtBox, root.querySelector(".alv-panels"));
+    root.insertBefore(xtOut, root.querySelector(".alv-panels"));
   }
 
   fetch("/alv-api/info").then((r) => (r.ok ? r.json() : null)).then((j) => {
