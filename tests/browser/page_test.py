@@ -2,7 +2,8 @@
 its index.html loaded from file:// in headless Chromium at 1366 px, and checked: no severe console message
 (a failed load, a script error), every link and anchor resolves, every image decodes (lazy ones included),
 every entry of the table of contents points at an element of the page, the scene gallery links to the scenes,
-and a click on a chart opens it enlarged (Esc closes it). The committed pages (results/index.html, the
+a click on a chart opens it enlarged (Esc closes it), and the section comparing a 12-px quick study of the
+same scenes opens with its tables. The committed pages (results/index.html, the
 studies' pages beside it, engineering.html, the definitions) are loaded too: every link, script, style sheet
 and image of theirs resolves. A screenshot of the top of the page at 1366 px is
 written to ARTIFACTS/page-1366.png (CI keeps it: look at it when the page changes).
@@ -25,15 +26,22 @@ ARGS = None
 COMMITTED = ("index.html", "study/index.html", "prefilter/index.html", "engineering.html", "docs/science.html")
 
 
-def sweep_and_report(sweep, source, out):
-    study = os.path.join(out, "study")
-    subprocess.run([sweep, "--scenes", f"{source}/scenes/zoneplate.txt,{source}/scenes/fence.txt", "--size", "24",
-                    "24", "--samplers", "uniform,jittered,sobol,zsobol", "--spp", "4,16", "--filters", "box,lanczos",
+def sweep(program, source, out, folder, size, images=True):
+    study = os.path.join(out, folder)
+    subprocess.run([program, "--scenes", f"{source}/scenes/zoneplate.txt,{source}/scenes/fence.txt", "--size", size,
+                    size, "--samplers", "uniform,jittered,sobol,zsobol", "--spp", "4,16", "--filters", "box,lanczos",
                     "--radii", "0.5,1", "--seeds", "2", "--ref-spp", "64", "--target", "area,gaussian:1.5",
-                    "--cache", os.path.join(out, "cache"), "--out", study, "--images", "--quiet", "--threads", "2"],
-                   check=True)
+                    "--cache", os.path.join(out, "cache"), "--out", study, "--quiet", "--threads", "2"]
+                   + (["--images"] if images else []), check=True)
+    return os.path.join(study, "study.csv")
+
+
+def sweep_and_report(program, source, out):
+    """The page of a 24-px study, with a 12-px one of the same scenes as its quick study (report --quick)."""
+    study = sweep(program, source, out, "study", "24")
+    quick = sweep(program, source, out, "quick", "12", images=False)
     env = dict(os.environ, MPLBACKEND="Agg", PYTHONDONTWRITEBYTECODE="1")
-    subprocess.run([sys.executable, "-m", "analysis", "report", out, "--study", os.path.join(study, "study.csv")],
+    subprocess.run([sys.executable, "-m", "analysis", "report", out, "--study", study, "--quick", quick],
                    check=True, cwd=source, env=env, stdout=subprocess.DEVNULL)
     return os.path.join(out, "index.html")
 
@@ -113,6 +121,19 @@ class Page(unittest.TestCase):
         browser.screenshot(self.driver, os.path.join(ARGS.artifacts, "tradeoff.png"),
                            self.js("return document.getElementById('tradeoff').getBoundingClientRect().top "
                                    "+ window.scrollY;"))
+        self.js("window.scrollTo(0, 0);")
+
+    def test_the_quick_study_against_this_one_opens(self):
+        """Issue 44 item 6: the section comparing the smaller study with this one, with its answer table (a row per
+        target and spp) and its scene table (a row per scene); a screenshot goes to ARTIFACTS (sizes.png)."""
+        top = self.js("var s = document.getElementById('sizes'); return s ? s.getBoundingClientRect().top "
+                      "+ window.scrollY : -1;")
+        self.assertGreater(top, 0)
+        rows = self.js("var t = [], e = document.getElementById('sizes').nextElementSibling;"
+                       "while (e && e.tagName != 'H2') { if (e.tagName == 'TABLE') t.push(e.querySelectorAll('td')"
+                       ".length ? e.querySelectorAll('tr').length - 1 : 0); e = e.nextElementSibling; } return t;")
+        self.assertEqual(rows, [4, 2])  # 2 targets x 2 spp; 2 scenes
+        browser.screenshot(self.driver, os.path.join(ARGS.artifacts, "sizes.png"), top - 20)
         self.js("window.scrollTo(0, 0);")
 
     def test_the_gallery_links_every_scene(self):

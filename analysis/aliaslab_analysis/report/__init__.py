@@ -3,6 +3,7 @@
 Usage:
   /usr/bin/python3 -m analysis report RESULTS_DIR [--study CSV] [--charts DIR] [--images DIR]
                                        [--label TEXT] [--embed] [--reuse-charts] [--margin DELTA]
+                                       [--quick CSV]
   /usr/bin/python3 -m analysis report RESULTS_DIR --tables [--study CSV]
   /usr/bin/python3 -m analysis report RESULTS_DIR --findings-md [--study CSV]
 
@@ -35,6 +36,10 @@ from its anchors (navigation.py; every scene and every chart has one), click-to-
      time, every method kept: heavy-tailed hollow, the fixed grid as
      crosses), and the targets as a trade-off (tradeoff.py: per target,
      noise plus aliasing against blur for every filter over its radii);
+     then, when a quick study of smaller images is found, it against this one
+     (sizes.py: the same scenes at another size, --quick CSV, default
+     RESULTS_DIR/study/study.csv: whether the answer is the same, the rank
+     agreement of the methods, what moves with size, what cannot be compared);
   2. per scene: the decomposition (stacked bars), the radius trade-off, the
      convergence with spp, the error-vs-time chart, the heatmap, the contact
      sheet and the images of the best and the worst method;
@@ -60,7 +65,7 @@ primary target (box:0.5 when present, else the CSV's first).
 
 Modules: findings.py (the generated findings as HTML, the rules of the verdicts in words), answer_csv.py
 (answer.csv written and read), answer_table.py (the answer at a glance), targets_table.py (what each target
-favours), tradeoff.py (the targets as a trade-off), studies.py (the other studies linked), summary_chart.py (the findings' chart),
+favours), tradeoff.py (the targets as a trade-off), sizes.py (the quick study against this one), studies.py (the other studies linked), summary_chart.py (the findings' chart),
 scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
 markdown.py (--tables' Markdown, the fallback reader), docs_html.py (Markdown to HTML: docs/, engineering.html),
 navigation.py (contents, gallery, lightbox), tables.py (--tables), cli.py (the command).

@@ -40,6 +40,8 @@ def main(argv=None, prog=None):
     ap.add_argument("--margin", type=float, default=None, metavar="DELTA",
                     help="the margin of practical equivalence: a method is equivalent to a scene's best when the 95 %% "
                     "interval of its error ratio lies below 1 + DELTA (default 0.10, printed on the page)")
+    ap.add_argument("--quick", metavar="CSV", help="the quick study to reconcile this one with (same scenes at "
+                    "another size; default RESULTS/study/study.csv when it exists and is not --study)")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
     ap.add_argument("--findings-md", action="store_true",
                     help="print the generated findings as Markdown (results/README.md's findings section)")
@@ -53,6 +55,8 @@ def main(argv=None, prog=None):
     if args.margin is not None and not (0 < args.margin < 10):
         errors.fail(f"--margin: {args.margin:g} is not a margin (give a number between 0 and 10, e.g. 0.10 for 10 %)")
     study = args.study or default_study(args.results)
+    if args.quick is not None and not os.path.isfile(args.quick):
+        errors.fail(f"--quick: {args.quick}: no such file")
     if args.study is not None and not os.path.isfile(args.study):
         errors.fail(f"--study: {args.study}: no such file")
     try:
@@ -69,7 +73,7 @@ def main(argv=None, prog=None):
         if study is None:
             errors.fail(f"{args.results}: no study/study.csv or study.csv in it: give --study")
         path = build_report(args.results, study, args.charts, args.images, args.label, embed=args.embed,
-                            draw=not args.reuse_charts, margin=args.margin)
+                            draw=not args.reuse_charts, margin=args.margin, quick=args.quick)
     except errors.InputError as e:
         errors.fail(str(e))
     print(f"wrote {path}")

@@ -24,7 +24,7 @@ details{margin:.6em 0}summary{cursor:pointer;color:#236}code{background:#eee;pad
 figure img{cursor:zoom-in}figcaption a.anchor{color:#999;text-decoration:none;margin-left:.3em}
 .answer-table td{text-align:left;vertical-align:top;min-width:13em}.answer-table th{vertical-align:top;text-align:left}
 .answer-table .cfg{font-weight:600;color:#245;margin-top:.2em}.answer-table .ctl{color:#555}
-.docs li{margin:.15em 0}.docs td,.docs th{text-align:left}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
+.sizes td,.sizes th{text-align:left;vertical-align:top}ul.sizes li{margin:.3em 0}.docs li{margin:.15em 0}.docs td,.docs th{text-align:left}.docs pre{background:#eee;padding:.5em;overflow:auto}"""
 
 
 def chart_png_bytes(path):

@@ -23,6 +23,7 @@ from .findings import equivalence_rules, findings, method_name
 from .markdown import markdown_tables
 from .motion import motion_section
 from .scene import scene_notes, scene_section
+from .sizes import sizes_section
 from ..viewer.section import viewer_section
 from .summary_chart import summary_chart
 from .targets_table import targets_text
@@ -104,6 +105,7 @@ class Context:
     name: str
     spec: object = None
     answer_path: str = ""
+    quick: str = None  # report --quick: the quick study to reconcile with (report/sizes.py)
 
 
 def header_section(c):
@@ -230,6 +232,7 @@ SECTIONS = [
     findings_section,
     summary_section,
     tradeoff_section,  # per target: noise + aliasing against blur, every filter over its radii
+    sizes_section,  # the quick study (48 px) against this one: what changes with size (report/sizes.py)
     motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
@@ -240,7 +243,8 @@ SECTIONS = [
 ]
 
 
-def build_report(results, study, charts_dir=None, images=None, label=None, embed=False, draw=True, margin=None):
+def build_report(results, study, charts_dir=None, images=None, label=None, embed=False, draw=True, margin=None,
+                 quick=None):
     """Writes RESULTS/index.html and RESULTS/answer.csv (and engineering.html, and docs/*.html: the definitions
     rendered); margin: the margin of equivalence (default stats/effect.MARGIN); returns the index path. Raises
     errors.InputError."""
@@ -259,6 +263,7 @@ def build_report(results, study, charts_dir=None, images=None, label=None, embed
     c = Context(results, study, df, notes, s, primary, charts_dir, images, embed,
                 html.escape(science), study_label(study, label, is_quick(facts_of(df))))
     c.spec = spectra.load(study)
+    c.quick = quick
     c.answer_path = answer_csv.write(s.answer, results)
     body = [part for part in (section(c) for section in SECTIONS) if part]
     return write_page(os.path.join(results, "index.html"), f"aliaslab report: {c.name}", "\n".join(body), toc=True)

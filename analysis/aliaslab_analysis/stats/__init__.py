@@ -11,6 +11,8 @@ margin of practical equivalence, heavy tails, the answer by factor, fronts of er
   factors.py      the answer by factor: each sampler at its best filter and radius, the leading samplers and
                   families, each filter at its best radius
   fronts.py       strict Pareto fronts of error against time, per scene and across scenes; cost set by spp
+  sizes.py        two studies of the same scenes at two image sizes on what both hold: the answer at each
+                  size, the rank agreement of the methods (Spearman), what moves with size
   bootstrap.py    the seeded bootstrap of a median over scenes
   flags.py        why a flagged row is flagged: unstable or reference-limited
   ties.py         the standard error of a paired or independent difference and tie groups (the motion section)
