@@ -18,6 +18,13 @@
                  ["flip", "FLIP map vs T"]];
   const DIMS = ["sampler", "spp", "filter", "radius"], VIEW = 384;
   window.ALIASLAB_VIEWER = {state: S, data: data};
+  // select(id[, mode, region]): shows a configuration (the tests; a link to a method); false when it is not held
+  window.ALIASLAB_VIEWER.select = (id, mode, region) => {
+    if (!S.scene || !cfgOf(id)) return false;
+    S.note = "";
+    S.cfg = id; if (mode) S.mode = mode; if (region && region !== S.region) { S.region = region; S.zoom = 0; }
+    draw(); return true;
+  };
   window.ALIASLAB_VIEWER_ADD = function (d) {  // rows come as arrays in the order of d.rowColumns
     for (const c of d.configs)
       for (const t in c.rows) c.rows[t] = Object.fromEntries(d.rowColumns.map((k, i) => [k, c.rows[t][i]]));
@@ -109,11 +116,14 @@
     S.pending = null; S.scene = scene;
     const d = D();
     S.target = d.primary;
-    const low = d.levels[0], a = d.configs.filter((c) => c.sets.includes("A") && c.spp === low);
-    const pick = (s) => a.find((c) => c.sampler === s);
-    S.cfg = (pick("jittered") || a[0] || d.configs[0]).id;
-    S.pins = ["uniform", "sobol"].map(pick).filter((c) => c && c.id !== S.cfg).map((c) => c.id);
-    S.seed = 0; S.zoom = 0;
+    if (d.default && cfgOf(d.default.cfg)) {  // the answer's default view (export.py: answer.default_view)
+      S.cfg = d.default.cfg; S.target = d.default.target || d.primary;
+      S.pins = d.default.pins.filter((id) => cfgOf(id) && id !== S.cfg);
+    } else {
+      const low = d.levels[0], a = d.configs.filter((c) => c.spp === low);
+      S.cfg = (a.find((c) => c.sampler === "jittered") || a[0] || d.configs[0]).id; S.pins = [];
+    }
+    S.seed = 0; S.zoom = 0; S.note = "";
     buildButtons(); draw();
   }
 
@@ -129,10 +139,21 @@
     if (best) { S.cfg = best.id; draw(); }
   }
 
-  function step(dim, by) {
-    const vals = [...new Set(D().configs.map((c) => c[dim]))].sort((a, b) => (typeof a === "number" ? a - b : a < b ? -1 : 1));
-    const i = vals.findIndex((v) => String(v) === String(cur()[dim]));
-    choose(dim, vals[(i + by + vals.length) % vals.length]);
+  function step(dim, by) {  // filter and radius keep the sampler and spp: when they cannot, the status says why
+    const c = cur(), keep = dim === "sampler" || dim === "spp" ? [] : ["sampler", "spp"];
+    const pool = D().configs.filter((x) => keep.every((k) => String(x[k]) === String(c[k])));
+    const vals = [...new Set(pool.map((x) => x[dim]))].sort((a, b) => (typeof a === "number" ? a - b : a < b ? -1 : 1));
+    if (vals.length < 2) {
+      S.note = `${c.sampler} at ${c.spp} spp is held with this ${dim} only (the viewer holds the methods the answer ` +
+        `names: ${c.filter} r=${c.radius} is this sampler's); pick another ${dim} with the buttons to change the sampler too.`;
+      draw(); return;
+    }
+    S.note = "";
+    const i = vals.findIndex((v) => String(v) === String(c[dim]));
+    const v = vals[(i + by + vals.length) % vals.length];
+    if (!keep.length) { choose(dim, v); return; }
+    const next = pool.filter((x) => String(x[dim]) === String(v));
+    S.cfg = (next.find((x) => x.filter === c.filter || x.radius === c.radius) || next[0]).id; draw();
   }
 
   function buttonRow(label, items, onClick) {
@@ -140,7 +161,7 @@
     row.appendChild(el("span", {class: "alv-label"}, label));
     for (const [value, text] of items) {
       const b = el("button", {type: "button", "data-value": String(value)}, text);
-      b.onclick = () => { S.engaged = true; onClick(value); };
+      b.onclick = () => { S.engaged = true; S.note = ""; onClick(value); };
       row.appendChild(b);
     }
     return row;
@@ -178,7 +199,7 @@
   }
 
   function imageId(c) {  // the shown configuration image id (seed S.seed where rendered, else seed 0) and its seed
-    const seed = c.seeds.includes(S.seed) && S.region === "crop" ? S.seed : 0;
+    const seed = c.seeds.includes(S.seed) && S.region === "crop" ? S.seed : c.seeds[0];
     return [S.region === "crop" ? c.crop[String(seed)] : c.whole, seed];
   }
 
@@ -196,19 +217,29 @@
   }
 
   async function panelData(c) {
-    const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region], r = d.refs[c.ref][S.region];
+    const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region];
+    const r = c.ref && d.refs[c.ref] ? d.refs[c.ref][S.region] : null;
     const why = S.region === "whole" ? "whole image not stored for this one" : "crop not stored for this one";
     if (!id || !t) return {missing: true, seed: seed, why: why};
     if (S.mode === "ref" && !r) return {missing: true, seed: seed, why: "own reference not stored"};
-    const f = S.region === "crop" && c.flip ? c.flip[S.target] : null;  // FLIP maps: seed 0, crop only
-    if (S.mode === "flip" && !f) return {missing: true, seed: seed, why: "FLIP maps: the crop only"};
+    // FLIP maps (seed 0): the primary target's crop in the first file, every whole map in the second (cropped here)
+    const fc = S.region === "crop" && c.flip ? c.flip[S.target] : null, fw = c.flipWhole ? c.flipWhole[S.target] : null;
+    const wantFlip = S.mode === "flip" || fc;
+    if (S.mode === "flip" && !fc && !fw) return {missing: true, seed: seed, why: "no FLIP map stored for this one"};
     try {
       const img = await values(id);
-      return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: f ? await values(f) : null,
-              seed: seed};
+      const flip = !wantFlip ? null : fc ? await values(fc) : fw ? (S.region === "crop" ? cropOf(await values(fw)) : await values(fw)) : null;
+      return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: flip, seed: seed};
     } catch (err) {
       return {missing: true, seed: seed, why: String(err.message || err)};
     }
+  }
+
+  function cropOf(im) {  // the crop window of a whole image's values
+    const k = D().crop, v = new Float32Array(k.size * k.size * im.c);
+    for (let y = 0; y < k.size; ++y)
+      v.set(im.v.subarray(((k.y + y) * im.w + k.x) * im.c, ((k.y + y) * im.w + k.x + k.size) * im.c), y * k.size * im.c);
+    return {w: k.size, h: k.size, c: im.c, v: v, step: im.step};
   }
 
   async function draw() {
@@ -222,18 +253,25 @@
         if (dim === "seed") b.disabled = S.region !== "crop" || !c.seeds.includes(Number(b.dataset.value));
       }
     }
-    const shown = [S.cfg, ...S.pins.filter((p) => p !== S.cfg)];
+    const others = S.pins.filter((p) => p !== S.cfg);
+    if (!others.length) S.ab = false;
+    // A/B flicker (key b): the first panel shows the first pinned method in place of the current one
+    const shown = [S.ab ? others[0] : S.cfg, ...others.slice(S.ab ? 1 : 0)];
     const panels = $(".alv-panels");
     const all = await Promise.all(shown.map((id) => panelData(cfgOf(id))));
     panels.textContent = "";
     const n = S.region === "crop" ? d.crop.size : d.width;
     if (!S.zoom) { S.zoom = VIEW / n; S.ox = 0; S.oy = 0; }
     all.forEach((p, i) => panels.appendChild(panel(cfgOf(shown[i]), p, scale, i === 0)));
+    if (others.length) panels.firstChild.dataset.ab = S.ab ? "B" : "A";
+    const abCap = panels.firstChild.querySelector("figcaption b");
+    if (others.length && abCap) abCap.textContent = (S.ab ? "B: " : "A: ") + abCap.textContent + " (b flips A/B in place)";
     colourBar(scale);
     const crop = d.crop;
-    $(".alv-status").textContent = (S.region === "crop" ? `crop ${crop.size} x ${crop.size} at (${crop.x}, ${crop.y}): ${crop.how}`
-      : `whole image ${d.width} x ${d.height}, seed 0 (the whole images are loaded on demand, from ${d.wholeFile})`) + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
-      "t target, 1-5 show, space next seed, a play, c crop/whole, p pin, x clear pins, + - zoom, 0 reset; drag to pan, wheel to zoom.";
+    $(".alv-status").textContent = (S.note ? S.note + " " : "") + (S.region === "crop" ? `crop ${crop.size} x ${crop.size} at (${crop.x}, ${crop.y}): ${crop.how}`
+      : `whole image ${d.width} x ${d.height}, seed 0 (the whole images are loaded on demand, from ${d.wholeFile})`) +
+      (d.default ? `. Opened on ${d.default.why}` : "") + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
+      "t target, 1-5 show, space next seed, a play, c crop/whole, p pin, x clear pins, b A/B flicker with the first pin, + - zoom, 0 reset; drag to pan, wheel to zoom.";
     if (S.hover) readout(S.hover[0], S.hover[1]);
   }
 
@@ -271,8 +309,8 @@
     fig.appendChild(cv);
     const row = c.rows[S.target] || {};
     const cap = el("figcaption");
-    cap.appendChild(el("b", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
-    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? " (only seed 0 rendered)" : "";
+    cap.appendChild(el("b", {}, c.sets.includes("exr") ? `${c.sampler} (your EXR)` : `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
+    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? ` (only seed ${p.seed} held)` : "";
     cap.appendChild(el("span", {class: "alv-seed"}, ` seed ${S.mode === "flip" ? 0 : p.seed}` + seedNote));
     const dl = el("div", {class: "alv-values"});
     const item = (col, label, extra) => {
@@ -282,11 +320,15 @@
       if (extra) dl.appendChild(document.createTextNode(extra));
     };
     dl.appendChild(document.createTextNode(`against ${S.target}: `));
-    item("mse_target", "mse_target"); item("mse_target_se", " \u00b1"); dl.appendChild(el("br"));
+    item("mse_target", "mse_target");
+    if (row.deterministic) dl.appendChild(el("span", {class: "alv-det"}, " (deterministic: one image, no standard error)"));
+    else item("mse_target_se", " \u00b1");
+    dl.appendChild(el("br"));
     item("aliasing", "aliasing"); item("noise", " noise"); item("blur", " blur"); item("cross", " cross");
     dl.appendChild(el("br")); item("flip", "FLIP"); item("cpu_ms", " cpu ms"); item("flagged", " flagged");
-    item("deterministic", " deterministic");
     cap.appendChild(dl);
+    if (c.why && c.why.length) cap.appendChild(el("div", {class: "alv-why", title: c.why.join("; ")},
+      c.why[0] + (c.why.length > 1 ? ` (+${c.why.length - 1} more reasons: hover)` : "")));
     cap.appendChild(el("div", {class: "alv-readout"}, "point at a pixel for its value"));
     fig.appendChild(cap);
     return fig;
@@ -366,7 +408,7 @@
       t: () => { const ts = D().targets; S.target = ts[(ts.indexOf(S.target) + 1) % ts.length]; draw(); },
       " ": () => { S.seed = (S.seed + 1) % Math.max(...D().configs.map((c) => c.seeds.length)); draw(); },
       a: togglePlay, c: () => { S.region = S.region === "crop" ? "whole" : "crop"; S.zoom = 0; draw(); },
-      p: pinCurrent, x: () => { S.pins = []; draw(); }, "+": () => zoom(1.25), "=": () => zoom(1.25), "-": () => zoom(0.8),
+      p: pinCurrent, x: () => { S.pins = []; draw(); }, b: () => { S.ab = !S.ab; draw(); }, "+": () => zoom(1.25), "=": () => zoom(1.25), "-": () => zoom(0.8),
       "0": () => { S.zoom = 0; draw(); },
       "1": () => { S.mode = "image"; draw(); }, "2": () => { S.mode = "ref"; draw(); },
       "3": () => { S.mode = "target"; draw(); }, "4": () => { S.mode = "error"; draw(); },
