@@ -89,9 +89,12 @@ class AdaptiveSection(unittest.TestCase):
                 for q in ("ratio", "ratio_se", "z", "noise_ratio", "aliasing", "aliasing_se"):
                     self.assertTrue(math.isclose(g[q], w[q], rel_tol=1e-9, abs_tol=1e-15), (k, q, g[q], w[q]))
 
-    def test_the_quick_study_has_every_verdict(self):
+    def test_the_quick_study_has_verdicts_of_the_rule(self):
+        # since the adaptive samplers continue their base's own sequence no cell of the quick study loses
+        # (docs/adaptive.md); it has wins and ties, and only the rule's three words
         words = [w["verdict"] for w in recompute(COMMITTED, "box:0.5").values()]
-        for v in ("wins", "loses", "tied"):
+        self.assertLessEqual(set(words), {"wins", "loses", "tied"})
+        for v in ("wins", "tied"):
             self.assertIn(v, words)
 
     def test_verdict_rule(self):
@@ -152,7 +155,10 @@ class AdaptiveSection(unittest.TestCase):
                 page = adaptive.adaptive_section(context(path, tmp, os.path.join(tmp, "none")))
                 self.assertEqual(bool(page), expect)
                 self.assertNotIn("<img", page)
-                self.assertEqual("in one pixel" in page, columns is everything and expect)
+                # the sentence on where the samples went is written for losing cells that moved samples
+                moved_loser = any(w["verdict"] == "loses" and w["max_spp"] > k[1]
+                                  for k, w in recompute(path, "box:0.5").items()) if expect and columns is everything else False
+                self.assertEqual("in one pixel" in page, columns is everything and moved_loser)
 
 
 if __name__ == "__main__":

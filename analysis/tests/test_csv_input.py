@@ -160,7 +160,9 @@ class CsvInput(unittest.TestCase):
         if not os.path.exists(path):
             self.skipTest("no results/presented/study.csv")
         df, notes = study_csv.load_study(path)
-        self.assertEqual(len(df), 14040)
+        # one row per scene x sampler x spp x filter at a radius (filter_params) x target
+        self.assertEqual(len(df), df["scene"].nunique() * df["sampler"].nunique() * df["spp"].nunique()
+                         * df["filter_params"].nunique() * df["target"].nunique())
         self.assertEqual(int(df["nonfinite_samples"].sum()), 0)  # every sample of the presented study finite
         # the same study as an older sweep wrote it (before the column existed): loads, the count unknown
         older = os.path.join(self.tmp.name, "older.csv")
@@ -171,7 +173,11 @@ class CsvInput(unittest.TestCase):
             w.writeheader()
             w.writerows(reader)
         df, notes = study_csv.load_study(older)
-        self.assertEqual(len(df), 14040)
+        # one row per scene x sampler x spp x filter at a radius (filter_params) x target, each combination once
+        per = df.groupby(["scene", "sampler", "spp", "filter_params", "target"]).size()
+        self.assertEqual(int(per.max()), 1)
+        self.assertEqual(len(df), df["scene"].nunique() * df["sampler"].nunique() * df["spp"].nunique()
+                         * df["filter_params"].nunique() * df["target"].nunique())
         self.assertTrue(df["nonfinite_samples"].isna().all())  # unknown: the column came later
 
     def test_a_fifo_is_refused_without_blocking(self):

@@ -109,8 +109,10 @@ class CommittedViewerData(unittest.TestCase):
                 self.assertEqual(set(c["flipWhole"]), set(d["targets"]) if c["whole"] else set(), (scene, c["id"]))
                 self.assertEqual(set(c["flip"]), set(d["targets"]), (scene, c["id"]))
                 # the primary target's crop in the first file, the others' and every whole map in the second
+                # (a map equal to one in the first file is stored once, there: the viewer looks there first)
+                either = {**self.whole[scene], **d["images"]}
                 maps = [(d["images"][c["flip"][d["primary"]]], (n, n, 1))] + \
-                    [(self.whole[scene][c["flip"][t]], (n, n, 1)) for t in d["targets"] if t != d["primary"]] + \
+                    [(either[c["flip"][t]], (n, n, 1)) for t in d["targets"] if t != d["primary"]] + \
                     [(self.whole[scene][k], (d["height"], d["width"], 1)) for k in c["flipWhole"].values()]
                 for e, shape in maps:
                     self.assertEqual((e["bits"], e["lo"], e["hi"], e["c"]), (8, 0.0, 1.0, 1))
@@ -151,9 +153,13 @@ class CommittedViewerData(unittest.TestCase):
     def test_size_budget(self):
         later = {v["whole_file"] for v in self.index["scenes"].values()}
         sizes = {f: os.path.getsize(os.path.join(VIEWER, f)) for f in os.listdir(VIEWER)}
-        first = sum(b for f, b in sizes.items() if f not in later)
-        self.assertLess(first, 1_700_000, "the viewer data loaded with the page (with the teaching strand and the "
-                        "viewer's script) within its share of the page's 5 MB budget")
+        # the page loads the opening scene's file, the teaching strand and the viewer's script; every other
+        # scene's file is loaded when that scene is opened
+        scene_files = {f"{s}.js" for s in self.index["scenes"]}
+        first = max(sizes[f] for f in scene_files) + \
+            sum(b for f, b in sizes.items() if f not in later and f not in scene_files)
+        self.assertLess(first, 1_700_000, "the viewer data loaded with the page (one scene, the teaching strand "
+                        "and the viewer's script) within its share of the page's 5 MB budget")
         self.assertLess(sum(sizes[f] for f in later), WHOLE_BUDGET, "the whole images, loaded on demand")
 
     def test_the_committed_script_is_the_packages(self):
