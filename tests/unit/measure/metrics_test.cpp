@@ -11,6 +11,7 @@
 
 #include "core/hash.h"
 #include "measure/metrics.h"
+#include "support/pixel_fields.h"
 
 using namespace aliaslab;
 
@@ -30,11 +31,7 @@ Image referenceImage() {
 double bias(int x, int y, int c) { return 0.1 * std::sin(0.37 * x + 1.3 * c) * std::cos(0.23 * y); }
 
 double meanBiasSquared() {
-  double s = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) s += bias(x, y, c) * bias(x, y, c);
-  return s / kN;
+  return aliaslab::testing::meanOverPixels(W, H, [](int x, int y, int c) { return bias(x, y, c) * bias(x, y, c); });
 }
 
 // Standard normal from two hashed uniforms (Box-Muller).
@@ -235,11 +232,7 @@ Decomposed decomposedImages(double sigma) {
 
 template <class F>
 double meanOver(F f) {
-  double s = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) s += f(x, y, c);
-  return s / kN;
+  return aliaslab::testing::meanOverPixels(W, H, f);
 }
 }  // namespace
 
