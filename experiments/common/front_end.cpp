@@ -10,7 +10,7 @@
 namespace aliaslab {
 
 std::string FrontEnd::flag(const std::string& key) const {
-  const auto it = flags.find(neutralKey(key));
+  const auto it = flags.find(key);
   return it == flags.end() ? key : it->second;
 }
 

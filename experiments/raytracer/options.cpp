@@ -247,7 +247,6 @@ void validateRaytracerOptions(const CLI::App& app, const RaytracerOptions& o) {
   requireRegularFile(o.input, "a scene is read from a regular file (-input)");  // a FIFO would block the reader
   if (!fs::is_regular_file(o.input, ec) || ::access(o.input.c_str(), R_OK) != 0)
     throw FileError(o.input, "cannot open the scene file (-input)");
-  (void)app;
 }
 
 }  // namespace aliaslab

@@ -58,31 +58,42 @@ std::string SamplingPlan::describe() const {
   return s + ", first sample per pixel";
 }
 
-SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
-  SamplingPlan plan;
-  auto has = [&](const char* n) { return app.count(std::string("--") + n) > 0; };
+namespace {
 
-  // Sampler: classic flag or --sampler/--spp, default the pixel centre.
-  const std::string classicSampler = chooseOne(app, {"random_samples", "uniform_samples", "jittered_samples"});
-  std::string name = "uniform";
+bool given(const CLI::App& app, const char* name) { return app.count(std::string("--") + name) > 0; }
+
+/// The sampler chosen: a classic flag (its name, or "") or --sampler/--spp, default the pixel centre.
+struct SamplerChoice {
+  std::string classic, name = "uniform";
   int spp = 1;
-  if (!classicSampler.empty()) {
-    if (has("sampler") || has("spp"))
-      throw OptionError(has("sampler") ? "--sampler" : "--spp", "cannot be combined with -" + classicSampler);
-    name = classicSampler.substr(0, classicSampler.find('_'));
-    spp = classicSampler[0] == 'r' ? o.randomSamples : classicSampler[0] == 'u' ? o.uniformSamples : o.jitteredSamples;
-    if (spp < 1) throw OptionError("-" + classicSampler, "needs at least 1 sample per pixel");
-  } else {
-    if (has("sampler")) name = o.sampler;
-    if (has("spp")) spp = o.spp;
-  }
-  const double total = double(o.size[0]) * o.size[1] * std::max(spp, 1);
-  if (total > double(1 << 28))
-    throw OptionError(classicSampler.empty() ? "--spp" : "-" + classicSampler,
-                      "width x height x spp exceeds 2^28 samples (about 7 GB)");
-  plan.source = makeSampleSource(name, spp, o.seed);
+};
 
-  // Filter: classic flag or --filter/--radius/--filter-param.
+SamplerChoice chooseSampler(const CLI::App& app, const RaytracerOptions& o) {
+  auto has = [&](const char* n) { return given(app, n); };
+  SamplerChoice s;
+  s.classic = chooseOne(app, {"random_samples", "uniform_samples", "jittered_samples"});
+  if (!s.classic.empty()) {
+    if (has("sampler") || has("spp"))
+      throw OptionError(has("sampler") ? "--sampler" : "--spp", "cannot be combined with -" + s.classic);
+    s.name = s.classic.substr(0, s.classic.find('_'));
+    s.spp = s.classic[0] == 'r' ? o.randomSamples : s.classic[0] == 'u' ? o.uniformSamples : o.jitteredSamples;
+    if (s.spp < 1) throw OptionError("-" + s.classic, "needs at least 1 sample per pixel");
+  } else {
+    if (has("sampler")) s.name = o.sampler;
+    if (has("spp")) s.spp = o.spp;
+  }
+  const double total = double(o.size[0]) * o.size[1] * std::max(s.spp, 1);
+  if (total > double(1 << 28))
+    throw OptionError(s.classic.empty() ? "--spp" : "-" + s.classic,
+                      "width x height x spp exceeds 2^28 samples (about 7 GB)");
+  return s;
+}
+
+/// Sets plan.filter from a classic flag or --filter/--radius/--filter-param (or the pixel-area default when
+/// several samples come with no filter); returns the classic filter flag given, or "".
+std::string chooseFilter(const CLI::App& app, const RaytracerOptions& o, const SamplerChoice& sampler,
+                         SamplingPlan& plan) {
+  auto has = [&](const char* n) { return given(app, n); };
   const std::string classicFilter = chooseOne(app, {"box_filter", "tent_filter", "gaussian_filter"});
   FilterParams params = parseFilterParams(o.filterParams);
   if (!classicFilter.empty()) {
@@ -109,15 +120,21 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     plan.filter = makeFilter(o.filter, radius, params);
   } else if (has("radius") || has("filter-param")) {
     throw OptionError(has("radius") ? "--radius" : "--filter-param", "needs --filter");
-  } else if (classicSampler.empty() && spp > 1 && !has("reconstruction")) {
+  } else if (sampler.classic.empty() && sampler.spp > 1 && !has("reconstruction")) {
     // several samples and no filter: the pixel-area average (box 0.5, weighted), not the first sample
     plan.filter = makeFilter("box", 0.5f);
     plan.defaultFilter = true;
   }
+  return classicFilter;
+}
 
-  // Reconstruction: explicit, else classic for classic flags, else weighted.
+/// Sets plan.mode: explicit, else classic for classic flags, else weighted; refuses the combinations that
+/// cannot work and adds the filters the modes need.
+void chooseReconstruction(const CLI::App& app, const RaytracerOptions& o, const SamplerChoice& sampler,
+                          const std::string& classicFilter, SamplingPlan& plan) {
+  auto has = [&](const char* n) { return given(app, n); };
   if (has("reconstruction")) plan.mode = parseReconMode(o.reconstruction);
-  else if (!classicSampler.empty() || !classicFilter.empty()) plan.mode = ReconMode::Classic;
+  else if (!sampler.classic.empty() || !classicFilter.empty()) plan.mode = ReconMode::Classic;
   if (!plan.filter && has("reconstruction") && plan.mode != ReconMode::Supersample)
     throw OptionError("--reconstruction", "'" + o.reconstruction + "' needs a filter (--filter or a classic filter flag)");
   if (plan.source->adaptive() && (plan.mode == ReconMode::Supersample || plan.mode == ReconMode::ImportanceSampled))
@@ -129,20 +146,30 @@ SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
     if (plan.filter)  // (it would be silently ignored)
       throw OptionError("--reconstruction", "supersample uses its own filters (3x3 binomial, then a box down); drop " +
                                                 std::string(classicFilter.empty() ? "--filter" : "-" + classicFilter));
-    const int k = static_cast<int>(std::lround(std::sqrt(double(spp))));
-    if (k * k != spp)
+    const int k = static_cast<int>(std::lround(std::sqrt(double(sampler.spp))));
+    if (k * k != sampler.spp)
       throw OptionError("--spp", "supersample reconstruction needs a square sample count k*k, got " +
-                                     std::to_string(spp));
+                                     std::to_string(sampler.spp));
     if (!plan.filter) plan.filter = makeFilter("box", 0.5f);  // ignored by Supersample
   }
   if (plan.source->adaptive() && !plan.filter)
     plan.filter = makeFilter("box", 0.5f);  // each pixel's (area-weighted) mean
-  if (!classicSampler.empty() && spp > 1 && !plan.filter)
-    plan.note = "-" + classicSampler + " " + std::to_string(spp) +
+  if (!sampler.classic.empty() && sampler.spp > 1 && !plan.filter)
+    plan.note = "-" + sampler.classic + " " + std::to_string(sampler.spp) +
                 " without a filter keeps each pixel's first sample (the course's rule); add -box_filter 0.5 "
                 "to average the samples over the pixel";
   if (!o.renderFilter.empty() && !plan.filter)
     throw OptionError("-render_filter", "needs a filter (-box_filter, -tent_filter, -gaussian_filter or --filter)");
+}
+
+}  // namespace
+
+SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o) {
+  SamplingPlan plan;
+  const SamplerChoice sampler = chooseSampler(app, o);
+  plan.source = makeSampleSource(sampler.name, sampler.spp, o.seed);
+  const std::string classicFilter = chooseFilter(app, o, sampler, plan);
+  chooseReconstruction(app, o, sampler, classicFilter, plan);
   return plan;
 }
 

@@ -51,11 +51,6 @@ class OptionError : public InputError {
   std::string message_;
 };
 
-/// A key without leading dashes. Transitional: lib/filter, lib/sampling,
-/// lib/render and lib/film still throw dashed keys ("--sampler"); comparing
-/// neutral forms lets their conversion be a change of literals only.
-inline std::string neutralKey(const std::string& key) { return key.substr(std::min(key.find_first_not_of('-'), key.size())); }
-
 /// Returns make(); an OptionError about key `from` (e.g. a factory's
 /// "sampler") is rethrown under the caller's key `to` (its list "samplers"),
 /// so the error names the parameter the caller was given.
@@ -64,7 +59,7 @@ auto rekeyOption(const std::string& from, const std::string& to, Make&& make) ->
   try {
     return make();
   } catch (const OptionError& e) {
-    if (neutralKey(e.key()) != from) throw;
+    if (e.key() != from) throw;
     throw OptionError(to, e.message());
   }
 }

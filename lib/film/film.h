@@ -12,6 +12,11 @@
 //
 // Reconstruction turns a buffer into an Image and counts what went wrong
 // (ReconStats). The modes are defined in docs/science.md ("Reconstruction").
+// The weighted average's readable definition, sum f(x_k - p) L_k / sum f(x_k - p)
+// over every sample in double (pbrt-v4's film.h and Nori's ImageBlock::put are
+// the models), is reconstructDefinition (film/film_definition.h): the
+// reference every fast path below (reconstruct's splat, the Accumulator) is
+// tested against.
 //
 // Degenerate outcomes (every mode; no NaN ever reaches an Image):
 // - a sample with a non-finite position or radiance is skipped and counted

@@ -102,10 +102,9 @@ ExpectedSlope expectedSlope(const std::string& s, const Integrand& f) {
   if (s == "jittered") return {disc ? -0.75 : -1.0, "docs/science.md"};
   if (s == "sobol" || s == "pmj02") return {disc ? -0.75 : -1.5, "docs/science.md (powers of two)"};
   // Literature values for the other stratified patterns.
-  if (s == "multijittered" || s == "multijitter" || s == "cmj" || s == "correlated-multijittered" ||
-      s == "correlated_multijittered")
+  if (s == "multijittered" || s == "cmj")
     return {disc ? -0.75 : -1.0, "literature: as jittered (Christensen et al. 2018)"};
-  if (s == "nrooks" || s == "n-rooks" || s == "latin")
+  if (s == "nrooks")
     return {-0.5, "literature: Latin hypercube, -0.5 for non-additive f (Owen 1997)"};
   if (s == "uniform") return {{}, "no stated expectation (deterministic grid: one error, no spread)"};
   return {{}, "no stated expectation"};

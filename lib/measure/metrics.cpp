@@ -96,6 +96,49 @@ void MetricAccumulator::add(const Image& image) {
   gram_.push_back(std::move(row));
 }
 
+TargetMetrics MetricAccumulator::targetMetrics(size_t j) const {
+  const size_t N = mean_.size();
+  const double n = static_cast<double>(N);
+  const double k = count_;
+  const int K = count_;
+  const float* g = reference_.mean->data();
+  const float* dg = reference_.halfDiff ? reference_.halfDiff->data() : nullptr;
+  const Image& T = *targets_[j].mean;
+  const float* t = T.data();
+  const float* dt = targets_[j].halfDiff ? targets_[j].halfDiff->data() : nullptr;
+  const bool halves = dg || dt;
+  double blur = 0, cross = 0, varT = 0, varDelta = 0, covariance = 0;
+  std::vector<double> xt, xb;  // 2 (m - T) D_T and 2 (G - T)(D_G - D_T): reference parts of mse_target, blur
+  if (dt) xt.resize(N);
+  if (halves) xb.resize(N);
+  for (size_t i = 0; i < N; ++i) {
+    const double gt = static_cast<double>(g[i]) - t[i];
+    blur += gt * gt;
+    cross += (mean_[i] - g[i]) * gt;
+    if (!halves) continue;
+    const double a = half(dg, i), b = half(dt, i);
+    varT += b * b, varDelta += (a - b) * (a - b), covariance += a * (a - b);
+    xb[i] = 2 * gt * (a - b);
+    if (dt) xt[i] = 2 * (mean_[i] - t[i]) * b;
+  }
+  TargetMetrics tm;
+  tm.refVar = varT / n;
+  const std::vector<double>& sse = sseTarget_[j];
+  double sseSum = 0;
+  for (int a = 0; a < K; ++a) sseSum += sse[a];
+  tm.mseTarget = sseSum / (n * k) - tm.refVar;
+  for (int a = 0; a < K; ++a) tm.perSeed.push_back(sse[a] / n - tm.refVar);
+  tm.blur = blur / n - varDelta / n;
+  tm.cross = 2 * cross / n + 2 * covariance / n;
+  std::vector<double> targetOut(K);
+  for (int a = 0; a < K; ++a) targetOut[a] = (sseSum - sse[a]) / (n * (k - 1));
+  const double targetSeed = jackknifeSe(targetOut);
+  const double refT = dt ? referencePart(xt, T, n, targets_[j].radius) : 0.0;
+  tm.mseTargetSe = std::sqrt(targetSeed * targetSeed + refT);
+  tm.blurSe = halves ? std::sqrt(referencePart(xb, T, n, std::max(reference_.radius, targets_[j].radius))) : 0.0;
+  return tm;
+}
+
 Metrics MetricAccumulator::result() const {
   if (count_ < 2) throw std::logic_error("MetricAccumulator::result: needs at least 2 images");
   const size_t N = mean_.size();
@@ -142,42 +185,7 @@ Metrics MetricAccumulator::result() const {
   m.aliasingSe = std::sqrt(aliasingSeed * aliasingSeed + refG);  // NaN stays NaN (K < 4)
   m.noiseSe = pairStatisticSe(noisePairs);
 
-  for (size_t j = 0; j < targets_.size(); ++j) {
-    const Image& T = *targets_[j].mean;
-    const float* t = T.data();
-    const float* dt = targets_[j].halfDiff ? targets_[j].halfDiff->data() : nullptr;
-    const bool halves = dg || dt;
-    double blur = 0, cross = 0, varT = 0, varDelta = 0, covariance = 0;
-    std::vector<double> xt, xb;  // 2 (m - T) D_T and 2 (G - T)(D_G - D_T): reference parts of mse_target, blur
-    if (dt) xt.resize(N);
-    if (halves) xb.resize(N);
-    for (size_t i = 0; i < N; ++i) {
-      const double gt = static_cast<double>(g[i]) - t[i];
-      blur += gt * gt;
-      cross += (mean_[i] - g[i]) * gt;
-      if (!halves) continue;
-      const double a = half(dg, i), b = half(dt, i);
-      varT += b * b, varDelta += (a - b) * (a - b), covariance += a * (a - b);
-      xb[i] = 2 * gt * (a - b);
-      if (dt) xt[i] = 2 * (mean_[i] - t[i]) * b;
-    }
-    TargetMetrics tm;
-    tm.refVar = varT / n;
-    const std::vector<double>& sse = sseTarget_[j];
-    double sseSum = 0;
-    for (int a = 0; a < K; ++a) sseSum += sse[a];
-    tm.mseTarget = sseSum / (n * k) - tm.refVar;
-    for (int a = 0; a < K; ++a) tm.perSeed.push_back(sse[a] / n - tm.refVar);
-    tm.blur = blur / n - varDelta / n;
-    tm.cross = 2 * cross / n + 2 * covariance / n;
-    std::vector<double> targetOut(K);
-    for (int a = 0; a < K; ++a) targetOut[a] = (sseSum - sse[a]) / (n * (k - 1));
-    const double targetSeed = jackknifeSe(targetOut);
-    const double refT = dt ? referencePart(xt, T, n, targets_[j].radius) : 0.0;
-    tm.mseTargetSe = std::sqrt(targetSeed * targetSeed + refT);
-    tm.blurSe = halves ? std::sqrt(referencePart(xb, T, n, std::max(reference_.radius, targets_[j].radius))) : 0.0;
-    m.targets.push_back(std::move(tm));
-  }
+  for (size_t j = 0; j < targets_.size(); ++j) m.targets.push_back(targetMetrics(j));
   return m;
 }
 

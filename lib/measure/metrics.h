@@ -81,6 +81,9 @@ class MetricAccumulator {
   Image noiseMap() const;
 
  private:
+  /// Target j's terms (mse_target, blur, cross) and their standard errors, for result().
+  TargetMetrics targetMetrics(size_t j) const;
+
   RefEstimate reference_;
   std::vector<RefEstimate> targets_;
   int count_ = 0;

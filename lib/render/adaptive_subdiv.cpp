@@ -136,6 +136,63 @@ void sortKeys(std::vector<Key>& keys, std::vector<Key>& scratch, std::vector<uin
   std::swap(keys, scratch);
 }
 
+/// The difference of each cell of `level` (level d of 0..depth; 0 at the last): the spread of its samples, each
+/// pixel's at level 0, below it the 4 children of each split cell in one pass. byPixel, order: scratch.
+void levelDifferences(const Work& w, const std::vector<Cell>& level, int d, int depth, std::vector<double>& diff,
+                      std::vector<uint32_t>& byPixel, std::vector<uint32_t>& order) {
+  diff.assign(level.size(), 0.0);
+  if (d == 0 && d < depth) {
+    // a pixel's cell holds every sample of the pixel (Work clamps each position inside its pixel, whose bounds
+    // are floats on films narrower than 2^24 pixels): nothing to test there
+    const bool whole = w.width() < (1 << 24) && w.pixels() / w.width() < (1 << 24);
+    for (size_t k = 0; k < level.size(); ++k)
+      diff[k] = whole ? spreadWhere(w, level[k].p, [](const FilmSample&) { return true; }) : spreadIn(w, level[k]);
+  } else if (d < depth) {
+    // below the pixel the level is made of the 4 children of each split cell, side by side, in the order of
+    // the splits; visited in pixel order (counting sort), the 4 in one pass over the pixel's samples, so a
+    // pixel's samples are read while in cache, not once per cell in the order of the splits
+    const size_t groups = level.size() / 4;
+    byPixel.assign(static_cast<size_t>(w.pixels()) + 1, 0);
+    order.resize(groups);
+    for (size_t g = 0; g < groups; ++g) ++byPixel[static_cast<size_t>(level[4 * g].p) + 1];
+    for (long long p = 0; p < w.pixels(); ++p) byPixel[p + 1] += byPixel[p];
+    for (size_t g = 0; g < groups; ++g) order[byPixel[level[4 * g].p]++] = static_cast<uint32_t>(g);
+    for (uint32_t g : order) spreadInQuadrants(w, &level[4 * size_t(g)], &diff[4 * size_t(g)]);
+  }
+}
+
+/// The fresh samples of each leaf: what every leaf keeps, and what is left of `free` in proportion to the share
+/// each leaf's fresh mean carries (largest remainders; ties in the order of the leaves), never past the budget.
+std::vector<int> freshCounts(const std::vector<Cell>& leaves, long long free, double alpha0, double alphaBelow) {
+  const auto alphaOf = [&](const Cell& c) { return c.level == 0 ? alpha0 : alphaBelow; };
+  double total = 0;
+  for (const Cell& c : leaves) total += c.mass * (1 - alphaOf(c));
+  std::vector<int> n(leaves.size());
+  for (size_t k = 0; k < leaves.size(); ++k) n[k] = keep(leaves[k]);
+  std::vector<double> rest(leaves.size());
+  long long given = 0;
+  for (size_t k = 0; k < leaves.size(); ++k) {
+    const double share = static_cast<double>(free) * leaves[k].mass * (1 - alphaOf(leaves[k])) / total;
+    const long long whole = static_cast<long long>(std::floor(share));
+    n[k] += static_cast<int>(whole), given += whole;
+    rest[k] = share - static_cast<double>(whole);
+  }
+  // one more to each of the (free - given) largest remainders, ties to the earlier leaf (a strict order, so the
+  // set is unique): value by value, largest first, each value's leaves in leaf order. A cell's mass, so its share
+  // and remainder, follows from its level: at most depth + 1 values, each a pass over the leaves.
+  long long more = std::clamp<long long>(free - given, 0, static_cast<long long>(leaves.size()));
+  std::vector<double> values;
+  for (double r : rest)
+    if (std::find(values.begin(), values.end(), r) == values.end()) values.push_back(r);
+  std::sort(values.begin(), values.end(), std::greater<>());
+  for (size_t v = 0; more > 0 && v < values.size(); ++v)
+    for (size_t k = 0; more > 0 && k < leaves.size(); ++k)
+      if (rest[k] == values[v]) ++n[k], ++given, --more;
+  for (size_t k = 0; given > free && k < n.size(); ++k)  // rounding of the shares: never past the budget
+    if (n[k] > keep(leaves[k])) --n[k], --given;
+  return n;
+}
+
 }  // namespace
 
 void runSubdivision(Work& w, const AdaptiveSampler& a) {
@@ -162,25 +219,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
   level.resize(static_cast<size_t>(w.pixels()));
   for (long long p = 0; p < w.pixels(); ++p) level[p] = {1.0, static_cast<int>(p), 0, 0, 0};
   for (int d = 0; d <= depth && !level.empty(); ++d) {
-    diff.assign(level.size(), 0.0);
-    if (d == 0 && d < depth) {
-      // a pixel's cell holds every sample of the pixel (Work clamps each position inside its pixel, whose bounds
-      // are floats on films narrower than 2^24 pixels): nothing to test there
-      const bool whole = w.width() < (1 << 24) && w.pixels() / w.width() < (1 << 24);
-      for (size_t k = 0; k < level.size(); ++k)
-        diff[k] = whole ? spreadWhere(w, level[k].p, [](const FilmSample&) { return true; }) : spreadIn(w, level[k]);
-    } else if (d < depth) {
-      // below the pixel the level is made of the 4 children of each split cell, side by side, in the order of
-      // the splits; visited in pixel order (counting sort), the 4 in one pass over the pixel's samples, so a
-      // pixel's samples are read while in cache, not once per cell in the order of the splits
-      const size_t groups = level.size() / 4;
-      byPixel.assign(static_cast<size_t>(w.pixels()) + 1, 0);
-      order.resize(groups);
-      for (size_t g = 0; g < groups; ++g) ++byPixel[static_cast<size_t>(level[4 * g].p) + 1];
-      for (long long p = 0; p < w.pixels(); ++p) byPixel[p + 1] += byPixel[p];
-      for (size_t g = 0; g < groups; ++g) order[byPixel[level[4 * g].p]++] = static_cast<uint32_t>(g);
-      for (uint32_t g : order) spreadInQuadrants(w, &level[4 * size_t(g)], &diff[4 * size_t(g)]);
-    }
+    levelDifferences(w, level, d, depth, diff, byPixel, order);
     // a pixel also splits when a neighbour's samples differ: an edge missed by its own 4 is seen
     if (d == 0) diff = dilate(diff, w.width(), static_cast<int>(w.pixels() / w.width()));
     split.clear();
@@ -213,33 +252,7 @@ void runSubdivision(Work& w, const AdaptiveSampler& a) {
     if (!next.empty()) w.trace(requests);
     std::swap(level, next);
   }
-  // fresh samples: what every leaf keeps, and what is left in proportion to the share each leaf's fresh mean
-  // carries (largest remainders; ties in the order of the leaves)
-  double total = 0;
-  for (const Cell& c : leaves) total += c.mass * (1 - alphaOf(c));
-  std::vector<int> n(leaves.size());
-  for (size_t k = 0; k < leaves.size(); ++k) n[k] = keep(leaves[k]);
-  std::vector<double> rest(leaves.size());
-  long long given = 0;
-  for (size_t k = 0; k < leaves.size(); ++k) {
-    const double share = static_cast<double>(free) * leaves[k].mass * (1 - alphaOf(leaves[k])) / total;
-    const long long whole = static_cast<long long>(std::floor(share));
-    n[k] += static_cast<int>(whole), given += whole;
-    rest[k] = share - static_cast<double>(whole);
-  }
-  // one more to each of the (free - given) largest remainders, ties to the earlier leaf (a strict order, so the
-  // set is unique): value by value, largest first, each value's leaves in leaf order. A cell's mass, so its share
-  // and remainder, follows from its level: at most depth + 1 values, each a pass over the leaves.
-  long long more = std::clamp<long long>(free - given, 0, static_cast<long long>(leaves.size()));
-  std::vector<double> values;
-  for (double r : rest)
-    if (std::find(values.begin(), values.end(), r) == values.end()) values.push_back(r);
-  std::sort(values.begin(), values.end(), std::greater<>());
-  for (size_t v = 0; more > 0 && v < values.size(); ++v)
-    for (size_t k = 0; more > 0 && k < leaves.size(); ++k)
-      if (rest[k] == values[v]) ++n[k], ++given, --more;
-  for (size_t k = 0; given > free && k < n.size(); ++k)  // rounding of the shares: never past the budget
-    if (n[k] > keep(leaves[k])) --n[k], --given;
+  const std::vector<int> n = freshCounts(leaves, free, alpha0, alphaBelow);
   requests.clear();
   requests.reserve(leaves.size());
   for (size_t k = 0; k < leaves.size(); ++k) {

@@ -40,6 +40,10 @@ class SceneParser {
   void parseMaterials();
   std::unique_ptr<Material> parseMaterial(const Token& keyword, int index);
   std::unique_ptr<Material> parseProcedural(const Token& keyword, int index);
+  /// A procedural material's optional texture-space Transform { ... } (identity without one).
+  Mat4 parseTextureTransform(const std::string& kind);
+  /// Its two earlier materials (materialIndex k < index), within the nesting and evaluation limits.
+  void parseBlendedMaterials(const Token& keyword, int index, const Material* blend[2]);
   // Objects and transforms (parser_objects.cpp).
   std::unique_ptr<Group> parseGroup(int depth);
   std::unique_ptr<Object> parseObject(int depth);

@@ -67,10 +67,8 @@ std::unique_ptr<Material> SceneParser::parseMaterial(const Token& keyword, int i
   return makePhong(p);
 }
 
-std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int index) {
-  const std::string& kind = keyword.text;
-
-  // Optional texture-space transform: q = M p with M = op1 * op2 * ...
+Mat4 SceneParser::parseTextureTransform(const std::string& kind) {
+  // q = M p with M = op1 * op2 * ...
   Mat4 m = Mat4::Identity();
   if (t_.peek().text == "Transform") {
     t_.next("Transform");
@@ -82,12 +80,14 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
                           "Rotate, Matrix) or '}' in the Transform of " + kind + ", found " +
                               TokenStream::describe(close));
   }
+  return m;
+}
 
-  // Two earlier materials.
-  const Material* blend[2];
+void SceneParser::parseBlendedMaterials(const Token& keyword, int index, const Material* blend[2]) {
+  const std::string& kind = keyword.text;
   int depth = 1;
   double cost = 0;
-  for (const Material*& mat : blend) {
+  for (int e = 0; e < 2; ++e) {
     t_.expect("materialIndex", "in " + kind);
     const int line = t_.peek().line;
     const int k = t_.integer("materialIndex", -(1 << 30), 1 << 30);
@@ -95,7 +95,7 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
       t_.fail(line, kind + " (material " + std::to_string(index) + "): materialIndex " + std::to_string(k) +
                         (index == 0 ? " is invalid: a procedural material needs two earlier materials"
                                     : " must refer to an earlier material (0.." + std::to_string(index - 1) + ")"));
-    mat = scene_.materials[k].get();
+    blend[e] = scene_.materials[k].get();
     depth = std::max(depth, 1 + materialDepth_.at(k));
     cost += materialCost_.at(k);
   }
@@ -109,6 +109,13 @@ std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int
                               "): blending the same nested material twice doubles the work per level");
   materialDepth_.resize(static_cast<size_t>(index) + 1, 1), materialDepth_[index] = depth;
   materialCost_.resize(static_cast<size_t>(index) + 1, 1), materialCost_[index] = cost;
+}
+
+std::unique_ptr<Material> SceneParser::parseProcedural(const Token& keyword, int index) {
+  const std::string& kind = keyword.text;
+  const Mat4 m = parseTextureTransform(kind);
+  const Material* blend[2];
+  parseBlendedMaterials(keyword, index, blend);
 
   // The pattern's own fields. A frequency multiplies texture coordinates into a phase: beyond 1e6 a float phase
   // keeps no digit of its fraction (and near 3e38 it overflows to infinity, every pixel NaN).

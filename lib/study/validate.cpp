@@ -28,9 +28,7 @@ namespace {
 std::string formatValue(const std::string& s) { return "'" + s + "'"; }
 std::string formatValue(int v) { return std::to_string(v); }
 std::string formatValue(double v) { return formatNumber(v); }
-}  // namespace
 
-namespace {
 // The folders a validation created (deepest last), removed again when a later check fails.
 class NewFolders {
  public:
@@ -60,11 +58,9 @@ class NewFolders {
   std::vector<fs::path> made_;
   bool keep_ = false;
 };
-}  // namespace
 
-StudyPlan validateStudy(const StudyConfig& c) {
-  StudyPlan plan;
-  // Lists and numbers.
+/// The lists and numbers of the configuration, in the order the user reads them.
+void checkListsAndNumbers(const StudyConfig& c) {
   if (c.samplers.empty()) throw OptionError("samplers", "needs at least one sampler");
   if (c.filters.empty()) throw OptionError("filters", "needs at least one filter");
   if (c.spp.empty()) throw OptionError("spp", "needs at least one sample count");
@@ -101,7 +97,11 @@ StudyPlan validateStudy(const StudyConfig& c) {
     throw OptionError("size", "expected two positive numbers W H");
   if (c.maxSize < 0) throw OptionError("max-size", "must be >= 0");
   if (c.longSide < 0) throw OptionError("long-side", "must be >= 0");
-  plan.targets = parseTargets(c.targets);
+}
+
+/// No name or number listed twice, no two radii the CSV writes alike, counts and radii in range, every name
+/// known to its factory.
+void checkListEntries(const StudyConfig& c) {
   // A name or number listed twice would make every configuration of it twice (the CSV keeps one).
   auto once = [](const auto& list, const char* key) {
     for (size_t i = 0; i < list.size(); ++i)
@@ -127,6 +127,53 @@ StudyPlan validateStudy(const StudyConfig& c) {
   for (const std::string& s : c.samplers)
     for (int spp : c.spp)
       rekeyOption("sampler", "samplers", [&] { makeSampleSource(s, spp, 0); });
+}
+
+/// Memory for `path` at `size`, before any allocation: the scheduler's bound for the largest group
+/// (rowsPerGroup rows, weightedRows of them weighted averages) at the largest spp, plus the references.
+void checkSceneMemory(const StudyConfig& c, const std::string& path, const SceneSize& size, size_t rowsPerGroup,
+                      size_t weightedRows) {
+  // per reference: its mean and half-difference images and a pass's 4 sums (the filters, the area and the targets)
+  const double references =
+      double(studyFilters(c).size() + c.targets.size() + 1) * (6 * sizeof(float) + 4 * sizeof(double));
+  const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
+  const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
+  const double pixels = double(size.width) * size.height;
+  // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
+  const double image = double(imageBytes(size.width, size.height));
+  // the fixed grid's alignment: the targets' references at every offset, held for the scene
+  const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
+  // (later frames render the targets' references only)
+  const double frames = c.frames > 1 ? double(rowsPerGroup) * c.seeds * c.frames * image +
+                                           (c.frames - 1) * pixels * double(c.targets.size() + 1) * 6 * sizeof(float)
+                                     : 0.0;
+  if (c.frames > 1 && std::min(size.width, size.height) <= 2 * registrationMargin(c.motionDx, c.motionDy))
+    throw OptionError("motion", fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
+                                    std::to_string(size.height) + " has no pixel " +
+                                    std::to_string(registrationMargin(c.motionDx, c.motionDy)) +
+                                    " pixels from its border, where shimmer is measured (the motion per frame "
+                                    "plus the registration's margin, docs/science.md \"Motion\")");
+  const std::string framesWhat =
+      c.frames > 1 ? " with " + std::to_string(c.frames) + " frames (" + std::to_string(rowsPerGroup) + " rows x " +
+                         std::to_string(c.seeds) + " seeds x " + std::to_string(c.frames) +
+                         " frames of images held per group)"
+                   : "";
+  requireMemory(offsets + frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
+                                                 weightedRows, c.seeds)) +
+                    std::max(pixels * references,
+                             referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
+                c.frames > 1 ? "frames" : "size",
+                fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
+                    std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp" + framesWhat);
+}
+
+}  // namespace
+
+StudyPlan validateStudy(const StudyConfig& c) {
+  StudyPlan plan;
+  checkListsAndNumbers(c);
+  plan.targets = parseTargets(c.targets);
+  checkListEntries(c);
   // The groups, every (filter, radius) built here once (the factory names the valid filters).
   rekeyOption("filter", "filters", [&] {
     rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, &plan.notes); });
@@ -142,10 +189,6 @@ StudyPlan validateStudy(const StudyConfig& c) {
                                       return x.mode == ReconMode::WeightedAverage;
                                     }));
   }
-  // per reference: its mean and half-difference images and a pass's 4 sums (the filters, the area and the targets)
-  const double references =
-      double(studyFilters(c).size() + c.targets.size() + 1) * (6 * sizeof(float) + 4 * sizeof(double));
-  const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
   // No file the run writes may be a scene: the CSV, its lock, and per scene its spectra and reference manifest.
   const std::vector<std::string> scenePaths = expandScenePaths(c.scenes);
   std::vector<OutputFile> outputs;
@@ -160,36 +203,7 @@ StudyPlan validateStudy(const StudyConfig& c) {
     requireRegularFile(path, "a scene is read from a regular file");
     if (!fs::is_regular_file(path)) throw FileError(path, "scene file not found");
     const SceneSize size = plan.sceneSizes[path] = checkStudyScene(path, c.width, c.height, c.maxSize, c.longSide);
-    // Memory, before any allocation: the scheduler's bound for the largest group at the largest spp, plus
-    // the references.
-    const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
-    const double pixels = double(size.width) * size.height;
-    // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
-    const double image = double(imageBytes(size.width, size.height));
-    // the fixed grid's alignment: the targets' references at every offset, held for the scene
-    const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
-    // (later frames render the targets' references only)
-    const double frames = c.frames > 1 ? double(rowsPerGroup) * c.seeds * c.frames * image +
-                                             (c.frames - 1) * pixels * double(c.targets.size() + 1) * 6 * sizeof(float)
-                                       : 0.0;
-    if (c.frames > 1 && std::min(size.width, size.height) <= 2 * registrationMargin(c.motionDx, c.motionDy))
-      throw OptionError("motion", fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
-                                      std::to_string(size.height) + " has no pixel " +
-                                      std::to_string(registrationMargin(c.motionDx, c.motionDy)) +
-                                      " pixels from its border, where shimmer is measured (the motion per frame "
-                                      "plus the registration's margin, docs/science.md \"Motion\")");
-    const std::string framesWhat =
-        c.frames > 1 ? " with " + std::to_string(c.frames) + " frames (" + std::to_string(rowsPerGroup) + " rows x " +
-                           std::to_string(c.seeds) + " seeds x " + std::to_string(c.frames) +
-                           " frames of images held per group)"
-                     : "";
-    requireMemory(offsets + frames + double(sweepMemoryBound(c.threads, size.width, size.height, maxSpp, rowsPerGroup,
-                                                   weightedRows, c.seeds)) +
-                      std::max(pixels * references,
-                               referenceMemoryBytes(size.width, size.height, referenceCount, referenceOptions(c))),
-                  c.frames > 1 ? "frames" : "size",
-                  fs::path(path).stem().string() + " at " + std::to_string(size.width) + " x " +
-                      std::to_string(size.height) + " and " + std::to_string(maxSpp) + " spp" + framesWhat);
+    checkSceneMemory(c, path, size, rowsPerGroup, weightedRows);
   }
 
   // Outputs that must be regular files (a FIFO would block, a folder cannot be appended to): refused up front.

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "support/run_process.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -24,22 +26,14 @@ struct ProgramRun {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 const fs::path kTmp = fs::temp_directory_path() / "aliaslab_cli_grammar_test";
 
 ProgramRun run(const std::string& program, const std::string& args) {
   fs::create_directories(kTmp);
   const fs::path out = kTmp / (program + ".out"), err = kTmp / (program + ".err");
-  const std::string cmd = std::string(ALIASLAB_BIN_DIR) + "/" + program + " " + args + " > " + out.string() +
-                          " 2> " + err.string();
-  const int status = std::system(cmd.c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  const auto r = aliaslab::testing::runShell(std::string(ALIASLAB_BIN_DIR) + "/" + program + " " + args,
+                                             out.string(), err.string());
+  return {r.exitCode, r.out, r.err};
 }
 
 /// Every executable: the folders of experiments/ holding a .cpp, but common/ (the shared front end), as
@@ -159,7 +153,7 @@ TEST(CliGrammar, CommaListsWorkInTheStudies) {
   EXPECT_EQ(r.code, 0) << r.err;
   r = run("convergence", "--samplers random,sobol --max-n 16 --realisations 2 --no-chart --out " + out + "/cv");
   EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(slurp(out + "/cv/convergence.csv").find("sobol"), std::string::npos);
+  EXPECT_NE(aliaslab::testing::readText(out + "/cv/convergence.csv").find("sobol"), std::string::npos);
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <string>
 
 #include "core/image.h"
+#include "support/run_process.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
@@ -29,17 +30,10 @@ struct Result {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-class RaytracerTest : public testing::Test {
+class RaytracerTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = std::string(info->test_suite_name()) + "_" + info->name();
     for (char& ch : name)
       if (ch == '/') ch = '_';
@@ -52,10 +46,9 @@ class RaytracerTest : public testing::Test {
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
 
   Result run(const std::string& args) const {
-    const std::string cmd = std::string(ALIASLAB_BIN_DIR) + "/raytracer " + args + " > " + path("stdout.txt") +
-                            " 2> " + path("stderr.txt");
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(path("stdout.txt")), slurp(path("stderr.txt"))};
+    const auto r = aliaslab::testing::runShell(std::string(ALIASLAB_BIN_DIR) + "/raytracer " + args,
+                                               path("stdout.txt"), path("stderr.txt"));
+    return {r.exitCode, r.out, r.err};
   }
 
   fs::path dir_;
@@ -285,7 +278,7 @@ const BadRun kBadRuns[] = {
     {"render_filter_without_filter", "-input " + kScene + " -size 8 8 -render_filter OUT 10", 2, "needs a filter"},
 };
 
-class RaytracerErrors : public RaytracerTest, public testing::WithParamInterface<BadRun> {};
+class RaytracerErrors : public RaytracerTest, public ::testing::WithParamInterface<BadRun> {};
 }  // namespace
 
 TEST_P(RaytracerErrors, ExitsWithMessageAndWritesNothing) {
@@ -305,7 +298,7 @@ TEST_P(RaytracerErrors, ExitsWithMessageAndWritesNothing) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Cases, RaytracerErrors, testing::ValuesIn(kBadRuns),
+INSTANTIATE_TEST_SUITE_P(Cases, RaytracerErrors, ::testing::ValuesIn(kBadRuns),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // An adaptive sampler: exactly w x h x spp primary rays (-stats), the same image for 1 and 3 threads, and

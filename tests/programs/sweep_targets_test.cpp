@@ -23,6 +23,7 @@
 #include "study/presets.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
+#include "support/run_process.h"
 #include "support/scratch_dir.h"
 
 using namespace aliaslab;
@@ -35,15 +36,9 @@ const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_targets_test"); }
 
 int run(const std::string& args, std::string* output = nullptr) {
-  const fs::path log = workDir() / "last_run.log";
-  const int status = std::system((kBin + " " + args + " > " + log.string() + " 2>&1").c_str());
-  if (output) {
-    std::ifstream in(log);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    *output = ss.str();
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const auto r = aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
+  if (output) *output = r.out;
+  return r.exitCode;
 }
 
 size_t col(const std::string& name) { return csvColumn(name); }

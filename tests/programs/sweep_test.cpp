@@ -19,6 +19,7 @@
 #include <set>
 #include <sstream>
 
+#include "support/run_process.h"
 #include "support/scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
@@ -49,15 +50,9 @@ std::string tinyArgs(int threads = 2) {
 }
 
 int run(const std::string& args, std::string* output = nullptr) {
-  const fs::path log = workDir() / "last_run.log";
-  const int status = std::system((kBin + " " + args + " > " + log.string() + " 2>&1").c_str());
-  if (output) {
-    std::ifstream in(log);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    *output = ss.str();
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const auto r = aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
+  if (output) *output = r.out;
+  return r.exitCode;
 }
 
 // The CSV's data lines with the timing columns blanked.

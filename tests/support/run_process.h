@@ -1,6 +1,6 @@
-// Child processes for the bad-input, resume and SIGKILL tests: start a
-// program with posix_spawn in a given working folder, stdout and stderr
-// sent to files, and wait for it, telling a normal exit from a signal.
+// Child processes for the program tests: start a program with posix_spawn in
+// a given working folder, stdout and stderr sent to files, and wait for it,
+// telling a normal exit from a signal; or run a shell command line the same way.
 #pragma once
 #include <fcntl.h>
 #include <signal.h>
@@ -8,6 +8,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -70,6 +71,19 @@ inline ProcessResult runProcess(const std::vector<std::string>& argv, const std:
                                 const std::string& logDir) {
   const std::string out = logDir + "/stdout.txt", err = logDir + "/stderr.txt";
   return waitProcess(spawnProcess(argv, cwd, out, err), out, err);
+}
+
+/// Runs the shell command line `command` (std::system) with stdout sent to the file `out` and stderr to `err`
+/// (to `out` as well when `err` is empty), then reads them; exitCode is -1 unless it exited normally.
+inline ProcessResult runShell(const std::string& command, const std::string& out, const std::string& err = "") {
+  const int status = std::system((command + " > " + out + (err.empty() ? " 2>&1" : " 2> " + err)).c_str());
+  ProcessResult r;
+  r.signaled = WIFSIGNALED(status);
+  r.signal = r.signaled ? WTERMSIG(status) : 0;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = readText(out);
+  r.err = err.empty() ? "" : readText(err);
+  return r;
 }
 
 }  // namespace aliaslab::testing

@@ -1,11 +1,8 @@
 // The grid must return exactly brute force's closest hit (same primitive,
 // bit-identical t) on every ray, and occluded() must agree with both.
-#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
-#include <filesystem>
-
-#include "unit/accel/accel_fixtures.h"
+#include "support/accel_fixtures.h"
 
 namespace aliaslab {
 namespace {
@@ -67,27 +64,11 @@ TEST(Grid, OnlyPlanesAndEmptySceneAreHandled) {
 }
 
 TEST(Grid, EverySceneFileMatchesBruteForceOnCameraAndRandomRays) {
-  const std::filesystem::path dir = std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes";
-  int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".txt") continue;
-    SCOPED_TRACE(entry.path().string());
-    const Scene scene = parseScene(entry.path().string());
-    const auto brute = makeBruteForce(*scene.root);
-    const auto grid = makeGrid(*scene.root);
-    HashRng rng(hashWords(0xca3e, scenes));
-    std::vector<RayQuery> rays;
-    for (int i = 0; i < 1500; ++i)
-      rays.push_back({scene.camera->generateRay(Vec2(1.2f * rng.nextFloat() - 0.1f, 1.2f * rng.nextFloat() - 0.1f)),
-                      scene.camera->tMin()});
-    const BBox box = boundedBox(*scene.root);
-    if (!box.empty()) {
-      const auto more = randomRays(box, 1500, scenes, vertices(*scene.root));
-      rays.insert(rays.end(), more.begin(), more.end());
-    }
-    EXPECT_GT(expectGridMatchesBruteForce(*brute, *grid, rays), 100);
-    ++scenes;
-  }
+  const int scenes = forEachBundledScene([](const Scene& scene, int k) {
+    std::vector<RayQuery> rays = cameraRays(scene, 1500, hashWords(0xca3e, k));
+    appendRandomRays(scene, 1500, k, rays);
+    EXPECT_GT(expectGridMatchesBruteForce(*makeBruteForce(*scene.root), *makeGrid(*scene.root), rays), 100);
+  });
   EXPECT_GE(scenes, 5);
 }
 

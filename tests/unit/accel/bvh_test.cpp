@@ -2,13 +2,11 @@
 // width, so the 4-wide fallback is covered on AVX2 machines too): closest hits equal brute force's (same
 // primitive, bit-identical t) on rays that do not graze an edge, any-hit agrees, closed meshes are watertight,
 // and the two widths return the same hits as each other on every ray, grazing ones included.
-#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <cstdio>
-#include <filesystem>
 
-#include "unit/accel/accel_fixtures.h"
+#include "support/accel_fixtures.h"
 
 namespace aliaslab {
 namespace {
@@ -41,28 +39,18 @@ TEST_P(Bvh, ClosestHitsIdenticalToBruteForceOnRandomScenes) {
 }
 
 TEST_P(Bvh, EverySceneFileMatchesBruteForceOnCameraAndRandomRays) {
-  const std::filesystem::path dir = std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes";
-  int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".txt") continue;
-    SCOPED_TRACE(entry.path().string());
-    const Scene scene = parseScene(entry.path().string());
-    HashRng rng(hashWords(0xb7a, scenes));
-    std::vector<RayQuery> rays;
-    for (int i = 0; i < 3000; ++i)
-      rays.push_back({scene.camera->generateRay(Vec2(1.2f * rng.nextFloat() - 0.1f, 1.2f * rng.nextFloat() - 0.1f)),
-                      scene.camera->tMin()});
+  const int scenes = forEachBundledScene([&](const Scene& scene, int k) {
+    std::vector<RayQuery> rays = cameraRays(scene, 3000, hashWords(0xb7a, k));
     const BBox box = boundedBox(*scene.root);
     if (!box.empty()) {
       // without the axis-aligned rays from a lattice: on these scenes they run exactly along
       // edges and faces (e.g. vase rings at y = 1.99, fence rails at y = 0.5), where the
       // watertight test decides differently from Moller-Trumbore by design
-      for (const RayQuery& q : randomRays(box, 1500, scenes, {}))
+      for (const RayQuery& q : randomRays(box, 1500, k, {}))
         if ((q.ray.direction.array() == 0.f).count() < 2) rays.push_back(q);
     }
     EXPECT_GT(expectGridMatchesBruteForce(*makeBruteForce(*scene.root), *makeBvh(*scene.root, width()), rays), 100);
-    ++scenes;
-  }
+  });
   EXPECT_GE(scenes, 5);
 }
 
@@ -233,26 +221,12 @@ int countDifferences(const Aggregate& a, const Aggregate& b, const std::vector<R
 // brute force cannot referee: axis-aligned rays along edges and faces, rays aimed exactly at vertices.
 TEST(BvhWidthChoice, FourAndEightWideGiveTheSameHitsOnEveryRay) {
   if (!bvhEightWideSupported()) GTEST_SKIP() << "this CPU has no AVX2";
-  const std::filesystem::path dir = std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes";
-  int scenes = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-    if (entry.path().extension() != ".txt") continue;
-    SCOPED_TRACE(entry.path().string());
-    const Scene scene = parseScene(entry.path().string());
-    HashRng rng(hashWords(0x8a8, scenes));
-    std::vector<RayQuery> rays;
-    for (int i = 0; i < 3000; ++i)
-      rays.push_back({scene.camera->generateRay(Vec2(1.2f * rng.nextFloat() - 0.1f, 1.2f * rng.nextFloat() - 0.1f)),
-                      scene.camera->tMin()});
-    const BBox box = boundedBox(*scene.root);
-    if (!box.empty()) {
-      const auto more = randomRays(box, 3000, scenes, vertices(*scene.root));
-      rays.insert(rays.end(), more.begin(), more.end());
-    }
+  const int scenes = forEachBundledScene([](const Scene& scene, int k) {
+    std::vector<RayQuery> rays = cameraRays(scene, 3000, hashWords(0x8a8, k));
+    appendRandomRays(scene, 3000, k, rays);
     const auto four = makeBvh(*scene.root, BvhWidth::Four), eight = makeBvh(*scene.root, BvhWidth::Eight);
     EXPECT_EQ(countDifferences(*four, *eight, rays), 0);
-    ++scenes;
-  }
+  });
   EXPECT_GE(scenes, 5);
   for (uint64_t seed = 0; seed < 4; ++seed) {
     const auto scene = randomScene(seed, seed % 2 == 0);

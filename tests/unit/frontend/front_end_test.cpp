@@ -24,7 +24,7 @@ std::pair<int, std::string> run(const FrontEnd& p, const std::function<int()>& b
 TEST(FrontEnd, MapsKeysToTheProgramsFlags) {
   EXPECT_EQ(kProgram.flag("radius"), "--radii");
   EXPECT_EQ(kProgram.flag("grid"), "-grid");
-  EXPECT_EQ(kProgram.flag("--radius"), "--radii");  // a dashed key of a folder not yet converted
+  EXPECT_EQ(kProgram.flag("--radius"), "--radius");  // a dashed key is a flag already (the front end's own)
   EXPECT_EQ(kProgram.flag("--images"), "--images");  // not in the map: as given (the front end's own errors)
   EXPECT_EQ(kProgram.flag("seeds"), "seeds");
   EXPECT_EQ(kProgram.message(OptionError("radius", "must be > 0")), "--radii: must be > 0");
@@ -47,7 +47,7 @@ TEST(FrontEnd, PrintsAndExitsAsTheProgramSays) {
 
 TEST(FrontEnd, RekeyedErrorsNameTheCallersParameter) {
   try {
-    rekeyOption("sampler", "samplers", [] { throw OptionError("--sampler", "unknown"); });  // legacy dashes too
+    rekeyOption("sampler", "samplers", [] { throw OptionError("sampler", "unknown"); });
     ADD_FAILURE();
   } catch (const OptionError& e) {
     EXPECT_EQ(e.key(), "samplers");
@@ -55,4 +55,10 @@ TEST(FrontEnd, RekeyedErrorsNameTheCallersParameter) {
     EXPECT_STREQ(e.what(), "samplers: unknown");
   }
   EXPECT_THROW(rekeyOption("sampler", "samplers", [] { throw OptionError("spp", "x"); }), OptionError);
+  try {  // the library's keys have no dashes: a dashed key is a front end's flag, passed on as it is
+    rekeyOption("sampler", "samplers", [] { throw OptionError("--sampler", "x"); });
+    ADD_FAILURE();
+  } catch (const OptionError& e) {
+    EXPECT_EQ(e.key(), "--sampler");
+  }
 }

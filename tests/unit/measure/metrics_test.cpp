@@ -11,6 +11,7 @@
 
 #include "core/hash.h"
 #include "measure/metrics.h"
+#include "support/pixel_fields.h"
 
 using namespace aliaslab;
 
@@ -30,11 +31,7 @@ Image referenceImage() {
 double bias(int x, int y, int c) { return 0.1 * std::sin(0.37 * x + 1.3 * c) * std::cos(0.23 * y); }
 
 double meanBiasSquared() {
-  double s = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) s += bias(x, y, c) * bias(x, y, c);
-  return s / kN;
+  return aliaslab::testing::meanOverPixels(W, H, [](int x, int y, int c) { return bias(x, y, c) * bias(x, y, c); });
 }
 
 // Standard normal from two hashed uniforms (Box-Muller).
@@ -48,7 +45,8 @@ Metrics metricsOf(const std::vector<Image>& images, const Image& g, const Image&
   return computeMetrics(images, RefEstimate{&g}, {RefEstimate{&t}, RefEstimate{&a}});
 }
 
-std::vector<Image> noisyImages(const Image& g, double sigma) {
+/// K images g + error(x, y, c) + sigma e_k, the noise e_k seeded by seed k + firstSeed.
+std::vector<Image> imagesAround(const Image& g, double (*error)(int, int, int), double sigma, int firstSeed) {
   std::vector<Image> images;
   for (int k = 0; k < K; ++k) {
     Image im(W, H);
@@ -56,14 +54,16 @@ std::vector<Image> noisyImages(const Image& g, double sigma) {
       for (int x = 0; x < W; ++x) {
         Color c;
         for (int ch = 0; ch < 3; ++ch)
-          c[ch] = static_cast<float>(g.get(x, y)[ch] + bias(x, y, ch) +
-                                     sigma * gaussian(hashWords(pixelSeed(k, x, y), ch)));
+          c[ch] = static_cast<float>(g.get(x, y)[ch] + error(x, y, ch) +
+                                     sigma * gaussian(hashWords(pixelSeed(k + firstSeed, x, y), ch)));
         im.set(x, y, c);
       }
     images.push_back(std::move(im));
   }
   return images;
 }
+
+std::vector<Image> noisyImages(const Image& g, double sigma) { return imagesAround(g, bias, sigma, 0); }
 }  // namespace
 
 TEST(Metrics, AliasingRecoversMeanSquaredBiasAndNoiseRecoversVariance) {
@@ -218,28 +218,13 @@ Decomposed decomposedImages(double sigma) {
       for (int ch = 0; ch < 3; ++ch) c[ch] = static_cast<float>(d.target.get(x, y)[ch] + blurPattern(x, y, ch));
       d.reference.set(x, y, c);
     }
-  for (int k = 0; k < K; ++k) {
-    Image im(W, H);
-    for (int y = 0; y < H; ++y)
-      for (int x = 0; x < W; ++x) {
-        Color c;
-        for (int ch = 0; ch < 3; ++ch)
-          c[ch] = static_cast<float>(d.reference.get(x, y)[ch] + structured(x, y, ch) +
-                                     sigma * gaussian(hashWords(pixelSeed(k + 100, x, y), ch)));
-        im.set(x, y, c);
-      }
-    d.images.push_back(std::move(im));
-  }
+  d.images = imagesAround(d.reference, structured, sigma, 100);
   return d;
 }
 
 template <class F>
 double meanOver(F f) {
-  double s = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) s += f(x, y, c);
-  return s / kN;
+  return aliaslab::testing::meanOverPixels(W, H, f);
 }
 }  // namespace
 

@@ -14,6 +14,7 @@
 
 #include "core/hash.h"
 #include "measure/metrics.h"
+#include "support/pixel_fields.h"
 
 using namespace aliaslab;
 
@@ -59,11 +60,7 @@ Image imageOf(F f) {
 
 template <class F>
 double meanOver(F f) {
-  double s = 0;
-  for (int y = 0; y < H; ++y)
-    for (int x = 0; x < W; ++x)
-      for (int c = 0; c < 3; ++c) s += f(x, y, c);
-  return s / kN;
+  return aliaslab::testing::meanOverPixels(W, H, f);
 }
 
 /// A reference from two halves: exact + eps_a and exact + eps_b.

@@ -1,6 +1,8 @@
 // Shared by the accelerator tests (accel_test.cpp: grid; bvh_test.cpp: BVH): random scenes and rays, and the
-// comparison of an accelerator with brute force (same primitive, bit-identical t, same any-hit answers).
+// comparison of an accelerator with brute force (same primitive, bit-identical t, same any-hit answers), and
+// the bundled scenes with camera and random rays.
 #pragma once
+#include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -150,6 +152,37 @@ BBox boundedBox(const Object& root) {
   for (const auto& p : flat)
     if (p->bounded()) b.extend(p->bounds());
   return b;
+}
+
+/// Calls visit(scene, k) for the k-th bundled scene file (scenes/*.txt, in directory order), each under a
+/// SCOPED_TRACE naming it; returns how many there were.
+template <class Visit>
+int forEachBundledScene(Visit&& visit) {
+  int scenes = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes")) {
+    if (entry.path().extension() != ".txt") continue;
+    SCOPED_TRACE(entry.path().string());
+    visit(parseScene(entry.path().string()), scenes++);
+  }
+  return scenes;
+}
+
+/// n rays of the scene's camera through random film positions (the film and a 10% margin around it).
+std::vector<RayQuery> cameraRays(const Scene& scene, int n, uint64_t seed) {
+  HashRng rng(seed);
+  std::vector<RayQuery> rays;
+  for (int i = 0; i < n; ++i)
+    rays.push_back({scene.camera->generateRay(Vec2(1.2f * rng.nextFloat() - 0.1f, 1.2f * rng.nextFloat() - 0.1f)),
+                    scene.camera->tMin()});
+  return rays;
+}
+
+/// Appends randomRays(n, seed) aimed at the scene's triangle vertices too, unless it has nothing bounded.
+void appendRandomRays(const Scene& scene, int n, uint64_t seed, std::vector<RayQuery>& rays) {
+  const BBox box = boundedBox(*scene.root);
+  if (box.empty()) return;
+  const auto more = randomRays(box, n, seed, vertices(*scene.root));
+  rays.insert(rays.end(), more.begin(), more.end());
 }
 
 }  // namespace
