@@ -28,7 +28,7 @@ void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double
   std::vector<double*> sums;
   for (auto& s : sums_) sums.push_back(s.data());
   std::vector<double> own(filters_.size(), 0.0);
-  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr, true, fresh_);
+  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr, fresh_);
   fresh_ = false;
   samplesAdded_ += batch.samples().size();
   if (filterSeconds && !filters_.empty()) {

@@ -45,7 +45,7 @@ size_t addPlainSums(const SampleBuffer& samples, double* plain) {
 }
 
 void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds, bool allowAvx2, bool overwrite) {
+              int threads, double* ownSeconds, bool overwrite) {
   const int H = samples.height();
   RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
   parallelFor(H, threads, [&](int sj) {
@@ -65,15 +65,14 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
       if (!done[k] && filters[k]->radius() == filters[first]->radius())
         group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
     std::vector<double> own(group.size(), 0.0);
-    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr,
-                    overwrite);
+    splatSameRadius(samples, spans, group, groupSums, threads, ownSeconds ? own.data() : nullptr, overwrite);
     if (ownSeconds)
       for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
   }
 }
 
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
-  splatAll(samples, {&filter}, {sums}, threads, nullptr, allowAvx2);
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads) {
+  splatAll(samples, {&filter}, {sums}, threads);
 }
 
 }  // namespace aliaslab::filmimpl

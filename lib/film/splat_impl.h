@@ -28,8 +28,8 @@ struct Batch {
 
 using Kernel = void (*)(const Batch&, int, const float*, int, Sum*, int);
 /// The kernel that adds a batch's samples over blocks of n x n pixels (weights w, or none: unitWeights):
-/// unrolled for n <= 6, AVX2 + FMA when the CPU has it and allowAvx2 (splat_kernels.cpp).
-Kernel pickKernel(int n, bool allowAvx2);
+/// unrolled for n <= 6, AVX2 + FMA when the CPU has them (core/cpu.h; splat_kernels.cpp).
+Kernel pickKernel(int n);
 
 /// Per source row (the samples of one row of pixels): the least and greatest y (NaN ignored).
 struct RowSpans {
@@ -38,7 +38,6 @@ struct RowSpans {
 
 /// The fused pass for filters that share one radius (see splatAll; splat_pass.cpp).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite);
+                     const std::vector<double*>& sums, int threads, double* ownSeconds, bool overwrite);
 
 }  // namespace aliaslab::filmimpl

@@ -3,6 +3,7 @@
 // choice among them (pickKernel). Called through a pointer from the pass in splat_pass.cpp.
 #include <utility>
 
+#include "core/cpu.h"
 #include "film/splat_impl.h"
 
 namespace aliaslab::filmimpl {
@@ -92,9 +93,9 @@ void accumulateSse(const Batch& b, int count, const float* w, int n, Sum* buf, i
 
 /// pickKernel for n among Ns + 1 (unrolled), else the kernel for any n.
 template <int... Ns>
-Kernel pickKernelOf(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
-  static const bool cpuAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  const bool avx2 = cpuAvx2 && allowAvx2;
+Kernel pickKernelOf(int n, std::integer_sequence<int, Ns...>) {
+  const CpuFeatures cpu = cpuFeatures();
+  const bool avx2 = cpu.avx2 && cpu.fma;
   Kernel k = avx2 ? accumulateAvx2<0> : accumulateSse<0>;
   ((k = n == Ns + 1 ? (avx2 ? accumulateAvx2<Ns + 1> : accumulateSse<Ns + 1>) : k), ...);
   return k;
@@ -102,6 +103,6 @@ Kernel pickKernelOf(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
 
 }  // namespace
 
-Kernel pickKernel(int n, bool allowAvx2) { return pickKernelOf(n, allowAvx2, std::make_integer_sequence<int, 6>()); }
+Kernel pickKernel(int n) { return pickKernelOf(n, std::make_integer_sequence<int, 6>()); }
 
 }  // namespace aliaslab::filmimpl

@@ -12,6 +12,7 @@
 
 #include <immintrin.h>
 
+#include "core/cpu.h"
 #include "core/parallel.h"
 #include "film/splat_workspace.h"
 
@@ -127,16 +128,14 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
 
 /// The fused pass for filters that share one radius (see splatAll).
 void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite) {
+                     const std::vector<double*>& sums, int threads, double* ownSeconds, bool overwrite) {
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const float r = filters[0]->radius();
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
-  const Kernel kernel = pickKernel(n, allowAvx2);
+  const Kernel kernel = pickKernel(n);
   std::vector<FilterBatch> weights;  // each filter's vectorised weights, built once for the pass
   for (const Filter* f : filters) weights.emplace_back(*f);
-  static const bool cpuAvx2 = __builtin_cpu_supports("avx2");
-  const bool vectorSetup = cpuAvx2 && allowAvx2 && n <= kMaxBlock;  // (r <= 8: centresWithin's bounds fit)
+  const bool vectorSetup = cpuFeatures().avx2 && n <= kMaxBlock;  // (r <= 8: centresWithin's bounds fit)
 
   // per source row: the output rows its samples can reach (wider by one)
   std::vector<int> reachLo(H), reachHi(H);

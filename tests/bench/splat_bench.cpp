@@ -56,7 +56,7 @@ void BM_AllFilters(benchmark::State& state) {
   std::vector<double*> out;
   for (auto& s : sums) out.push_back(s.data());
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), raw, out, 1, nullptr, true, true);
+    filmimpl::splatAll(samples(), raw, out, 1, nullptr, true);
     benchmark::DoNotOptimize(sums[0][0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));
@@ -68,7 +68,7 @@ void BM_OneFilter(benchmark::State& state, const std::string& name, float radius
   const auto f = makeFilter(name, radius);
   std::vector<double> sums(4 * size_t(kSize) * kSize);
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), {f.get()}, {sums.data()}, 1, nullptr, true, true);
+    filmimpl::splatAll(samples(), {f.get()}, {sums.data()}, 1, nullptr, true);
     benchmark::DoNotOptimize(sums[0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));
