@@ -260,11 +260,12 @@ TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
   for (const auto& f : owned) filters.push_back(f.get());
   for (int threads : {1, 3}) {
     Accumulator acc(37, 29, filters);
-    std::vector<double> seconds;
-    double shared = -1;
+    acc.measureShares();
     const auto t0 = std::chrono::steady_clock::now();
-    acc.add(b, threads, &seconds, &shared);
+    acc.add(b, threads);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::vector<double>& seconds = acc.filterSeconds();
+    const double shared = acc.sharedSeconds();
     ASSERT_EQ(seconds.size(), filters.size());
     // the shares add up to the call's wall time: each filter's own part plus 1/K of the shared rest
     double total = 0;
