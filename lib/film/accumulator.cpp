@@ -27,7 +27,7 @@ void Accumulator::add(const SampleBuffer& batch, int threads) {
   std::vector<double*> sums;
   for (auto& s : sums_) sums.push_back(s.data());
   std::vector<double> own(filters_.size(), 0.0);
-  filmimpl::splatAll(batch, filters_, sums, threads, measureShares_ ? own.data() : nullptr, fresh_);
+  filmimpl::splatAll(batch, {filters_, sums, measureShares_ ? own.data() : nullptr, fresh_}, threads);
   fresh_ = false;
   samplesAdded_ += batch.samples().size();
   if (measureShares_ && !filters_.empty()) {

@@ -16,8 +16,9 @@ namespace {
 /// the store-to-load round trip that chained them (measured: a third less time at n = 1; larger blocks
 /// gained nothing).
 template <int N, class Add>
-inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, Sum* buffer, int width,
-                                                   Add&& add) {
+inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, BandBuffer band, Add&& add) {
+  Sum* const buffer = band.sums;
+  const int width = band.width;
   for (int s = 0; s < count;) {
     int e = s + 1;
     while (e < count && batch.at[e] == batch.at[s]) ++e;
@@ -39,15 +40,16 @@ inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count
 /// buffer[at + b * width + a] += w(a, b) L for every sample of the batch (N: n known at compile time, 0: any),
 /// w(a, b) = w[(b * n + a) * kBatch + s]; in runs for n <= 2 (addRuns).
 template <int N>
-inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
-                                                      Sum* buffer, int width) {
+inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w,
+                                                      BandBuffer band) {
   constexpr size_t stride = kBatch;  // FilterBatch::eval is always called for a whole batch: constant offsets
   if constexpr (N == 1 || N == 2) {
-    addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+    addRuns<N>(batch, count, band, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += static_cast<double>(w[p * stride + t]) * L;
     });
   } else {  // larger blocks: enough independent sums per sample
-    if (N) n = N;
+    Sum* const buffer = band.sums;
+    const int width = band.width, n = N ? N : band.n;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
@@ -60,13 +62,14 @@ inline __attribute__((always_inline)) void accumulate(const Batch& batch, int co
 }
 /// The same for FilterBatch::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
 template <int N>
-inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
+inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, BandBuffer band) {
   if constexpr (N == 1 || N == 2) {
-    addRuns<N>(batch, count, buffer, width, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+    addRuns<N>(batch, count, band, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += L * static_cast<double>(p % N < batch.nx[t]) * static_cast<double>(p / N < batch.ny[t]);
     });
   } else {
-    if (N) n = N;
+    Sum* const buffer = band.sums;
+    const int width = band.width, n = N ? N : band.n;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
@@ -83,12 +86,12 @@ inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, in
   }
 }
 template <int N>
-__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
-  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, BandBuffer band) {
+  w ? accumulate<N>(b, count, w, band) : accumulateUnit<N>(b, count, band);
 }
 template <int N>
-void accumulateSse(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
-  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+void accumulateSse(const Batch& b, int count, const float* w, BandBuffer band) {
+  w ? accumulate<N>(b, count, w, band) : accumulateUnit<N>(b, count, band);
 }
 
 /// pickKernel for n among Ns + 1 (unrolled), else the kernel for any n.
