@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "accel/bvh_leaf.h"
+#include "core/cpu.h"
 
 namespace aliaslab {
 namespace {
@@ -33,11 +34,6 @@ struct Planes4 {
     }
   }
 };
-
-bool cpuHasAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
 
 class Bvh final : public Aggregate {
  public:
@@ -183,12 +179,12 @@ class Bvh final : public Aggregate {
 
 }  // namespace
 
-bool bvhEightWideSupported() { return cpuHasAvx2(); }
+bool bvhEightWideSupported() { return cpuFeatures().avx2; }
 
 std::unique_ptr<Aggregate> makeBvh(const Object& root, BvhWidth width) {
-  if (width == BvhWidth::Eight && !cpuHasAvx2())
+  if (width == BvhWidth::Eight && !cpuFeatures().avx2)
     throw std::runtime_error("makeBvh: the 8-wide BVH needs a CPU with AVX2, and this one has none");
-  if (width == BvhWidth::Automatic) return std::make_unique<Bvh>(root, cpuHasAvx2() ? 0 : 4);
+  if (width == BvhWidth::Automatic) return std::make_unique<Bvh>(root, cpuFeatures().avx2 ? 0 : 4);
   return std::make_unique<Bvh>(root, width == BvhWidth::Eight ? 8 : 4);
 }
 

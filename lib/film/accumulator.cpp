@@ -1,9 +1,9 @@
 // The streaming weighted-average accumulator (references without stored samples).
 #include <algorithm>
-#include <chrono>
 #include <stdexcept>
 
 #include "core/parallel.h"
+#include "core/stopwatch.h"
 
 #include "film/film_impl.h"
 
@@ -17,30 +17,29 @@ Accumulator::Accumulator(int width, int height, std::vector<const Filter*> filte
   plain_.assign(n, 0.0);
 }
 
-void Accumulator::add(const SampleBuffer& batch, int threads, std::vector<double>* filterSeconds,
-                      double* sharedSeconds) {
+void Accumulator::add(const SampleBuffer& batch, int threads) {
   if (batch.width() != width_ || batch.height() != height_)
     throw std::invalid_argument("Accumulator::add: batch is " + std::to_string(batch.width()) + "x" +
                                 std::to_string(batch.height()) + ", accumulator " + std::to_string(width_) + "x" +
                                 std::to_string(height_));
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch clock;
   nonFinite_ += filmimpl::addPlainSums(batch, plain_.data());
   std::vector<double*> sums;
   for (auto& s : sums_) sums.push_back(s.data());
   std::vector<double> own(filters_.size(), 0.0);
-  filmimpl::splatAll(batch, filters_, sums, threads, filterSeconds ? own.data() : nullptr, true, fresh_);
+  filmimpl::splatAll(batch, {filters_, sums, measureShares_ ? own.data() : nullptr, fresh_}, threads);
   fresh_ = false;
   samplesAdded_ += batch.samples().size();
-  if (filterSeconds && !filters_.empty()) {
+  if (measureShares_ && !filters_.empty()) {
     // own CPU time over the threads the bands could use approximates wall time; the rest is shared equally
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double wall = clock.seconds();
     const int used = std::max(1, std::min(resolveThreads(threads), (height_ + filmimpl::kBand - 1) / filmimpl::kBand));
     double ownWall = 0;
     for (double& o : own) ownWall += (o /= used);
     const double rest = std::max(0.0, wall - ownWall), shared = rest / static_cast<double>(filters_.size());
-    filterSeconds->resize(filters_.size());
-    for (size_t k = 0; k < own.size(); ++k) (*filterSeconds)[k] = own[k] + shared;
-    if (sharedSeconds) *sharedSeconds = rest;
+    filterSeconds_.resize(filters_.size());
+    for (size_t k = 0; k < own.size(); ++k) filterSeconds_[k] = own[k] + shared;
+    sharedSeconds_ = rest;
   }
 }
 

@@ -170,12 +170,15 @@ Reconstruction reconstruct(const SampleBuffer& samples, const Filter& filter, Re
 class Accumulator {
  public:
   Accumulator(int width, int height, std::vector<const Filter*> filters);
-  /// filterSeconds (if not null): resized to the filter count, filter k's share of this call's wall time:
-  /// its own weights and accumulation (CPU time over the threads used) plus an equal share of the rest.
-  /// sharedSeconds (if not null, with filterSeconds): that rest, the work no filter owns (finiteness, the
-  /// fallback sums, each radius's footprints and band set-up, adding the bands into the sums).
-  void add(const SampleBuffer& batch, int threads = 0, std::vector<double>* filterSeconds = nullptr,
-           double* sharedSeconds = nullptr);
+  void add(const SampleBuffer& batch, int threads = 0);
+  /// From now on each add() also measures how its wall time divides among the filters (a little extra work per
+  /// batch of samples, so off unless asked): filterSeconds()[k] = filter k's own weights and accumulation (CPU
+  /// time over the threads used) plus an equal share of the rest; sharedSeconds() = that rest, the work no
+  /// filter owns (finiteness, the fallback sums, each radius's footprints and band set-up, adding the bands
+  /// into the sums). Both describe the last add(); empty and 0 until a measured add().
+  void measureShares() { measureShares_ = true; }
+  const std::vector<double>& filterSeconds() const { return filterSeconds_; }
+  double sharedSeconds() const { return sharedSeconds_; }
   /// Resolves filter k's image (same outcomes and counts as reconstruct()).
   Reconstruction resolve(size_t k) const;
   size_t samplesAdded() const { return samplesAdded_; }
@@ -190,6 +193,9 @@ class Accumulator {
   std::vector<double> plain_;              ///< r, g, b, count of each pixel's own finite samples (fallback)
   size_t samplesAdded_ = 0;
   size_t nonFinite_ = 0;
+  bool measureShares_ = false;
+  std::vector<double> filterSeconds_;  ///< the last measured add()'s shares (measureShares)
+  double sharedSeconds_ = 0;
 };
 
 }  // namespace aliaslab

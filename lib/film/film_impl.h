@@ -23,22 +23,27 @@ constexpr int kBand = 32;
 /// FilterBatch (eval() bit for bit; Blackman-Harris and the Gaussian
 /// within float rounding), summed in double: float x float products are
 /// exact, so the AVX2 + FMA kernel used where the CPU has it sums exactly
-/// like the SSE one (allowAvx2 = false forces the SSE kernel and the
-/// sample-by-sample set-up, for tests).
+/// like the SSE one (tests compare them under core/cpu.h's ScopedCpuFeatures,
+/// which also forces the sample-by-sample set-up).
 /// Float sums were measured no faster and lose the 1e-6 agreement where
 /// negative lobes cancel.
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads,
-                   bool allowAvx2 = true);
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads);
 
-/// splatWeighted for several filters at once, sums[k] for filters[k], each
-/// exactly as on its own: filters of equal radius share one pass, so each
-/// sample's finiteness test and footprint are computed once per radius and
-/// each filter adds only its weights and accumulation. ownSeconds (if not
-/// null, K entries, added to): each filter's own part of that work, in
-/// seconds summed over the threads. overwrite: the sums need not be initialised; every value is set to
-/// 0.0 + this pass's sum, bit for bit what adding into zeroed sums gives (an Accumulator's first batch).
-void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds = nullptr, bool allowAvx2 = true, bool overwrite = false);
+/// Where a splat adds: sums[k] for filters[k] (r, g, b, weight per pixel each).
+struct SplatTargets {
+  const std::vector<const Filter*>& filters;
+  const std::vector<double*>& sums;
+  /// If not null (K entries, added to): each filter's own part of the work, in seconds summed over the threads.
+  double* ownSeconds = nullptr;
+  /// The sums need not be initialised: every value is set to 0.0 + this pass's sum, bit for bit what adding
+  /// into zeroed sums gives (an Accumulator's first batch).
+  bool overwrite = false;
+};
+
+/// splatWeighted for several filters at once, each exactly as on its own: filters of equal radius share one
+/// pass, so each sample's finiteness test and footprint are computed once per radius and each filter adds
+/// only its weights and accumulation.
+void splatAll(const SampleBuffer& samples, const SplatTargets& targets, int threads);
 
 /// Adds (L, 1) of each pixel's own finite samples into `plain` (r, g, b, count per pixel); returns the
 /// number of samples skipped as non-finite.

@@ -44,8 +44,8 @@ size_t addPlainSums(const SampleBuffer& samples, double* plain) {
   return skipped;
 }
 
-void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& filters, const std::vector<double*>& sums,
-              int threads, double* ownSeconds, bool allowAvx2, bool overwrite) {
+void splatAll(const SampleBuffer& samples, const SplatTargets& targets, int threads) {
+  const std::vector<const Filter*>& filters = targets.filters;
   const int H = samples.height();
   RowSpans spans{std::vector<float>(H), std::vector<float>(H)};
   parallelFor(H, threads, [&](int sj) {
@@ -63,17 +63,19 @@ void splatAll(const SampleBuffer& samples, const std::vector<const Filter*>& fil
     std::vector<size_t> index;
     for (size_t k = first; k < filters.size(); ++k)
       if (!done[k] && filters[k]->radius() == filters[first]->radius())
-        group.push_back(filters[k]), groupSums.push_back(sums[k]), index.push_back(k), done[k] = true;
+        group.push_back(filters[k]), groupSums.push_back(targets.sums[k]), index.push_back(k), done[k] = true;
     std::vector<double> own(group.size(), 0.0);
-    splatSameRadius(samples, spans, group, groupSums, threads, allowAvx2, ownSeconds ? own.data() : nullptr,
-                    overwrite);
+    const double* ownSeconds = targets.ownSeconds;
+    splatSameRadius(samples, spans, {group, groupSums, ownSeconds ? own.data() : nullptr, targets.overwrite}, threads);
     if (ownSeconds)
-      for (size_t g = 0; g < group.size(); ++g) ownSeconds[index[g]] += own[g];
+      for (size_t g = 0; g < group.size(); ++g) targets.ownSeconds[index[g]] += own[g];
   }
 }
 
-void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads, bool allowAvx2) {
-  splatAll(samples, {&filter}, {sums}, threads, nullptr, allowAvx2);
+void splatWeighted(const SampleBuffer& samples, const Filter& filter, double* sums, int threads) {
+  const std::vector<const Filter*> filters{&filter};
+  const std::vector<double*> targets{sums};
+  splatAll(samples, {filters, targets}, threads);
 }
 
 }  // namespace aliaslab::filmimpl

@@ -26,10 +26,17 @@ struct Batch {
   F4 L[kBatch];                                                     ///< (r, g, b, 1)
 };
 
-using Kernel = void (*)(const Batch&, int, const float*, int, Sum*, int);
+/// A band buffer as a kernel sees it: `sums` of `width` per row, blocks of n x n pixels.
+struct BandBuffer {
+  Sum* sums;
+  int width, n;
+};
+
+/// kernel(batch, count, w, band): the batch's first `count` samples added over their blocks in `band`.
+using Kernel = void (*)(const Batch&, int, const float*, BandBuffer);
 /// The kernel that adds a batch's samples over blocks of n x n pixels (weights w, or none: unitWeights):
-/// unrolled for n <= 6, AVX2 + FMA when the CPU has it and allowAvx2 (splat_kernels.cpp).
-Kernel pickKernel(int n, bool allowAvx2);
+/// unrolled for n <= 6, AVX2 + FMA when the CPU has them (core/cpu.h; splat_kernels.cpp).
+Kernel pickKernel(int n);
 
 /// Per source row (the samples of one row of pixels): the least and greatest y (NaN ignored).
 struct RowSpans {
@@ -37,8 +44,6 @@ struct RowSpans {
 };
 
 /// The fused pass for filters that share one radius (see splatAll; splat_pass.cpp).
-void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite);
+void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const SplatTargets& targets, int threads);
 
 }  // namespace aliaslab::filmimpl

@@ -3,6 +3,7 @@
 // choice among them (pickKernel). Called through a pointer from the pass in splat_pass.cpp.
 #include <utility>
 
+#include "core/cpu.h"
 #include "film/splat_impl.h"
 
 namespace aliaslab::filmimpl {
@@ -15,8 +16,9 @@ namespace {
 /// the store-to-load round trip that chained them (measured: a third less time at n = 1; larger blocks
 /// gained nothing).
 template <int N, class Add>
-inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, Sum* buffer, int width,
-                                                   Add&& add) {
+inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count, BandBuffer band, Add&& add) {
+  Sum* const buffer = band.sums;
+  const int width = band.width;
   for (int s = 0; s < count;) {
     int e = s + 1;
     while (e < count && batch.at[e] == batch.at[s]) ++e;
@@ -38,15 +40,16 @@ inline __attribute__((always_inline)) void addRuns(const Batch& batch, int count
 /// buffer[at + b * width + a] += w(a, b) L for every sample of the batch (N: n known at compile time, 0: any),
 /// w(a, b) = w[(b * n + a) * kBatch + s]; in runs for n <= 2 (addRuns).
 template <int N>
-inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w, int n,
-                                                      Sum* buffer, int width) {
+inline __attribute__((always_inline)) void accumulate(const Batch& batch, int count, const float* w,
+                                                      BandBuffer band) {
   constexpr size_t stride = kBatch;  // FilterBatch::eval is always called for a whole batch: constant offsets
   if constexpr (N == 1 || N == 2) {
-    addRuns<N>(batch, count, buffer, width, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+    addRuns<N>(batch, count, band, [w](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += static_cast<double>(w[p * stride + t]) * L;
     });
   } else {  // larger blocks: enough independent sums per sample
-    if (N) n = N;
+    Sum* const buffer = band.sums;
+    const int width = band.width, n = N ? N : band.n;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
@@ -59,13 +62,14 @@ inline __attribute__((always_inline)) void accumulate(const Batch& batch, int co
 }
 /// The same for FilterBatch::unitWeights: w = 1 on the footprint's nx x ny pixels, 0 beyond (no weights read).
 template <int N>
-inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, int n, Sum* buffer, int width) {
+inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, int count, BandBuffer band) {
   if constexpr (N == 1 || N == 2) {
-    addRuns<N>(batch, count, buffer, width, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
+    addRuns<N>(batch, count, band, [&batch](V4& sum, int p, int t, const V4& L) __attribute__((always_inline)) {
       sum += L * static_cast<double>(p % N < batch.nx[t]) * static_cast<double>(p / N < batch.ny[t]);
     });
   } else {
-    if (N) n = N;
+    Sum* const buffer = band.sums;
+    const int width = band.width, n = N ? N : band.n;
     for (int s = 0; s < count; ++s) {
       Sum* block = buffer + batch.at[s];
       const V4 L = __builtin_convertvector(batch.L[s], V4);
@@ -82,19 +86,19 @@ inline __attribute__((always_inline)) void accumulateUnit(const Batch& batch, in
   }
 }
 template <int N>
-__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
-  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+__attribute__((target("avx2,fma"))) void accumulateAvx2(const Batch& b, int count, const float* w, BandBuffer band) {
+  w ? accumulate<N>(b, count, w, band) : accumulateUnit<N>(b, count, band);
 }
 template <int N>
-void accumulateSse(const Batch& b, int count, const float* w, int n, Sum* buf, int width) {
-  w ? accumulate<N>(b, count, w, n, buf, width) : accumulateUnit<N>(b, count, n, buf, width);
+void accumulateSse(const Batch& b, int count, const float* w, BandBuffer band) {
+  w ? accumulate<N>(b, count, w, band) : accumulateUnit<N>(b, count, band);
 }
 
 /// pickKernel for n among Ns + 1 (unrolled), else the kernel for any n.
 template <int... Ns>
-Kernel pickKernelOf(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
-  static const bool cpuAvx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  const bool avx2 = cpuAvx2 && allowAvx2;
+Kernel pickKernelOf(int n, std::integer_sequence<int, Ns...>) {
+  const CpuFeatures cpu = cpuFeatures();
+  const bool avx2 = cpu.avx2 && cpu.fma;
   Kernel k = avx2 ? accumulateAvx2<0> : accumulateSse<0>;
   ((k = n == Ns + 1 ? (avx2 ? accumulateAvx2<Ns + 1> : accumulateSse<Ns + 1>) : k), ...);
   return k;
@@ -102,6 +106,6 @@ Kernel pickKernelOf(int n, bool allowAvx2, std::integer_sequence<int, Ns...>) {
 
 }  // namespace
 
-Kernel pickKernel(int n, bool allowAvx2) { return pickKernelOf(n, allowAvx2, std::make_integer_sequence<int, 6>()); }
+Kernel pickKernel(int n) { return pickKernelOf(n, std::make_integer_sequence<int, 6>()); }
 
 }  // namespace aliaslab::filmimpl

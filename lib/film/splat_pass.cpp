@@ -12,6 +12,7 @@
 
 #include <immintrin.h>
 
+#include "core/cpu.h"
 #include "core/parallel.h"
 #include "film/splat_workspace.h"
 
@@ -123,120 +124,152 @@ static_assert(sizeof(FilmSample) == 6 * sizeof(float) && offsetof(FilmSample, y)
   return 1;
 }
 
-}  // namespace
+/// What every band of one radius's pass shares, set up once (makePass).
+struct RadiusPass {
+  const SampleBuffer& samples;
+  const SplatTargets& targets;
+  std::vector<FilterBatch> weights;  ///< each filter's vectorised weights
+  std::vector<int> reachLo, reachHi;  ///< per source row: the output rows its samples can reach (wider by one)
+  float r;
+  int n;               ///< block size; > kMaxBlock: sample by sample
+  int pad, width;      ///< band buffer's padding (n, or 0) and width W + pad
+  size_t bandSize;     ///< Sums per filter's band buffer
+  Kernel kernel;
+  bool vectorSetup;    ///< setup8 where the CPU has AVX2 (r <= 8: centresWithin's bounds fit)
+};
 
-/// The fused pass for filters that share one radius (see splatAll).
-void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const std::vector<const Filter*>& filters,
-                     const std::vector<double*>& sums, int threads, bool allowAvx2, double* ownSeconds,
-                     bool overwrite) {
-  const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
-  const float r = filters[0]->radius();
-  const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));  // > kMaxBlock: sample by sample
-  const Kernel kernel = pickKernel(n, allowAvx2);
-  std::vector<FilterBatch> weights;  // each filter's vectorised weights, built once for the pass
-  for (const Filter* f : filters) weights.emplace_back(*f);
-  static const bool cpuAvx2 = __builtin_cpu_supports("avx2");
-  const bool vectorSetup = cpuAvx2 && allowAvx2 && n <= kMaxBlock;  // (r <= 8: centresWithin's bounds fit)
-
-  // per source row: the output rows its samples can reach (wider by one)
-  std::vector<int> reachLo(H), reachHi(H);
+RadiusPass makePass(const SampleBuffer& samples, const RowSpans& spans, const SplatTargets& targets) {
+  const int W = samples.width(), H = samples.height();
+  const float r = targets.filters[0]->radius();
+  const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));
+  const int pad = n <= kMaxBlock ? n : 0;
+  RadiusPass pass{samples, targets, {}, std::vector<int>(H), std::vector<int>(H), r, n, pad, W + pad,
+                  static_cast<size_t>(kBand + pad) * (W + pad), pickKernel(n),
+                  cpuFeatures().avx2 && n <= kMaxBlock};
+  for (const Filter* f : targets.filters) pass.weights.emplace_back(*f);
   for (int sj = 0; sj < H; ++sj) {
-    reachLo[sj] = static_cast<int>(std::clamp(spans.ymin[sj] - r - 1, -1.f, float(H))) - 1;
-    reachHi[sj] = static_cast<int>(std::clamp(spans.ymax[sj] + r + 1, -1.f, float(H)));
+    pass.reachLo[sj] = static_cast<int>(std::clamp(spans.ymin[sj] - r - 1, -1.f, float(H))) - 1;
+    pass.reachHi[sj] = static_cast<int>(std::clamp(spans.ymax[sj] + r + 1, -1.f, float(H)));
   }
+  return pass;
+}
 
-  const int bands = (H + kBand - 1) / kBand, pad = n <= kMaxBlock ? n : 0, width = W + pad;
-  const size_t bandSize = static_cast<size_t>(kBand + pad) * width;
-  std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  WorkspacePool pool(K * bandSize, static_cast<size_t>(pad) * pad * kBatch);
-  parallelFor(bands, threads, [&](int band) {
-    const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
-    std::unique_ptr<Workspace> space = pool.take();
-    auto buffer = [&](int f) { return space->buffer.data() + f * bandSize; };
-    std::vector<float>& w = space->w;
-    double* own = ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr;
-    Batch& b = space->batch;
-    int count = 0;
-    // each filter's own work on the batch: its weights (none for unitWeights) and the accumulation
-    auto flush = [&] {
-      if (!count) return;
-      for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
-      auto t0 = own ? Clock::now() : Clock::time_point();
-      for (int f = 0; f < K; ++f) {
-        const bool unit = weights[f].unitWeights();
-        if (!unit) weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
-        kernel(b, count, unit ? nullptr : w.data(), n, buffer(f), width);
-        if (own) {
-          const auto t1 = Clock::now();
-          own[f] += std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
-        }
+/// Band `band`'s sums into the image's, each band buffer left zero for the next band (read and cleared in one
+/// pass, then the padding the blocks reached beyond the band's rows and columns).
+void addBandToImage(const RadiusPass& pass, int band, Workspace& space) {
+  const int W = pass.samples.width(), j0 = band * kBand, j1 = std::min(pass.samples.height(), j0 + kBand);
+  const int width = pass.width;
+  for (size_t f = 0; f < pass.targets.filters.size(); ++f) {
+    Sum* buffer = space.buffer.data() + f * pass.bandSize;
+    for (int j = j0; j < j1; ++j) {
+      Sum* line = buffer + static_cast<size_t>(j - j0) * width;
+      for (int i = 0; i < W; ++i) {  // (sums need not be aligned for V4)
+        double* sum = pass.targets.sums[f] + 4 * (static_cast<size_t>(j) * W + i);
+        V4 v = {};  // overwrite: 0.0 + the band's sum, as if sum had been zeroed (it is not read)
+        if (!pass.targets.overwrite) std::memcpy(&v, sum, sizeof v);
+        v += line[i].v;
+        std::memcpy(sum, &v, sizeof v);
+        line[i] = Sum{};
       }
-      count = 0;
-    };
-    // (a local copy, passed to setup8 by value: captured values would be reloaded after every store into
-    // the batch)
-    const Reach c{r, -r - 1, W + r + 1, H + r + 1, W - 1, j0, j1 - 1, pad, width, samples.areaWeighted()};
-    for (int sj = 0; sj < H; ++sj) {
-      if (reachHi[sj] < j0 || reachLo[sj] >= j1) continue;
-      const FilmSample* row = samples.pixel(0, sj);
-      const size_t rowSamples = samples.rowCount(sj);
-      size_t k = 0, next = 0;  // next: where the 8-sample set-up may go on (after a group taken one by one)
-      for (; k < rowSamples; ++k) {
-        if (vectorSetup && k == next && k + 8 <= rowSamples) {
-          if (count > kBatch - 8) flush();
-          const int status = setup8(row + k, c, b, count);
-          if (status != 2) {  // all 8 skipped or all 8 in the batch
-            if (status == 1 && (count += 8) == kBatch) flush();
-            k += 7, next = k + 1;
-            continue;
-          }
-          next = k + 8;  // these 8 one by one
-        }
-        const FilmSample& q = row[k];
-        if (!finiteSample(q) || !(q.x > c.lo && q.x < c.xHi && q.y > c.lo && q.y < c.yHi)) continue;
-        if (c.weighted && !std::isfinite(q.weight)) continue;
-        int ilo, ihi, jlo, jhi;
-        centresWithin(q.x, c.radius, ilo, ihi), centresWithin(q.y, c.radius, jlo, jhi);
-        ilo = std::max(ilo, 0), ihi = std::min(ihi, c.lastColumn), jlo = std::max(jlo, c.j0), jhi = std::min(jhi, c.lastRow);
-        if (ilo > ihi || jlo > jhi) continue;
-        const float qw = c.weighted ? q.weight : 1.f;
-        const F4 L = {qw * q.L[0], qw * q.L[1], qw * q.L[2], qw};
-        if (ihi - ilo >= c.block || jhi - jlo >= c.block) {  // wider than a block: on its own, in sample order
-          flush();
-          for (int f = 0; f < K; ++f)
-            for (int j = jlo; j <= jhi; ++j)
-              for (int i = ilo; i <= ihi; ++i)
-                buffer(f)[(j - j0) * width + i].v +=
-                    static_cast<double>(filters[f]->eval(q.x - (static_cast<float>(i) + 0.5f),
-                                                         q.y - (static_cast<float>(j) + 0.5f))) *
-                    __builtin_convertvector(L, V4);
+      std::fill(line + W, line + width, Sum{});
+    }
+    std::fill(buffer + static_cast<size_t>(j1 - j0) * width, buffer + pass.bandSize, Sum{});
+  }
+}
+
+/// Band `band` of the pass: the samples of every source row that can reach it, set up one by one or 8 at a
+/// time into batches, each filter's weights and kernel run on every full batch, into the work space's band
+/// buffers. own (if not null, K entries, added to): each filter's seconds.
+void splatBand(const RadiusPass& pass, int band, Workspace& space, double* own) {
+  const SampleBuffer& samples = pass.samples;
+  const std::vector<const Filter*>& filters = pass.targets.filters;
+  const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
+  const int n = pass.n, width = pass.width;
+  const Kernel kernel = pass.kernel;
+  const bool vectorSetup = pass.vectorSetup;
+  const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
+  auto buffer = [&](int f) { return space.buffer.data() + f * pass.bandSize; };
+  std::vector<float>& w = space.w;
+  Batch& b = space.batch;
+  int count = 0;
+  // each filter's own work on the batch: its weights (none for unitWeights) and the accumulation
+  auto flush = [&] {
+    if (!count) return;
+    for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
+    auto t0 = own ? Clock::now() : Clock::time_point();
+    for (int f = 0; f < K; ++f) {
+      const bool unit = pass.weights[f].unitWeights();
+      if (!unit) pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
+      kernel(b, count, unit ? nullptr : w.data(), BandBuffer{buffer(f), width, n});
+      if (own) {
+        const auto t1 = Clock::now();
+        own[f] += std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
+      }
+    }
+    count = 0;
+  };
+  // (a local copy, passed to setup8 by value: captured values would be reloaded after every store into
+  // the batch)
+  const Reach c{pass.r, -pass.r - 1, W + pass.r + 1, H + pass.r + 1, W - 1, j0, j1 - 1, pass.pad, width,
+                samples.areaWeighted()};
+  for (int sj = 0; sj < H; ++sj) {
+    if (pass.reachHi[sj] < j0 || pass.reachLo[sj] >= j1) continue;
+    const FilmSample* row = samples.pixel(0, sj);
+    const size_t rowSamples = samples.rowCount(sj);
+    size_t k = 0, next = 0;  // next: where the 8-sample set-up may go on (after a group taken one by one)
+    for (; k < rowSamples; ++k) {
+      if (vectorSetup && k == next && k + 8 <= rowSamples) {
+        if (count > kBatch - 8) flush();
+        const int status = setup8(row + k, c, b, count);
+        if (status != 2) {  // all 8 skipped or all 8 in the batch
+          if (status == 1 && (count += 8) == kBatch) flush();
+          k += 7, next = k + 1;
           continue;
         }
-        b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
-        b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * c.stride + ilo, b.L[count] = L;
-        b.nx[count] = ihi - ilo + 1, b.ny[count] = jhi - jlo + 1;
-        if (++count == kBatch) flush();
+        next = k + 8;  // these 8 one by one
       }
-    }
-    flush();
-    // the band's sums into the image's, each band buffer left zero for the next band (read and cleared in one
-    // pass, then the padding the blocks reached beyond the band's rows and columns)
-    for (int f = 0; f < K; ++f) {
-      Sum* band = buffer(f);
-      for (int j = j0; j < j1; ++j) {
-        Sum* line = band + static_cast<size_t>(j - j0) * width;
-        for (int i = 0; i < W; ++i) {  // (sums need not be aligned for V4)
-          double* sum = sums[f] + 4 * (static_cast<size_t>(j) * W + i);
-          V4 v = {};  // overwrite: 0.0 + the band's sum, as if sum had been zeroed (it is not read)
-          if (!overwrite) std::memcpy(&v, sum, sizeof v);
-          v += line[i].v;
-          std::memcpy(sum, &v, sizeof v);
-          line[i] = Sum{};
-        }
-        std::fill(line + W, line + width, Sum{});
+      const FilmSample& q = row[k];
+      if (!finiteSample(q) || !(q.x > c.lo && q.x < c.xHi && q.y > c.lo && q.y < c.yHi)) continue;
+      if (c.weighted && !std::isfinite(q.weight)) continue;
+      int ilo, ihi, jlo, jhi;
+      centresWithin(q.x, c.radius, ilo, ihi), centresWithin(q.y, c.radius, jlo, jhi);
+      ilo = std::max(ilo, 0), ihi = std::min(ihi, c.lastColumn), jlo = std::max(jlo, c.j0), jhi = std::min(jhi, c.lastRow);
+      if (ilo > ihi || jlo > jhi) continue;
+      const float qw = c.weighted ? q.weight : 1.f;
+      const F4 L = {qw * q.L[0], qw * q.L[1], qw * q.L[2], qw};
+      if (ihi - ilo >= c.block || jhi - jlo >= c.block) {  // wider than a block: on its own, in sample order
+        flush();
+        for (int f = 0; f < K; ++f)
+          for (int j = jlo; j <= jhi; ++j)
+            for (int i = ilo; i <= ihi; ++i)
+              buffer(f)[(j - j0) * width + i].v +=
+                  static_cast<double>(filters[f]->eval(q.x - (static_cast<float>(i) + 0.5f),
+                                                       q.y - (static_cast<float>(j) + 0.5f))) *
+                  __builtin_convertvector(L, V4);
+        continue;
       }
-      std::fill(band + static_cast<size_t>(j1 - j0) * width, band + bandSize, Sum{});
+      b.x[count] = q.x, b.y[count] = q.y, b.cx[count] = static_cast<float>(ilo) + 0.5f;
+      b.cy[count] = static_cast<float>(jlo) + 0.5f, b.at[count] = (jlo - j0) * c.stride + ilo, b.L[count] = L;
+      b.nx[count] = ihi - ilo + 1, b.ny[count] = jhi - jlo + 1;
+      if (++count == kBatch) flush();
     }
+  }
+  flush();
+}
+
+}  // namespace
+
+/// The fused pass for filters that share one radius (see splatAll): per band, splatBand then addBandToImage.
+void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const SplatTargets& targets, int threads) {
+  const RadiusPass pass = makePass(samples, spans, targets);
+  const int K = static_cast<int>(targets.filters.size()), bands = (samples.height() + kBand - 1) / kBand;
+  double* ownSeconds = targets.ownSeconds;
+  std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
+  WorkspacePool pool(K * pass.bandSize, static_cast<size_t>(pass.pad) * pass.pad * kBatch);
+  parallelFor(bands, threads, [&](int band) {
+    std::unique_ptr<Workspace> space = pool.take();
+    splatBand(pass, band, *space, ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr);
+    addBandToImage(pass, band, *space);
     pool.give(std::move(space));
   });
   if (ownSeconds)

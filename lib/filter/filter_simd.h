@@ -11,10 +11,11 @@
 #include <immintrin.h>
 
 #include <array>
-#include <atomic>
 #include <cmath>
 
 #include <Eigen/Core>
+
+#include "core/cpu.h"
 
 // The templated profiles below are instantiated for 8 lanes (Pack8) only to be inlined into functions built
 // for AVX2, so no call passes a Pack8 across the ABI that GCC's -Wpsabi note is about.
@@ -95,17 +96,8 @@ inline Lanes ifLess(const Lanes& a, float bound, const Lanes& v, const Lanes& w)
 #define ALIASLAB_AVX2 [[gnu::always_inline, gnu::target("avx2")]] inline
 using Pack8 = float __attribute__((vector_size(32)));
 using Mask8 = int __attribute__((vector_size(32)));
-inline bool cpuHasAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2;
-}
-/// Off: FilterBatch stays at 4 lanes on any CPU (for tests comparing the two paths).
-inline std::atomic<bool>& eightLanesAllowed() {
-  static std::atomic<bool> allowed{true};
-  return allowed;
-}
-/// Whether FilterBatch takes its 8-lane path.
-inline bool eightLanes() { return cpuHasAvx2() && eightLanesAllowed().load(std::memory_order_relaxed); }
+/// Whether FilterBatch takes its 8-lane path (core/cpu.h: a test compares the paths with ScopedCpuFeatures).
+inline bool eightLanes() { return cpuFeatures().avx2; }
 ALIASLAB_AVX2 Pack8 load8(const float* p) {
   Pack8 v;
   __builtin_memcpy(&v, p, sizeof v);

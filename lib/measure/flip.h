@@ -17,7 +17,6 @@
 // implementation the tests compare against). The convolutions are exact sums, the same bits on every path.
 #pragma once
 #include <array>
-#include <atomic>
 #include <vector>
 
 #include "core/image.h"
@@ -65,7 +64,5 @@ std::vector<double> meanFlips(const Image& test, const std::vector<const FlipRef
 /// output is the textbook sum over k = -r .. r in that order, started at 0, bit for bit.
 std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                                     const std::vector<double>& ky);
-/// Widest vector the convolution may use (4: AVX where the CPU has AVX2, else 2); tests set 2 to compare paths.
-std::atomic<int>& convolutionLanes();
 
 }  // namespace aliaslab

@@ -1,10 +1,10 @@
 // The separable convolutions of FLIP (flip.h convolveClamped; flip_planes.h stage 1): exact textbook sums,
 // the same bits on the SSE2 and the AVX2 path.
 #include <algorithm>
-#include <atomic>
 #include <stdexcept>
 #include <vector>
 
+#include "core/cpu.h"
 #include "measure/flip.h"
 #include "measure/flip_planes.h"
 
@@ -56,9 +56,7 @@ void weightedSumSse2(double* dst, const double* const* src, const double* c, int
   weightedSum<D4>(dst, src, c, taps, n);
 }
 void weightedRows(double* dst, const double* const* src, const double* c, int taps, int n) {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  (avx2 && convolutionLanes().load(std::memory_order_relaxed) >= 4 ? weightedSumAvx : weightedSumSse2)(dst, src, c,
-                                                                                                       taps, n);
+  (cpuFeatures().avx2 ? weightedSumAvx : weightedSumSse2)(dst, src, c, taps, n);
 }
 
 /// Separable convolution of a w x h plane with kernels kx (along x) and ky (along y), each of odd length,
@@ -91,11 +89,6 @@ std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const
   return out;
 }
 
-
-std::atomic<int>& convolutionLanes() {
-  static std::atomic<int> lanes{4};
-  return lanes;
-}
 
 std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                                     const std::vector<double>& ky) {

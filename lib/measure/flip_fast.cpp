@@ -1,8 +1,8 @@
 // Stages 2 and 3 of LDR-FLIP, fast (flip_planes.h): the definition's formulas with flip_fastmath.h's cube
 // root, logarithm and power, on two pixels per SSE2 instruction, or four per AVX one where the CPU has AVX2
 // (flip_fast_kernels.h; the same bits either way).
-#include <atomic>
 
+#include "core/cpu.h"
 #include "measure/flip.h"
 #include "measure/flip_fast_kernels.h"
 #include "measure/flip_planes.h"
@@ -12,10 +12,7 @@ namespace {
 
 using namespace flipkernels;
 
-bool useAvx2() {
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  return avx2 && convolutionLanes().load(std::memory_order_relaxed) >= 4;
-}
+bool useAvx2() { return cpuFeatures().avx2; }
 PlanesIn view(const FlipPlanes& p) { return {p.L.data(), p.a.data(), p.b.data(), p.edge.data(), p.point.data()}; }
 
 }  // namespace

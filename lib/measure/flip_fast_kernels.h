@@ -108,7 +108,7 @@ template <int L>
 
 }  // namespace
 
-/// The AVX2 instantiations (flip_fast_avx2.cpp); call only where __builtin_cpu_supports("avx2").
+/// The AVX2 instantiations (flip_fast_avx2.cpp); call only where cpuFeatures().avx2 (core/cpu.h).
 void planesAvx2(const LinearIn& in, const Planes& out, size_t n);
 void combineAvx2(const PlanesIn& t, const PlanesIn& r, float* out, size_t n, double cmax);
 

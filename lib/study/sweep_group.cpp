@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "core/stopwatch.h"
+#include "core/phase_timer.h"
 #include "film/film.h"
 #include "render/adaptive.h"
 #include "render/render.h"
@@ -13,13 +13,14 @@ namespace aliaslab {
 
 namespace {
 
+// The timed steps of a group's tasks (each task's own PhaseTimes, folded into SweepPhases in task order).
+enum class Step { Trace, Splat, Resolve, Flip, Count };
+
 // A traced sample set of one seed (phase A's slot).
 struct SeedTrace {
   SampleBuffer samples;
   std::unique_ptr<Accumulator> weighted;  ///< every weighted-average row of the set in one pass
-  std::vector<double> splatSeconds;       ///< per weighted row, its share of the Accumulator pass
-  double traceMs = 0, splatS = 0;
-  double traceCpuMs = 0, splatCpuMs = 0;  ///< CPU time of the trace and of the Accumulator pass (inner threads too)
+  PhaseTimes<Step> times;                 ///< the trace and the Accumulator pass (wall and CPU, inner threads too)
   SpentSamples spent;  ///< samples per pixel actually traced (adaptive samplers vary)
   Image density;       ///< per-pixel sample count (adaptive sampler, seed 0, images on)
 };
@@ -28,9 +29,9 @@ struct SeedTrace {
 struct RowImage {
   Reconstruction r;
   std::vector<double> flip;  ///< per target: meanFlip(image, T), computed in the (seed, row) task
+  PhaseTimes<Step> times;    ///< this task's share of the phases (its own trace for importance rows)
   double traceMs = 0, reconMs = 0;
   double cpuMs = 0;  ///< CPU time: the set's trace + this row's reconstruction (its share of the splat pass)
-  double traceS = 0, resolveS = 0, flipS = 0;  ///< this task's share of the phases
 };
 
 size_t bufferBytes(const SampleBuffer& b) { return b.samples().size() * sizeof(FilmSample); }
@@ -42,11 +43,11 @@ int innerThreads(int threads, size_t tasks) { return std::max(1, threads / int(s
 // Accumulator holding all of them. The sample buffer is kept for the classic and supersample rows.
 SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
   SeedTrace t;
-  const Stopwatch trace;
-  const CpuStopwatch traceCpu;
   const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
-  t.samples = source->trace(g.tracer, g.scene.width, g.scene.height, innerThreads);
-  t.traceMs = trace.ms(), t.traceCpuMs = traceCpu.ms();
+  {
+    const ScopedPhase timing(t.times, Step::Trace);
+    t.samples = source->trace(g.tracer, g.scene.width, g.scene.height, innerThreads);
+  }
   t.spent = spentSamples(t.samples);
   if (k == 0 && g.images && source->adaptive()) t.density = sampleDensity(t.samples);
   g.inFlight.add(bufferBytes(t.samples));
@@ -54,14 +55,30 @@ SeedTrace traceSampleSet(const GroupContext& g, int k, int innerThreads) {
   for (const PendingRow& p : g.rows)
     if (p.mode == ReconMode::WeightedAverage) filters.push_back(p.filter.filter.get());
   if (!filters.empty()) {
-    const Stopwatch splat;
-    const CpuStopwatch splatCpu;
+    const ScopedPhase timing(t.times, Step::Splat);
     t.weighted = std::make_unique<Accumulator>(g.scene.width, g.scene.height, filters);
     g.inFlight.add(t.weighted->bytes());
-    t.weighted->add(t.samples, innerThreads, &t.splatSeconds);
-    t.splatS = splat.seconds(), t.splatCpuMs = splatCpu.ms();
+    t.weighted->measureShares();
+    t.weighted->add(t.samples, innerThreads);
   }
   return t;
+}
+
+// The CSV's timings of row p's image `out` of the set `t`: its trace (the set's, or its own for importance rows),
+// its reconstruction (weighted rows: plus its share of the Accumulator pass) and their CPU time.
+void rowTimes(const SeedTrace& t, size_t weightedIndex, const PendingRow& p, RowImage& out) {
+  const PhaseTimes<Step>& trace = p.mode == ReconMode::ImportanceSampled ? out.times : t.times;
+  out.traceMs = 1000 * trace.wall(Step::Trace);
+  out.reconMs = 1000 * out.times.wall(Step::Resolve);
+  out.cpuMs = 1000 * (trace.cpu(Step::Trace) + out.times.cpu(Step::Resolve));
+  if (p.mode != ReconMode::WeightedAverage) return;
+  const std::vector<double>& shares = t.weighted->filterSeconds();
+  out.reconMs += 1000.0 * shares[weightedIndex];
+  // the row's share of the pass's CPU time in the proportion of its share of the wall time
+  double all = 0;
+  for (double v : shares) all += v;
+  const double splatCpuMs = 1000 * t.times.cpu(Step::Splat);
+  out.cpuMs += all > 0 ? splatCpuMs * shares[weightedIndex] / all : splatCpuMs / shares.size();
 }
 
 // Phase B: row `p`'s image of the set `t` (weighted: resolve from the shared Accumulator; classic and
@@ -70,40 +87,25 @@ RowImage reconstructRow(const GroupContext& g, const SeedTrace& t, size_t weight
                         int innerThreads) {
   RowImage out;
   const Filter& filter = *p.filter.filter;
+  SampleBuffer own;  // importance rows' own sample set
   if (p.mode == ReconMode::ImportanceSampled) {
     const auto source = makeSampleSource(g.group.sampler, g.group.spp, static_cast<uint64_t>(k));
-    const Stopwatch trace;
-    const CpuStopwatch cpu;
-    const SampleBuffer samples = source->traceImportance(g.tracer, filter, g.scene.width, g.scene.height, innerThreads);
-    out.traceMs = trace.ms();
-    out.traceS = out.traceMs / 1000;
-    g.inFlight.add(bufferBytes(samples));
-    const Stopwatch resolve;
-    out.r = reconstruct(samples, filter, p.mode, innerThreads);
-    out.reconMs = resolve.ms();
-    out.cpuMs = cpu.ms();
-    out.resolveS = out.reconMs / 1000;
-    g.inFlight.remove(bufferBytes(samples));
-  } else {
-    const Stopwatch resolve;
-    const CpuStopwatch resolveCpu;
-    out.r = p.mode == ReconMode::WeightedAverage ? t.weighted->resolve(weightedIndex)
-                                                 : reconstruct(t.samples, filter, p.mode, innerThreads);
-    out.traceMs = t.traceMs;
-    out.reconMs = resolve.ms();
-    out.cpuMs = t.traceCpuMs + resolveCpu.ms();
-    out.resolveS = out.reconMs / 1000;
-    if (p.mode == ReconMode::WeightedAverage) {
-      out.reconMs += 1000.0 * t.splatSeconds[weightedIndex];
-      // the row's share of the pass's CPU time in the proportion of its share of the wall time
-      double all = 0;
-      for (double v : t.splatSeconds) all += v;
-      out.cpuMs += all > 0 ? t.splatCpuMs * t.splatSeconds[weightedIndex] / all : t.splatCpuMs / t.splatSeconds.size();
-    }
+    const ScopedPhase timing(out.times, Step::Trace);
+    own = source->traceImportance(g.tracer, filter, g.scene.width, g.scene.height, innerThreads);
   }
-  const Stopwatch flip;
-  out.flip = meanFlips(out.r.image, p.flipTargets);  // the image's side of FLIP once for every target
-  out.flipS = flip.seconds();
+  g.inFlight.add(bufferBytes(own));
+  {
+    const ScopedPhase timing(out.times, Step::Resolve);
+    out.r = p.mode == ReconMode::WeightedAverage ? t.weighted->resolve(weightedIndex)
+            : p.mode == ReconMode::ImportanceSampled ? reconstruct(own, filter, p.mode, innerThreads)
+                                                      : reconstruct(t.samples, filter, p.mode, innerThreads);
+  }
+  g.inFlight.remove(bufferBytes(own));
+  rowTimes(t, weightedIndex, p, out);
+  {
+    const ScopedPhase timing(out.times, Step::Flip);
+    out.flip = meanFlips(out.r.image, p.flipTargets);  // the image's side of FLIP once for every target
+  }
   g.inFlight.add(imageBytes(g.scene.width, g.scene.height));
   return out;
 }
@@ -151,7 +153,8 @@ void runGroup(const GroupContext& g, const std::function<void(double)>& advance)
     const int innerA = innerThreads(g.threads, W);
     const PhaseTime a = timedParallelFor(shared ? W : 0, g.threads, innerA,
                                          [&](int i) { traces[i] = traceSampleSet(g, k0 + i, innerA); });
-    for (const SeedTrace& t : traces) g.phases.trace += t.traceMs / 1000, g.phases.splat += t.splatS;
+    PhaseTimes<Step> times;  // the window's tasks' phases, added in task order
+    for (const SeedTrace& t : traces) times += t.times;
     if (shared) {
       g.sum.sampleSetsTraced += W;
       foldSpent(g, traces, k0);
@@ -166,9 +169,11 @@ void runGroup(const GroupContext& g, const std::function<void(double)>& advance)
       images[n] = reconstructRow(g, traces[i], weightedIndex[r], g.rows[r], k0 + i, innerB);
     });
     for (size_t n = 0; n < images.size(); ++n) {
-      g.phases.trace += images[n].traceS, g.phases.resolve += images[n].resolveS, g.phases.flip += images[n].flipS;
+      times += images[n].times;
       if (g.rows[n % R].mode == ReconMode::ImportanceSampled) ++g.sum.importanceTraces;
     }
+    g.phases.trace += times.wall(Step::Trace), g.phases.splat += times.wall(Step::Splat);
+    g.phases.resolve += times.wall(Step::Resolve), g.phases.flip += times.wall(Step::Flip);
     g.phases.waiting += b.idle;
     for (SeedTrace& t : traces) {
       g.inFlight.remove(bufferBytes(t.samples) + (t.weighted ? t.weighted->bytes() : 0));

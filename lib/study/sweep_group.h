@@ -10,8 +10,9 @@
 // Every task writes only its own slot; slots are folded in (seed, row) order, so nothing depends on which thread
 // ran what or when it finished (tests/programs/sweep_parallel_test.cpp runs the tasks in a shuffled order). Time goes into
 // the SweepPhases' trace, splat, resolve, flip, metrics and waiting (study/sweep_summary.h), as thread-seconds, and
-// each row's own work per seed (its set's trace + its reconstruction) as thread CPU time (core/stopwatch.h
-// CpuStopwatch, inner threads included) into PendingRow::cpuMs, in seed order.
+// each row's own work per seed (its set's trace + its reconstruction) as thread CPU time (inner threads included)
+// into PendingRow::cpuMs, in seed order. Each task times its steps with one ScopedPhase line each into its slot's
+// PhaseTimes (core/phase_timer.h); the parallel phases' idle time comes from timedParallelFor (core/stopwatch.h).
 #pragma once
 #include <functional>
 #include <vector>

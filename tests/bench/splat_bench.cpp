@@ -56,7 +56,7 @@ void BM_AllFilters(benchmark::State& state) {
   std::vector<double*> out;
   for (auto& s : sums) out.push_back(s.data());
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), raw, out, 1, nullptr, true, true);
+    filmimpl::splatAll(samples(), {raw, out, nullptr, true}, 1);
     benchmark::DoNotOptimize(sums[0][0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));
@@ -67,8 +67,10 @@ BENCHMARK(BM_AllFilters)->Unit(benchmark::kMillisecond);
 void BM_OneFilter(benchmark::State& state, const std::string& name, float radius) {
   const auto f = makeFilter(name, radius);
   std::vector<double> sums(4 * size_t(kSize) * kSize);
+  const std::vector<const Filter*> filters{f.get()};
+  const std::vector<double*> targets{sums.data()};
   for (auto _ : state) {
-    filmimpl::splatAll(samples(), {f.get()}, {sums.data()}, 1, nullptr, true, true);
+    filmimpl::splatAll(samples(), {filters, targets, nullptr, true}, 1);
     benchmark::DoNotOptimize(sums[0]);
   }
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(samples().samples().size()));

@@ -119,16 +119,17 @@ void sweepPairs(benchmark::State& state, const std::string& path) {
     }
   const Image stand = reconstruct(w.samples, *filters[0], ReconMode::WeightedAverage, 1).image;
   std::vector<MetricAccumulator> metrics(filters.size(), MetricAccumulator(RefEstimate{&stand}, {RefEstimate{&stand}}));
-  std::vector<double> pairSeconds(filters.size(), 0.0), seconds;
+  std::vector<double> pairSeconds(filters.size(), 0.0);
   // the work no filter owns; resolve and metrics of every pair; making and freeing the accumulator
   double sharedTotal = 0, resolveTotal = 0, sumsTotal = 0;
   for (auto _ : state) {
     auto t0 = std::chrono::steady_clock::now();
     auto acc = std::make_unique<Accumulator>(w.scene->width, w.scene->height, filters);
     sumsTotal += aliaslab::seconds(t0);
-    double shared = 0;
-    acc->add(w.samples, 1, &seconds, &shared);
-    sharedTotal += shared;
+    acc->measureShares();
+    acc->add(w.samples, 1);
+    const std::vector<double>& seconds = acc->filterSeconds();
+    sharedTotal += acc->sharedSeconds();
     for (size_t k = 0; k < filters.size(); ++k) {
       t0 = std::chrono::steady_clock::now();
       metrics[k].add(acc->resolve(k).image);

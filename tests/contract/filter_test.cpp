@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "core/cpu.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "filter/filter.h"
@@ -116,7 +117,7 @@ TEST_P(FilterContract, EvalBatchEqualsEval) {
 TEST_P(FilterContract, EightLanesGiveTheFourLaneBits) {
   // FilterBatch's 8-lane path (CPUs with AVX2) and its 4-lane path give the same weights, bit for bit, so a
   // study's numbers do not depend on the CPU (the Gaussian included, whose weights are not eval()'s bits)
-  if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the 4-lane path runs";
+  if (!cpuFeatures().avx2) GTEST_SKIP() << "no AVX2 on this CPU: only the 4-lane path runs";
   const float r = filter->radius();
   const int n = int(std::ceil(2 * r)) + 2, count = 64, stride = FilterBatch::stride(count);
   const FilterBatch batch(*filter);
@@ -127,9 +128,10 @@ TEST_P(FilterContract, EightLanesGiveTheFourLaneBits) {
     cx[s] = std::floor(x[s] - r) - 0.5f, cy[s] = std::floor(y[s] - r) - 0.5f;
   }
   batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, eight.data());
-  filterimpl::eightLanesAllowed() = false;
-  batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, four.data());
-  filterimpl::eightLanesAllowed() = true;
+  {
+    const ScopedCpuFeatures sseOnly(CpuFeatures{});
+    batch.eval(count, x.data(), y.data(), cx.data(), cy.data(), n, four.data());
+  }
   size_t differ = 0, nonzero = 0;
   for (size_t k = 0; k < eight.size(); ++k)
     differ += std::memcmp(&eight[k], &four[k], sizeof(float)) != 0, nonzero += four[k] != 0;
@@ -306,7 +308,7 @@ TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
   // steps of about 1e-4 (every octant and both polynomials, the multiples of pi/2), random floats of every
   // exponent up to 1e38, both sides of Eigen's huge threshold (18838) in one group of 8 and apart, and
   // zeros, infinities and NaN
-  if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
+  if (!cpuFeatures().avx2) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
   std::vector<float> in;
   for (double v = -200; v < 200; v += 1.03e-4) in.push_back(float(v));
   HashRng rng(77);
@@ -322,7 +324,7 @@ TEST(FilterFacts, EightLaneCosIsEigensFourLaneCosBitForBit) {
 TEST(FilterFacts, EightLaneExpIsEigensFourLaneExpBitForBit) {
   // the Gaussian's batch (FilterBatch) must give the same bits with and without AVX2: every input from -110 (results
   // below float's normal range, the 2^m split of pldexp) to 100 in steps of about 1e-4, and the clamps
-  if (!filterimpl::cpuHasAvx2()) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
+  if (!cpuFeatures().avx2) GTEST_SKIP() << "no AVX2 on this CPU: the 8-lane path is not used";
   std::vector<float> in;
   for (double v = -110; v < 100; v += 1.01e-4) in.push_back(float(v));
   for (float v : {0.f, -0.f, 88.723f, -88.723f, 89.f, -89.f, -87.33654f, 1e-30f, -1e-30f, 1e30f, -1e30f}) in.push_back(v);

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/cpu.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "film/film.h"
@@ -148,11 +149,12 @@ TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
   for (const auto& f : owned) filters.push_back(f.get());
   for (int threads : {1, 3}) {
     Accumulator acc(37, 29, filters);
-    std::vector<double> seconds;
-    double shared = -1;
+    acc.measureShares();
     const auto t0 = std::chrono::steady_clock::now();
-    acc.add(b, threads, &seconds, &shared);
+    acc.add(b, threads);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const std::vector<double>& seconds = acc.filterSeconds();
+    const double shared = acc.sharedSeconds();
     ASSERT_EQ(seconds.size(), filters.size());
     // the shares add up to the call's wall time: each filter's own part plus 1/K of the shared rest
     double total = 0;
@@ -191,7 +193,8 @@ TEST(Film, Avx2AndSseKernelsSumBitForBitAlike) {
       auto f = makeFilter(name, r);
       std::vector<double> fast(4 * 23 * 19, 0.0), sse(fast);
       filmimpl::splatWeighted(b, *f, fast.data(), 1);
-      filmimpl::splatWeighted(b, *f, sse.data(), 1, false);
+      const ScopedCpuFeatures sseOnly(CpuFeatures{});
+      filmimpl::splatWeighted(b, *f, sse.data(), 1);
       EXPECT_TRUE(fast == sse) << f->describe();
     }
 }
@@ -232,7 +235,8 @@ TEST(Film, EightSampleSetUpMatchesOneByOneOnAwkwardSamples) {
       auto f = makeFilter(name, r);
       std::vector<double> fast(4 * static_cast<size_t>(w) * h, 0.0), plain(fast);
       filmimpl::splatWeighted(b, *f, fast.data(), 1);
-      filmimpl::splatWeighted(b, *f, plain.data(), 1, false);
+      const ScopedCpuFeatures sseOnly(CpuFeatures{});
+      filmimpl::splatWeighted(b, *f, plain.data(), 1);
       EXPECT_TRUE(fast == plain) << f->describe();
     }
 }
