@@ -13,7 +13,7 @@ Layout, a concept a module:
   palette.py         the one palette: each sampler's colour, each filter's marker (every chart, the page)
   degenerate.py      the rule that marks degenerate configurations (weight sums near zero) on the charts
   charts/            the study's charts, one module per chart family (the `charts` command)
-  study_rows.py      the columns of issue 29 load_study adds (deterministic, cost, per-seed values), the targets
+  study_rows.py      the columns load_study adds (deterministic, cost, per-seed values), the targets
   stats/             effect sizes and a margin of equivalence (paired within a sample set), heavy tails, the
                      answer by factor, strict fronts of error against time
   findings/          the findings generated from a study: numbers (claims) and text, for the page and README

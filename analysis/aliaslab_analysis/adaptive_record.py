@@ -1,4 +1,4 @@
-"""The adaptive samplers against their base, before and after they kept the base's stratification (issue 48 item 4):
+"""The adaptive samplers against their base, before and after they kept the base's stratification:
 the tables and the chart of results/adaptive.md's section "Keeping the base's stratification", generated from
 the sweeps' CSVs (every number there comes from here; analysis/tests/test_adaptive_record.py recomputes them).
 

@@ -1,4 +1,4 @@
-"""An animated image of a short loop of frames (issue 33 item 4; definitions docs/science.md "Motion"): for one
+"""An animated image of a short loop of frames (definitions docs/science.md "Motion"): for one
 scene, each method's frames beside the reference's, the signed error of each frame against that frame's
 reference, and each frame's error (the mean squared difference over pixels and channels) written on it.
 

@@ -1,4 +1,4 @@
-"""The columns of issue 29 that load_study adds to a study's rows, with the fallbacks for older CSVs, and
+"""The columns that load_study adds to a study's rows, with the fallbacks for older CSVs, and
 the study's targets in their order.
 
   deterministic  the CSV's column (1: every seed gave the same image, the fixed grid), else inferred:

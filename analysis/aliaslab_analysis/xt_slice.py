@@ -1,4 +1,4 @@
-"""x-t slices (issue 47 item 4; definitions docs/science.md "Motion"): one image row followed over the frames of
+"""x-t slices (definitions docs/science.md "Motion"): one image row followed over the frames of
 a moving camera, the frames registered to the content, stacked top to bottom (frame 0 at the top).
 
 The frames are rendered by the project's raytracer, `-frames F -motion dx,dy -register`: frame t is written moved

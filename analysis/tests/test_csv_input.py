@@ -1,4 +1,4 @@
-"""The analysis scripts' checks of a study CSV (issue 31; study_csv.read_study_csv / load_study).
+"""The analysis scripts' checks of a study CSV (study_csv.read_study_csv / load_study).
 
 A cut last line, a row with another number of fields, an empty required value or a non-finite size
 is refused (exit 2, a message naming the file and line, no traceback); values beyond what float

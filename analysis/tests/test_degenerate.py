@@ -1,4 +1,4 @@
-"""The analysis scripts on legitimate degenerate data and on broken data (issue 21, class 6).
+"""The analysis scripts on legitimate degenerate data and on broken data.
 
 Legitimate data (every error 0, aliasing negative everywhere, NaN / Inf values) is drawn, with
 empty panels saying so, and exits 0; broken data gets exit 2 and a message naming the file and

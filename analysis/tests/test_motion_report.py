@@ -1,4 +1,4 @@
-"""The motion section (report/motion.py) and the loop of frames (motion_loop.py), issues 33 and 47.
+"""The motion section (report/motion.py) and the loop of frames (motion_loop.py).
 
 - facts() on a hand-made study whose answers are known by design (a NaN is left out, never a traceback);
 - on the committed motion study (results/motion/study/study.csv), every number of the section's prose is

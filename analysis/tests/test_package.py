@@ -1,4 +1,4 @@
-"""The analysis is a package (issue 28 item 7): one entry point, no sys.path edits, a concept a module.
+"""The analysis is a package: one entry point, no sys.path edits, a concept a module.
 
 `python3 -m analysis COMMAND` runs from the repository root, the two scripts the C++ experiments run
 by path (convergence_chart.py, pointset_chart.py) run from any folder, and no file edits the import
@@ -46,6 +46,14 @@ class Package(unittest.TestCase):
             self.assertIn(f"usage: python3 -m analysis {command}", r2.stdout)
         self.assertEqual(python(["-m", "analysis", "nosuch"], REPO).returncode, 2)
         self.assertEqual(python(["-m", "analysis"], REPO).returncode, 2)
+
+    def test_an_interpreter_without_pandas_is_told_how_to_run(self):
+        # -S: no site-packages, so numpy, pandas and matplotlib cannot be imported
+        r = python(["-S", "-m", "analysis", "report", "somewhere"], REPO)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+        self.assertIn("lacks numpy, pandas, matplotlib", r.stderr)
+        self.assertIn("/usr/bin/python3 -m analysis report somewhere", r.stderr)
 
     def test_the_scripts_the_experiments_run_work_from_any_folder(self):
         with tempfile.TemporaryDirectory() as elsewhere:

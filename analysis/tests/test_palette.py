@@ -1,4 +1,4 @@
-"""One palette (issue 30 item 3): every chart that colours samplers takes each sampler's colour from
+"""One palette: every chart that colours samplers takes each sampler's colour from
 palette.py, whatever samplers the study holds and in whatever order, and each filter's marker likewise.
 
 Behavioural, not a grep: each chart module draws a small synthetic study with pyplot's close() intercepted, and

@@ -1,4 +1,4 @@
-"""The report (issue 14 item 3) and the study loader (issue 16) on tiny synthetic studies.
+"""The report and the study loader on tiny synthetic studies.
 
 The report is rendered once for a results folder that looks like a user's run (a merged CSV with
 its two shard CSVs beside it, images, a benchmark and a fuzzing record): its findings come first,
@@ -239,7 +239,7 @@ class Loader(unittest.TestCase):
             raw = pd.read_csv(csv)
             self.assertEqual(list(df["error"]), list(raw["mse_target"]))
             self.assertEqual(list(df["error_se"]), list(raw["mse_target_se"]))
-            # a CSV of issue 16's columns: the fallbacks of issue 29's columns, each said in words
+            # a CSV of the older columns: the fallbacks of the newer columns, each said in words
             self.assertEqual([n.split(":")[0] for n in notes], ["No deterministic column", "No cpu_ms column",
                                                                 "No mse_target_seeds column"])
             # blur + cross = mse_target - noise - aliasing (the synthetic law holds exactly)

@@ -1,4 +1,4 @@
-"""The comparison viewer's data (issue 30).
+"""The comparison viewer's data.
 
 The committed viewer data of the presented study (results/viewer) against its CSV, read here with the csv module
 (not the package's loader): every value the viewer displays beside an image equals the CSV row's. The image

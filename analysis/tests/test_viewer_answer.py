@@ -1,4 +1,4 @@
-"""The viewer holds the answer (issue 45 item 1): every method answer.csv names (equivalent to the best, the best
+"""The viewer holds the answer: every method answer.csv names (equivalent to the best, the best
 of each sampler) is among the committed viewer's configurations, found from answer.csv with the csv module,
 independently of the viewer's own choice (viewer/answer.py)."""
 import csv

@@ -1,4 +1,4 @@
-"""x-t slices (xt_slice.py, report/motion_xt.py; issue 47 item 4).
+"""x-t slices (xt_slice.py, report/motion_xt.py).
 
 - Registration, through the raytracer (`-frames -motion -register`): a point-sampled grating below Nyquist
   (0.375 cycles/pixel, band-limited) moving 0.25 px per frame gives a slice whose rows equal each other away from

@@ -1,4 +1,4 @@
-"""The findings of a study, generated from its CSV (issue 29 item 7): structured numbers and the text that
+"""The findings of a study, generated from its CSV: structured numbers and the text that
 states them, for the report's page and for results/README.md's findings section.
 
 compute(df, notes) -> [Finding]. A Finding has a `key`, a `title`, a `text` (Markdown-light: **bold** and

@@ -38,7 +38,7 @@ def chart_png_bytes(path):
             return f.read()
     out = io.BytesIO()
     with Image.open(path) as im:
-        if im.mode == "P":  # already palette-coded (figures.save_figure does it since issue 30)
+        if im.mode == "P":  # already palette-coded (figures.save_figure does it)
             with open(path, "rb") as f:
                 return f.read()
         im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)

@@ -236,7 +236,7 @@ SECTIONS = [
     motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
-    adaptive_section,  # the adaptive samplers against their base: wins, losses and why (issue 32)
+    adaptive_section,  # the adaptive samplers against their base: wins, losses and why
     stability_section,
     lambda c: isolation_section(c.results, c.embed),
     engineering_section,

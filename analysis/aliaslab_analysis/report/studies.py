@@ -1,4 +1,4 @@
-"""The other studies a page links to (issue 29 item 9): every folder directly under the results folder that
+"""The other studies a page links to: every folder directly under the results folder that
 holds a study CSV (study/study.csv or study.csv), linked to its page (index.html) or else to the CSV, described
 from its CSV (scenes,
 size, spp, seeds, references, targets), and the repository's presented study (results/index.html) when the

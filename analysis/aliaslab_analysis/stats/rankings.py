@@ -2,7 +2,7 @@
 
 METHOD  the columns naming a method: sampler, filter, radius, shape parameters, reconstruction, pre-filter
 CELL    the columns naming a cell whose rows are compared with each other: target, scene, spp
-(The tie groups of issue 29 gave way to effect sizes with a margin of equivalence, issue 44: stats/effect.py;
+(Methods are compared by effect sizes with a margin of equivalence: stats/effect.py;
 stats/ties.py keeps the standard error of a paired or independent difference, which other sections use.)
 """
 METHOD = ["sampler", "filter_name", "radius", "filter_params", "reconstruction", "prefilter"]

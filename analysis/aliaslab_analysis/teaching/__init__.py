@@ -1,2 +1,2 @@
-"""The teaching strand of the page (issue 30, item 2): facts.py (the numbers, from the CSV), figures.py (the
+"""The teaching strand of the page: facts.py (the numbers, from the CSV), figures.py (the
 pictures, from the study's images), build.py (the HTML fragment RESULTS/viewer/teaching.html)."""

@@ -1,4 +1,4 @@
-"""The teaching strand (issue 30, item 2): written by `python3 -m analysis viewer` as RESULTS/viewer/teaching.html,
+"""The teaching strand: written by `python3 -m analysis viewer` as RESULTS/viewer/teaching.html,
 a fragment the page includes after the viewer, its pictures embedded. Built from the study's own images (the
 viewer's renders, the references) and the point sets of RESULTS/pointsets; every number in its prose is computed
 from the CSV here (facts.py)."""

@@ -1,4 +1,4 @@
-"""The comparison viewer of the page (issue 30): the study's own images side by side on the same region.
+"""The comparison viewer of the page: the study's own images side by side on the same region.
 
   answer.py   the methods the answer names (as answer.csv: equivalent to the best, best of each sampler) and
               the default view

@@ -1,4 +1,4 @@
-"""The viewer served on localhost (issue 45 item 3): `python3 -m analysis viewer RESULTS --study CSV --serve
+"""The viewer served on localhost: `python3 -m analysis viewer RESULTS --study CSV --serve
 [--port N] [--exr FILE ...]` serves the page folder RESULTS (its viewer as exported) over http://127.0.0.1 and
 answers the viewer's requests under /alv-api/:
 
