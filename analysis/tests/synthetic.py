@@ -24,7 +24,8 @@ import math
 import csv
 import os
 
-from ..aliaslab_analysis import figures, study_csv
+from ..aliaslab_analysis.charts import figures
+from ..aliaslab_analysis.io import study_csv
 
 SAMPLERS = {"random": 0.02, "jittered": 0.01, "uniform": 0.0}
 FILTERS = {"box": 0.004, "lanczos": 0.002}
@@ -112,7 +113,7 @@ def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scene
 def tiny_png(path, value=0.5):
     """A 6 x 4 grey PNG (stands in for a sweep image)."""
     import numpy as np
-    from ..aliaslab_analysis.figures import plt
+    from ..aliaslab_analysis.charts.figures import plt
     os.makedirs(os.path.dirname(path), exist_ok=True)
     plt.imsave(path, np.full((4, 6), value), cmap="gray", vmin=0, vmax=1)
     return path

@@ -10,7 +10,7 @@ import tempfile
 import types
 import unittest
 
-from ..aliaslab_analysis import study_csv, study_rows
+from ..aliaslab_analysis.io import study_csv, study_rows
 from ..aliaslab_analysis.report import adaptive
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

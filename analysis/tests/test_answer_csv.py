@@ -8,7 +8,7 @@ import tempfile
 import unittest
 
 from . import recompute as rc, recompute_answer as ra
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.report import answer_csv
 from ..aliaslab_analysis.stats import factors

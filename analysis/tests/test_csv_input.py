@@ -12,10 +12,10 @@ import tempfile
 import unittest
 
 from . import synthetic
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import cli as report_cli
-from ..aliaslab_analysis.errors import InputError
+from ..aliaslab_analysis.io.errors import InputError
 
 
 def run(main, args):

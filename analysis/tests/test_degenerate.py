@@ -14,7 +14,8 @@ import unittest
 import pandas as pd
 
 from . import synthetic
-from ..aliaslab_analysis import compare, convergence_chart, filter_profiles
+from ..aliaslab_analysis.findings import compare
+from ..aliaslab_analysis.charts import convergence_experiment, filter_profiles
 from ..aliaslab_analysis.charts import cli as charts_cli
 
 METRICS = ["mse", "aliasing", "noise", "mse_area", "mse_target", "blur", "cross", "mse_se", "noise_se",
@@ -137,20 +138,20 @@ class BrokenFiles(unittest.TestCase):
         csv = self.path("c.csv")
         rows = [("random", "disk", n, 1.0 / n, 4) for n in (1, 2, 4)]
         rows[1] = ("random", "disk", 2, "garbage", 4)
-        pd.DataFrame(rows, columns=convergence_chart.COLUMNS).to_csv(csv, index=False)
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv, "rmse", "line 3")
+        pd.DataFrame(rows, columns=convergence_experiment.COLUMNS).to_csv(csv, index=False)
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv, "rmse", "line 3")
 
     def test_convergence_chart_on_binary_garbage(self):
         csv = self.path("c.csv")
         with open(csv, "wb") as f:
             f.write(bytes(range(256)) * 8)
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv)
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv)
 
     def test_convergence_chart_on_text_that_is_not_its_csv(self):
         csv = self.path("c.csv")
         with open(csv, "w") as f:
             f.write("hello world\nthis is not a CSV, at all\n")
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv, "missing column")
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv, "missing column")
 
     def test_filter_profiles_names_file_and_column_of_a_garbage_value(self):
         csv = self.path("p.csv")

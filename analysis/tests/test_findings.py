@@ -12,7 +12,8 @@ import numpy as np
 
 from . import interface3, recompute as rc, recompute_answer as ra, synthetic
 from .findings_claims import ANSWER_KINDS, answer_claim
-from ..aliaslab_analysis import findings, study_csv
+from ..aliaslab_analysis import findings
+from ..aliaslab_analysis.io import study_csv
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 COMMITTED = os.path.join(REPO, "results", "study", "study.csv")

@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.stats import fronts
 

@@ -15,7 +15,8 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import errors, motion_loop
+from ..aliaslab_analysis.io import errors
+from ..aliaslab_analysis.charts import motion_loop
 from ..aliaslab_analysis.report import motion
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

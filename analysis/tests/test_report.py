@@ -16,7 +16,9 @@ import unittest
 import pandas as pd
 
 from . import synthetic
-from ..aliaslab_analysis import findings, fits, study_csv
+from ..aliaslab_analysis import findings
+from ..aliaslab_analysis.stats import fits
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import cli as report_cli
 from ..aliaslab_analysis.report import elements as report_elements

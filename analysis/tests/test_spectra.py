@@ -10,7 +10,8 @@ import tempfile
 import unittest
 
 from . import synthetic
-from ..aliaslab_analysis import figures, spectra, study_csv
+from ..aliaslab_analysis.charts import figures, spectra
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.report import cli as report_cli
 from .test_report import links, run
 

@@ -14,8 +14,9 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis.viewer import export, flip, plan, section
-from ..aliaslab_analysis.viewer.exr import read_exr
+from ..aliaslab_analysis.viewer import export, flip, plan
+from ..aliaslab_analysis.report import viewer_section as section
+from ..aliaslab_analysis.io.exr import read_exr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")

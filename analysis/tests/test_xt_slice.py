@@ -15,10 +15,10 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis import xt_slice
-from ..aliaslab_analysis.motion_loop import display
-from ..aliaslab_analysis.study_csv import load_study
-from ..aliaslab_analysis.viewer.exr import read_exr, read_exrs
+from ..aliaslab_analysis.viewer import xt_slice
+from ..aliaslab_analysis.charts.motion_loop import display
+from ..aliaslab_analysis.io.study_csv import load_study
+from ..aliaslab_analysis.io.exr import read_exr, read_exrs
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RAYTRACER = os.path.join(REPO, "build", "bin", "raytracer")

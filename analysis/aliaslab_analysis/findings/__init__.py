@@ -18,7 +18,8 @@ over csv rows, no pandas groupby) and compare.
               within error, flagged and heavy-tailed rows
   grid.py     the fixed grid ranked as deterministic, its alignment, the shifted grid; samplers against random
   prefilter.py  pre-filtering against plain sampling (studies with pre-filtered rows)
-  render.py   the findings as HTML paragraphs or a Markdown section
+  compare.py  two study CSVs compared (`compare`; exit 1 on an accuracy regression)
+(the findings as HTML or Markdown: report/findings_text.py)
 """
 from . import answer, factors, grid, prefilter, study, terms, time
 from .study import Finding, Study

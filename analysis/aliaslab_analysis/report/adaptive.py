@@ -27,7 +27,7 @@ import os
 
 import numpy as np
 
-from .. import figures
+from ..charts import figures
 from ..stats import ties
 from .elements import figure, image_src
 

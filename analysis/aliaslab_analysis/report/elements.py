@@ -6,7 +6,8 @@ import html
 import io
 import os
 
-from .. import errors, palette
+from ..io import errors
+from ..charts import palette
 from . import navigation
 
 CSS = """body{font-family:sans-serif;margin:0 auto;max-width:1250px;padding:1em 1.5em;background:#fafafa;

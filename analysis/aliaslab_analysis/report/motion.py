@@ -18,8 +18,8 @@ import os
 
 import numpy as np
 
-from .. import figures, palette
-from ..figures import plt
+from ..charts import figures, palette
+from ..charts.figures import plt
 from ..stats import ties
 from .elements import figure
 from .motion_xt import read_panels, xt_figure

@@ -5,8 +5,8 @@ import os
 
 import numpy as np
 
-from .. import figures, spectra
-from ..charts.decomposition import components
+from ..charts import figures, spectra
+from ..io.study_rows import components
 from .elements import figure
 from .findings import method_name
 

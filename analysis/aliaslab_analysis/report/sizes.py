@@ -10,7 +10,7 @@ import os
 
 import numpy as np
 
-from .. import study_csv
+from ..io import study_csv
 from ..findings.study import facts, plural
 from ..stats import factors, sizes
 

@@ -9,7 +9,7 @@ import os
 import pandas as pd
 
 from ..findings.study import is_quick
-from ..study_rows import targets
+from ..io.study_rows import targets
 
 COLUMNS = ["scene", "width", "height", "spp", "seeds", "ref_spp", "sampler"]
 

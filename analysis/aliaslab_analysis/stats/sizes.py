@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .. import study_rows
+from ..io import study_rows
 from . import effect, equivalence, factors
 from .rankings import CELL, METHOD
 

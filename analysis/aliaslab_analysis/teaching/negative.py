@@ -179,7 +179,7 @@ def markdown(c, source):
 
 
 def main(argv=None):
-    from ..study_csv import load_study
+    from ..io.study_csv import load_study
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 1:
         print("usage: python3 -m analysis.aliaslab_analysis.teaching.negative STUDY.csv", file=sys.stderr)

@@ -26,10 +26,11 @@ from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 
 import numpy as np
 
-from .. import errors, figures
+from ..io import errors
+from ..charts import figures
 from . import render, serve_xt
 from .encoding import channels, png_entry
-from .exr import read_exr
+from ..io.exr import read_exr
 from .export import SceneExport
 from .view import key_id
 from .flip import flip_maps, map_path

@@ -13,8 +13,10 @@ import base64
 import io
 import os
 
-from .. import errors, figures, xt_slice
-from .exr import read_exrs
+from ..io import errors
+from ..charts import figures
+from . import xt_slice
+from ..io.exr import read_exrs
 from .plan import image_stem
 from .view import key_id
 
