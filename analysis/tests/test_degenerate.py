@@ -4,8 +4,6 @@ Legitimate data (every error 0, aliasing negative everywhere, NaN / Inf values) 
 empty panels saying so, and exits 0; broken data gets exit 2 and a message naming the file and
 the column, never a traceback; compare.py counts a NaN mse as a regression.
 """
-import contextlib
-import io
 import math
 import os
 import tempfile
@@ -14,23 +12,13 @@ import unittest
 import pandas as pd
 
 from . import synthetic
+from .synthetic import run
 from ..aliaslab_analysis.findings import compare
 from ..aliaslab_analysis.charts import convergence_experiment, filter_profiles
 from ..aliaslab_analysis.charts import cli as charts_cli
 
 METRICS = ["mse", "aliasing", "noise", "mse_area", "mse_target", "blur", "cross", "mse_se", "noise_se",
            "aliasing_se", "mse_target_se"]
-
-
-def run(main, args):
-    """(exit status, stdout, stderr) of main(args); an uncaught exception fails the test as an error."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(args) or 0
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
 
 
 def is_png(path):

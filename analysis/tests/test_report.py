@@ -5,7 +5,6 @@ its two shard CSVs beside it, images, a benchmark and a fuzzing record): its fin
 every scene has its decomposition chart, every linked file exists, the engineering records are on
 their own page, and the study is named as the user's study, not "the reference study".
 """
-import contextlib
 import io
 import math
 import os
@@ -16,6 +15,7 @@ import unittest
 import pandas as pd
 
 from . import synthetic
+from .synthetic import run
 from ..aliaslab_analysis import findings
 from ..aliaslab_analysis.stats import fits
 from ..aliaslab_analysis.io import study_csv
@@ -24,16 +24,6 @@ from ..aliaslab_analysis.report import cli as report_cli
 from ..aliaslab_analysis.report import elements as report_elements
 from ..aliaslab_analysis.report import findings as report_findings
 from ..aliaslab_analysis.report import page as report_page
-
-
-def run(main, args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(args) or 0
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
 
 
 def links(page):
@@ -47,14 +37,8 @@ class Report(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "mine")
         cls.csv = synthetic.make_results(cls.results)
-        code, out, err = run(report_cli.main, [cls.results, "--link"])
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.linked = f.read()
-        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts", "--embed"])  # embedded
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.embedded = f.read()
+        cls.linked = synthetic.report_page(cls.results, "--link")
+        cls.embedded = synthetic.report_page(cls.results, "--reuse-charts", "--embed")
         with open(os.path.join(cls.results, "engineering.html"), encoding="utf-8") as f:
             cls.engineering = f.read()
 

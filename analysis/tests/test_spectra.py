@@ -29,10 +29,7 @@ class WithSpectra(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "r")
         cls.csv = synthetic.make_results(cls.results, spectra=True)
-        code, out, err = run(report_cli.main, [cls.results, "--link"])
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.page = f.read()
+        cls.page = synthetic.report_page(cls.results, "--link")
 
     @classmethod
     def tearDownClass(cls):

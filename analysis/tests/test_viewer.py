@@ -238,6 +238,17 @@ class ImageSizes(unittest.TestCase):
             tag = build.img(path, "cap")
             self.assertIn("width='13' height='7'", tag)
 
+    def test_the_teaching_command_needs_the_viewers_renders(self):
+        from . import synthetic
+        from ..aliaslab_analysis.teaching import cli
+        with tempfile.TemporaryDirectory() as tmp:
+            study = os.path.join(tmp, "study.csv")
+            synthetic.write(study)
+            code, _, err = synthetic.run(cli.main, [tmp, "--study", study])
+            self.assertEqual(code, 2)
+            self.assertIn("run `python3 -m analysis viewer", err)
+            self.assertFalse(os.path.exists(os.path.join(tmp, "viewer", "teaching.html")))
+
 
 class Section(unittest.TestCase):
     def test_no_data_no_section(self):
