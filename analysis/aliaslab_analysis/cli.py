@@ -4,14 +4,16 @@ A command is one module's main(argv, prog), which keeps its own options; unknown
 """
 import sys
 
-from . import compare, convergence_chart, filter_profiles, pointset_chart
+from .findings import compare
+from .charts import convergence_experiment, filter_profiles, pointsets
 from .charts import cli as charts_cli
 from .report import cli as report_cli
+from .teaching import cli as teaching_cli
 from .viewer import cli as viewer_cli
 
 COMMANDS = {"report": report_cli.main, "charts": charts_cli.main, "compare": compare.main,
-            "convergence": convergence_chart.main, "pointsets": pointset_chart.main,
-            "filters": filter_profiles.main, "viewer": viewer_cli.main}
+            "convergence": convergence_experiment.main, "pointsets": pointsets.main,
+            "filters": filter_profiles.main, "viewer": viewer_cli.main, "teaching": teaching_cli.main}
 USAGE = """usage: {prog} COMMAND [options]      (COMMAND -h lists its options)
 
   report       the HTML report of a study, findings first
@@ -21,6 +23,7 @@ USAGE = """usage: {prog} COMMAND [options]      (COMMAND -h lists its options)
   pointsets    the spectra and discrepancy charts of the `pointsets` experiment
   filters      filter profiles and frequency responses from `filterprofile`
   viewer       render and export the comparison viewer's images of a study (then `report` shows it)
+  teaching     the teaching strand of a study's page, from the viewer's renders (after `viewer`)
 """
 
 

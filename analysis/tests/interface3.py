@@ -1,5 +1,5 @@
 """Development and test data only (never presented as data): converts a study CSV of today's sweep into the
-shape of issue 29's Interface 3, with plausible invented values for the new columns.
+shape of the study CSV's Interface 3, with plausible invented values for the new columns.
 
 convert(src, dst) writes, for every configuration of src:
   - three rows, targets box:0.5 (mse_target as in src), gaussian:1.5 and lanczos:3 (mse_target plus an

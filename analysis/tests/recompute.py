@@ -1,4 +1,4 @@
-"""An independent recomputation of the findings' numbers (issue 29 item 7), for test_findings.py: the study
+"""An independent recomputation of the findings' numbers, for test_findings.py: the study
 CSV read with the csv module, plain loops and numpy, no pandas and nothing of aliaslab_analysis. Each
 function follows the rule stated in the module it checks (stats/ties.py, rankings.py, fronts.py,
 bootstrap.py, findings/*.py), written again from the statement."""

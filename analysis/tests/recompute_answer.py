@@ -1,4 +1,4 @@
-"""answer.csv recomputed by another path (issue 44), for test_answer_csv.py and test_findings.py: the study CSV
+"""answer.csv recomputed by another path, for test_answer_csv.py and test_findings.py: the study CSV
 read by recompute.read (the csv module), plain loops and numpy, nothing of aliaslab_analysis. Each step follows
 the rule as docs/science.md ("Answers a practitioner can act on") and the module docs state it, written again:
 Student's t quantile by Gauss-Legendre integration of the density and bisection (the package uses the

@@ -20,11 +20,15 @@ default), against the common target box:0.5 (the pixel area):
 With prefilter=True every configuration also comes pre-filtered ('footprint'):
 aliasing / 10 and trace_ms * 1.5.
 """
-import math
+import contextlib
 import csv
+import io
+import math
 import os
 
-from ..aliaslab_analysis import figures, study_csv
+from ..aliaslab_analysis.charts import figures
+from ..aliaslab_analysis.io import study_csv
+from ..aliaslab_analysis.report import cli as report_cli
 
 SAMPLERS = {"random": 0.02, "jittered": 0.01, "uniform": 0.0}
 FILTERS = {"box": 0.004, "lanczos": 0.002}
@@ -112,7 +116,7 @@ def write(path, scale=1.0, modify=None, new_columns=True, prefilter=False, scene
 def tiny_png(path, value=0.5):
     """A 6 x 4 grey PNG (stands in for a sweep image)."""
     import numpy as np
-    from ..aliaslab_analysis.figures import plt
+    from ..aliaslab_analysis.charts.figures import plt
     os.makedirs(os.path.dirname(path), exist_ok=True)
     plt.imsave(path, np.full((4, 6), value), cmap="gray", vmin=0, vmax=1)
     return path
@@ -219,3 +223,22 @@ def make_results(folder, new_columns=True, prefilter=False, shards=True, enginee
         with open(os.path.join(folder, "fuzzing.md"), "w") as f:
             f.write("# Fuzzing\n\n| target | executions |\n|---|---:|\n| fuzz_scene | 1000 |\n")
     return csv_path
+
+
+def run(main, args):
+    """(exit status, stdout, stderr) of main(args); an uncaught exception fails the test as an error."""
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        try:
+            code = main(args) or 0
+        except SystemExit as e:
+            code = e.code
+    return code, out.getvalue(), err.getvalue()
+
+
+def report_page(results, *args):
+    """The page `report RESULTS ARGS` writes (RESULTS/index.html); the report must succeed."""
+    code, _, err = run(report_cli.main, [results, *args])
+    assert code == 0, err
+    with open(os.path.join(results, "index.html"), encoding="utf-8") as f:
+        return f.read()

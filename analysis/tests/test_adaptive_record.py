@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from analysis.aliaslab_analysis import adaptive_record as ar
+from ..aliaslab_analysis.report import adaptive_record as ar
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 DIR = os.path.join(REPO, "results", "adaptive", "progressive")

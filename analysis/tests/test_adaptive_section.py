@@ -1,4 +1,4 @@
-"""The report's adaptive section (report/adaptive.py, issue 32 item 3): every number it states is recomputed
+"""The report's adaptive section (report/adaptive.py): every number it states is recomputed
 from the committed quick study's CSV by another path (the csv module and plain loops, the rule written again
 from the module's statement), under every target; the verdict rule can say each of wins, loses and tied;
 the losing cells show their density and error images."""
@@ -10,7 +10,7 @@ import tempfile
 import types
 import unittest
 
-from ..aliaslab_analysis import study_csv, study_rows
+from ..aliaslab_analysis.io import study_csv, study_rows
 from ..aliaslab_analysis.report import adaptive
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

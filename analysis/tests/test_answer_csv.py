@@ -1,4 +1,4 @@
-"""answer.csv (issue 44 item 4): written by the report's writer from the committed studies, read back, and every
+"""answer.csv: written by the report's writer from the committed studies, read back, and every
 row (ratio, interval, verdict, heavy_tailed; per scene and across scenes) compared with recompute_answer.py's
 independent recomputation from the study CSV; the leading samplers of the page's answer table likewise. And
 the issue's example: fence, 4 spp, jittered mitchell r=1 is heavy-tailed and never equivalent."""
@@ -8,7 +8,7 @@ import tempfile
 import unittest
 
 from . import recompute as rc, recompute_answer as ra
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.report import answer_csv
 from ..aliaslab_analysis.stats import factors

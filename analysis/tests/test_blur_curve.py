@@ -8,7 +8,7 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts.blur_curve import SIGMAS, blur_curve, white_share
 
 HERE = os.path.dirname(os.path.abspath(__file__))

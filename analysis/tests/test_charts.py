@@ -11,8 +11,8 @@ import pandas as pd
 import math
 
 from . import recompute as rc, synthetic
-from ..aliaslab_analysis import study_csv
-from ..aliaslab_analysis import convergence_chart, figures, filter_profiles, pointset_chart
+from ..aliaslab_analysis.io import study_csv
+from ..aliaslab_analysis.charts import (convergence_experiment, figures, filter_profiles, pointsets)
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import markdown as report_markdown
 from ..aliaslab_analysis.report import page as report_page
@@ -155,13 +155,13 @@ class BadInput(unittest.TestCase):
         self.assertEqual(exit_code(charts_cli.main, [csv, "--out", os.path.join(blocker, "sub")]), 2)
         conv = self.path("c.csv")
         pd.DataFrame([("random", "disk", n, 1.0 / n, 4) for n in (1, 2, 4)],
-                     columns=convergence_chart.COLUMNS).to_csv(conv, index=False)
-        self.assertEqual(exit_code(convergence_chart.main, [conv, "--out", os.path.join(blocker, "sub")]), 2)
+                     columns=convergence_experiment.COLUMNS).to_csv(conv, index=False)
+        self.assertEqual(exit_code(convergence_experiment.main, [conv, "--out", os.path.join(blocker, "sub")]), 2)
 
     def test_header_only_inputs_are_no_data_rows(self):
         conv = self.path("c.csv")
-        pd.DataFrame(columns=convergence_chart.COLUMNS).to_csv(conv, index=False)
-        self.assertEqual(exit_code(convergence_chart.main, [conv, "--out", self.path("o")]), 2)
+        pd.DataFrame(columns=convergence_experiment.COLUMNS).to_csv(conv, index=False)
+        self.assertEqual(exit_code(convergence_experiment.main, [conv, "--out", self.path("o")]), 2)
         prof = self.path("p.csv")
         pd.DataFrame(columns=filter_profiles.COLUMNS).to_csv(prof, index=False)
         self.assertEqual(exit_code(filter_profiles.main, ["--csv", prof, "--out", self.path("o")]), 2)
@@ -169,7 +169,7 @@ class BadInput(unittest.TestCase):
         os.makedirs(ps)
         open(os.path.join(ps, "pointsets.csv"), "w").write("sampler,n\n")
         open(os.path.join(ps, "spectra.csv"), "w").write("sampler,n,sets,k,k_norm,power\n")
-        self.assertEqual(exit_code(pointset_chart.main, [ps, "--out", ps]), 2)
+        self.assertEqual(exit_code(pointsets.main, [ps, "--out", ps]), 2)
 
     def test_every_markdown_table_of_a_file_becomes_its_own_html_table(self):
         text = ("| a | b |\n|---|---|\n| 1 | **2** |\n\nsome text\n\n| c |\n|---|\n| 3 |\n"
@@ -189,8 +189,8 @@ class OtherCharts(unittest.TestCase):
                     for f, c in (("disk", 0.5), ("gaussian", 0.2)) for n in (1, 2, 4, 8, 16, 48, 64)]
             conv = os.path.join(tmp, "convergence")
             os.makedirs(conv)
-            pd.DataFrame(rows, columns=convergence_chart.COLUMNS).to_csv(os.path.join(conv, "c.csv"), index=False)
-            convergence_chart.main([os.path.join(conv, "c.csv"), "--out", conv, "--fit-min", "1"])
+            pd.DataFrame(rows, columns=convergence_experiment.COLUMNS).to_csv(os.path.join(conv, "c.csv"), index=False)
+            convergence_experiment.main([os.path.join(conv, "c.csv"), "--out", conv, "--fit-min", "1"])
             # Point-set tables.
             ps = os.path.join(tmp, "pointsets")
             os.makedirs(ps)
@@ -202,7 +202,7 @@ class OtherCharts(unittest.TestCase):
                          columns=["sampler", "n", "sets", "k", "k_norm", "power"]).to_csv(
                 os.path.join(ps, "spectra.csv"), index=False)
             try:
-                pointset_chart.main([ps, "--out", ps, "--svg"])  # the one command asked for SVG here
+                pointsets.main([ps, "--out", ps, "--svg"])  # the one command asked for SVG here
             finally:
                 figures.write_svg(False)
             # Filter profiles.

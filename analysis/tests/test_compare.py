@@ -7,7 +7,7 @@ import tempfile
 import unittest
 
 from . import synthetic
-from ..aliaslab_analysis import compare
+from ..aliaslab_analysis.findings import compare
 
 
 def run(*args):

@@ -6,8 +6,8 @@ import math
 import os
 import unittest
 
-from analysis.aliaslab_analysis.findings import contract
-from analysis.aliaslab_analysis.study_csv import load_study
+from ..aliaslab_analysis.findings import contract
+from ..aliaslab_analysis.io.study_csv import load_study
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 STUDIES = [os.path.join(REPO, "results", p, "study.csv") for p in ("presented", "study", "negative_control")]
@@ -70,7 +70,7 @@ class Contract(unittest.TestCase):
         self.assertTrue(bad)
         self.assertTrue(all(c["sampler"] == "jittered" for c in bad))
         self.assertIn("violated", f.text)
-        from analysis.aliaslab_analysis.report.contract import contract_section
+        from ..aliaslab_analysis.report.contract import contract_section
 
         class C:
             pass

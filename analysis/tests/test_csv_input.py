@@ -1,31 +1,21 @@
-"""The analysis scripts' checks of a study CSV (issue 31; study_csv.read_study_csv / load_study).
+"""The analysis scripts' checks of a study CSV (study_csv.read_study_csv / load_study).
 
 A cut last line, a row with another number of fields, an empty required value or a non-finite size
 is refused (exit 2, a message naming the file and line, no traceback); values beyond what float
 images can give (huge but finite errors, which made matplotlib overflow) are noted and left out;
 the nonfinite_samples column is optional (older CSVs: unknown) and a non-zero count is noted.
 """
-import contextlib
 import io
 import os
 import tempfile
 import unittest
 
 from . import synthetic
-from ..aliaslab_analysis import study_csv
+from .synthetic import run
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import cli as report_cli
-from ..aliaslab_analysis.errors import InputError
-
-
-def run(main, args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(args) or 0
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
+from ..aliaslab_analysis.io.errors import InputError
 
 
 class CsvInput(unittest.TestCase):

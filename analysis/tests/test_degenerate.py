@@ -1,11 +1,9 @@
-"""The analysis scripts on legitimate degenerate data and on broken data (issue 21, class 6).
+"""The analysis scripts on legitimate degenerate data and on broken data.
 
 Legitimate data (every error 0, aliasing negative everywhere, NaN / Inf values) is drawn, with
 empty panels saying so, and exits 0; broken data gets exit 2 and a message naming the file and
 the column, never a traceback; compare.py counts a NaN mse as a regression.
 """
-import contextlib
-import io
 import math
 import os
 import tempfile
@@ -14,22 +12,13 @@ import unittest
 import pandas as pd
 
 from . import synthetic
-from ..aliaslab_analysis import compare, convergence_chart, filter_profiles
+from .synthetic import run
+from ..aliaslab_analysis.findings import compare
+from ..aliaslab_analysis.charts import convergence_experiment, filter_profiles
 from ..aliaslab_analysis.charts import cli as charts_cli
 
 METRICS = ["mse", "aliasing", "noise", "mse_area", "mse_target", "blur", "cross", "mse_se", "noise_se",
            "aliasing_se", "mse_target_se"]
-
-
-def run(main, args):
-    """(exit status, stdout, stderr) of main(args); an uncaught exception fails the test as an error."""
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(args) or 0
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
 
 
 def is_png(path):
@@ -137,20 +126,20 @@ class BrokenFiles(unittest.TestCase):
         csv = self.path("c.csv")
         rows = [("random", "disk", n, 1.0 / n, 4) for n in (1, 2, 4)]
         rows[1] = ("random", "disk", 2, "garbage", 4)
-        pd.DataFrame(rows, columns=convergence_chart.COLUMNS).to_csv(csv, index=False)
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv, "rmse", "line 3")
+        pd.DataFrame(rows, columns=convergence_experiment.COLUMNS).to_csv(csv, index=False)
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv, "rmse", "line 3")
 
     def test_convergence_chart_on_binary_garbage(self):
         csv = self.path("c.csv")
         with open(csv, "wb") as f:
             f.write(bytes(range(256)) * 8)
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv)
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv)
 
     def test_convergence_chart_on_text_that_is_not_its_csv(self):
         csv = self.path("c.csv")
         with open(csv, "w") as f:
             f.write("hello world\nthis is not a CSV, at all\n")
-        self.assert_refused(convergence_chart.main, [csv, "--out", self.path("o")], csv, "missing column")
+        self.assert_refused(convergence_experiment.main, [csv, "--out", self.path("o")], csv, "missing column")
 
     def test_filter_profiles_names_file_and_column_of_a_garbage_value(self):
         csv = self.path("p.csv")

@@ -1,4 +1,4 @@
-"""One copy of the rendered definitions (issue 30): a page inside the repository's results/ links to results/docs,
+"""One copy of the rendered definitions: a page inside the repository's results/ links to results/docs,
 a page elsewhere gets its own RESULTS/docs; the committed pages hold no other copy."""
 import os
 import subprocess
@@ -36,7 +36,7 @@ class DocsFolder(unittest.TestCase):
 
 class Rendered(unittest.TestCase):
     def test_no_formula_becomes_a_link(self):
-        """Markdown reads `P[e_k](rho)` as a link to "rho" unless it is code (issue 44): no rendered definition
+        """Markdown reads `P[e_k](rho)` as a link to "rho" unless it is code: no rendered definition
         links to a target that is neither a page, an anchor nor a file of the repository."""
         import re
         for name in sorted(os.listdir(os.path.join(REPO, "docs"))):

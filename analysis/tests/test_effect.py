@@ -1,5 +1,5 @@
 """Effect sizes and the margin of equivalence (stats/effect.py, tails.py, student.py) on constructed rows with
-known answers (issue 44): rows at 0.95x, 1.05x and 1.2x of the comparator with tight intervals are equivalent,
+known answers: rows at 0.95x, 1.05x and 1.2x of the comparator with tight intervals are equivalent,
 equivalent and worse at a 10 % margin; a significant 3 % gap is equivalent; a heavy-tailed row is never
 equivalent; the interval's coverage is checked by simulation (95 % with Student's t, not with +-2 se)."""
 import math

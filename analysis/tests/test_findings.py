@@ -1,5 +1,5 @@
 """Every number the findings state is recomputed from the CSV by a separate code path (recompute.py: the
-csv module and plain loops, none of the analysis package) and compared (issue 29 item 7); the numbers
+csv module and plain loops, none of the analysis package) and compared; the numbers
 appear in the text as stated. Run on a small Interface-3 CSV (synthetic rows converted by interface3.py:
 three targets, per-seed values, the shifted grid, cpu_ms) and on the committed quick study as written
 today (the fallbacks)."""
@@ -12,7 +12,8 @@ import numpy as np
 
 from . import interface3, recompute as rc, recompute_answer as ra, synthetic
 from .findings_claims import ANSWER_KINDS, answer_claim
-from ..aliaslab_analysis import findings, study_csv
+from ..aliaslab_analysis import findings
+from ..aliaslab_analysis.io import study_csv
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 COMMITTED = os.path.join(REPO, "results", "study", "study.csv")

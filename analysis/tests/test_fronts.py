@@ -1,4 +1,4 @@
-"""Fronts of error against time (stats/fronts.py, issue 44 item 8): a point is on a front when no other point
+"""Fronts of error against time (stats/fronts.py): a point is on a front when no other point
 beats it in both error and time; on constructed points, on random clouds, and on every front of the committed
 studies (per scene and across scenes), no front point is dominated and every point off a front is; and when the
 cost is set by spp."""
@@ -8,7 +8,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.stats import fronts
 

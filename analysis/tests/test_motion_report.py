@@ -1,4 +1,4 @@
-"""The motion section (report/motion.py) and the loop of frames (motion_loop.py), issues 33 and 47.
+"""The motion section (report/motion.py) and the loop of frames (motion_loop.py).
 
 - facts() on a hand-made study whose answers are known by design (a NaN is left out, never a traceback);
 - on the committed motion study (results/motion/study/study.csv), every number of the section's prose is
@@ -15,7 +15,8 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import errors, motion_loop
+from ..aliaslab_analysis.io import errors
+from ..aliaslab_analysis.charts import motion_loop
 from ..aliaslab_analysis.report import motion
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))

@@ -1,14 +1,12 @@
-"""The analysis is a package (issue 28 item 7): one entry point, no sys.path edits, a concept a module.
+"""The analysis is a package: one entry point, no sys.path edits, a concept a module.
 
-`python3 -m analysis COMMAND` runs from the repository root, the two scripts the C++ experiments run
-by path (convergence_chart.py, pointset_chart.py) run from any folder, and no file edits the import
-path."""
+`python3 -m analysis COMMAND` runs from the repository root, no file edits the import path, and no C++ program
+launches Python: the programs write CSV and the charts come from `python3 -m analysis convergence|pointsets`."""
 import glob
 import os
 import re
 import subprocess
 import sys
-import tempfile
 import unittest
 
 from ..aliaslab_analysis import cli
@@ -47,12 +45,23 @@ class Package(unittest.TestCase):
         self.assertEqual(python(["-m", "analysis", "nosuch"], REPO).returncode, 2)
         self.assertEqual(python(["-m", "analysis"], REPO).returncode, 2)
 
-    def test_the_scripts_the_experiments_run_work_from_any_folder(self):
-        with tempfile.TemporaryDirectory() as elsewhere:
-            for script in ("convergence_chart.py", "pointset_chart.py"):
-                r = python([os.path.join(ANALYSIS, script), "-h"], elsewhere)
-                self.assertEqual(r.returncode, 0, r.stderr)
-                self.assertIn("--out", r.stdout)
+    def test_an_interpreter_without_pandas_is_told_how_to_run(self):
+        # -S: no site-packages, so numpy, pandas and matplotlib cannot be imported
+        r = python(["-S", "-m", "analysis", "report", "somewhere"], REPO)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        self.assertNotIn("Traceback", r.stderr)
+        self.assertIn("lacks numpy, pandas, matplotlib", r.stderr)
+        self.assertIn("/usr/bin/python3 -m analysis report somewhere", r.stderr)
+
+    def test_no_program_launches_python(self):
+        launch = re.compile(r"runProgram\s*\(\s*\{\s*\"[^\"]*python|analysis/[a-z_/]+\.py\"")
+        sources = [p for pattern in ("experiments/**/*.cpp", "experiments/**/*.h", "lib/**/*.cpp")
+                   for p in glob.glob(os.path.join(REPO, pattern), recursive=True)]
+        self.assertGreater(len(sources), 10)
+        for path in sources:
+            with open(path, encoding="utf-8") as f:
+                self.assertIsNone(launch.search(f.read()), path)
+        self.assertIsNotNone(launch.search('runProgram({"/usr/bin/python3", dir + "/analysis/x_chart.py", out})'))
 
 
 if __name__ == "__main__":

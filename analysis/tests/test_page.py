@@ -1,4 +1,4 @@
-"""The page of an Interface-3 study (issue 29 items 3, 5, 9; issue 44): the answer table at the top (a column
+"""The page of an Interface-3 study: the answer table at the top (a column
 per target, read from the answer.csv beside the page) and what holds under all, the trade-off per target, the
 fixed grid ranked as deterministic and the shifted grid explained, the study described from its CSV, the other
 studies in the results folder linked, the rules of the verdicts stated with the margin."""
@@ -72,7 +72,7 @@ class Page(unittest.TestCase):
         self.assertIn("heavy-tailed", self.page)
 
     def test_contents_gallery_and_lazy_images(self):
-        # issue 30 item 5: every entry of the table of contents points at an id of the page; every scene has a card
+        # every entry of the table of contents points at an id of the page; every scene has a card
         # in the gallery linking to it; the images are linked files, decoded lazily
         toc = self.page[self.page.index("<nav class='toc'"):self.page.index("</nav>")]
         targets = re.findall(r"href='#([^']+)'", toc)
@@ -87,7 +87,7 @@ class Page(unittest.TestCase):
         imgs = re.findall(r"<img [^>]*>", self.page)
         self.assertTrue(imgs)
         self.assertTrue(all("loading='lazy'" in i for i in imgs if "src=" in i), imgs[:3])
-        # issue 44: every image has its size, so the page does not jump while they load
+        # every image has its size, so the page does not jump while they load
         sized = [re.search(r"width='(\d+)' height='(\d+)'", i) for i in imgs if "src=" in i]
         self.assertTrue(all(sized), [i for i, m in zip(imgs, sized) if not m][:3])
         with open(os.path.join(self.results, "charts", "summary_error_time.png"), "rb") as f:

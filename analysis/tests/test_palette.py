@@ -1,4 +1,4 @@
-"""One palette (issue 30 item 3): every chart that colours samplers takes each sampler's colour from
+"""One palette: every chart that colours samplers takes each sampler's colour from
 palette.py, whatever samplers the study holds and in whatever order, and each filter's marker likewise.
 
 Behavioural, not a grep: each chart module draws a small synthetic study with pyplot's close() intercepted, and
@@ -16,11 +16,11 @@ import numpy as np
 import pandas as pd
 
 from . import synthetic
-from ..aliaslab_analysis import (convergence_chart, filter_profiles, palette, pointset_chart, spectra,
-                                 study_csv)
+from ..aliaslab_analysis.charts import (convergence_experiment, filter_profiles, palette, pointsets, spectra)
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts import speed
 from ..aliaslab_analysis.charts.convergence import convergence as study_convergence
-from ..aliaslab_analysis.figures import plt
+from ..aliaslab_analysis.charts.figures import plt
 from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.report import summary_chart
 
@@ -126,9 +126,9 @@ class OnePalette(unittest.TestCase):
                                for s in samplers for k in n])
             conv = pd.DataFrame([dict(sampler=s, integrand="disk", n=k, rmse=1 / k, realisations=8)
                                  for s in samplers for k in (16, 32, 64)])
-            for name, draw in (("pointsets spectra", lambda: pointset_chart.spectra_chart(sp, self.tmp.name)),
-                               ("discrepancy", lambda: pointset_chart.discrepancy_chart(ps, self.tmp.name)),
-                               ("integrands", lambda: convergence_chart.chart(conv, self.tmp.name, 16, 64))):
+            for name, draw in (("pointsets spectra", lambda: pointsets.spectra_chart(sp, self.tmp.name)),
+                               ("discrepancy", lambda: pointsets.discrepancy_chart(ps, self.tmp.name)),
+                               ("integrands", lambda: convergence_experiment.chart(conv, self.tmp.name, 16, 64))):
                 with Capture() as cap:
                     draw()
                 self.check(cap.figs, samplers, f"{name} {samplers}")

@@ -1,11 +1,10 @@
-"""The report (issue 14 item 3) and the study loader (issue 16) on tiny synthetic studies.
+"""The report and the study loader on tiny synthetic studies.
 
 The report is rendered once for a results folder that looks like a user's run (a merged CSV with
 its two shard CSVs beside it, images, a benchmark and a fuzzing record): its findings come first,
 every scene has its decomposition chart, every linked file exists, the engineering records are on
 their own page, and the study is named as the user's study, not "the reference study".
 """
-import contextlib
 import io
 import math
 import os
@@ -16,22 +15,15 @@ import unittest
 import pandas as pd
 
 from . import synthetic
-from ..aliaslab_analysis import findings, fits, study_csv
+from .synthetic import run
+from ..aliaslab_analysis import findings
+from ..aliaslab_analysis.stats import fits
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.charts import cli as charts_cli
 from ..aliaslab_analysis.report import cli as report_cli
 from ..aliaslab_analysis.report import elements as report_elements
 from ..aliaslab_analysis.report import findings as report_findings
 from ..aliaslab_analysis.report import page as report_page
-
-
-def run(main, args):
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        try:
-            code = main(args) or 0
-        except SystemExit as e:
-            code = e.code
-    return code, out.getvalue(), err.getvalue()
 
 
 def links(page):
@@ -45,14 +37,8 @@ class Report(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "mine")
         cls.csv = synthetic.make_results(cls.results)
-        code, out, err = run(report_cli.main, [cls.results, "--link"])
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.linked = f.read()
-        code, out, err = run(report_cli.main, [cls.results, "--reuse-charts", "--embed"])  # embedded
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.embedded = f.read()
+        cls.linked = synthetic.report_page(cls.results, "--link")
+        cls.embedded = synthetic.report_page(cls.results, "--reuse-charts", "--embed")
         with open(os.path.join(cls.results, "engineering.html"), encoding="utf-8") as f:
             cls.engineering = f.read()
 
@@ -239,7 +225,7 @@ class Loader(unittest.TestCase):
             raw = pd.read_csv(csv)
             self.assertEqual(list(df["error"]), list(raw["mse_target"]))
             self.assertEqual(list(df["error_se"]), list(raw["mse_target_se"]))
-            # a CSV of issue 16's columns: the fallbacks of issue 29's columns, each said in words
+            # a CSV of the older columns: the fallbacks of the newer columns, each said in words
             self.assertEqual([n.split(":")[0] for n in notes], ["No deterministic column", "No cpu_ms column",
                                                                 "No mse_target_seeds column"])
             # blur + cross = mse_target - noise - aliasing (the synthetic law holds exactly)

@@ -18,7 +18,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
-from ..aliaslab_analysis import study_csv
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.report import sizes as section
 
 SEEDS = 8

@@ -4,7 +4,7 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis import fits
+from ..aliaslab_analysis.stats import fits
 
 
 class SlopeFit(unittest.TestCase):

@@ -1,4 +1,4 @@
-"""Issue 22 in the report: error spectra per scene and the independent-vs-correlated comparison.
+"""The error spectra in the report: per scene and the independent-vs-correlated comparison.
 
 On a synthetic study with spectra files (a white `random`, a blue `zsobol`) the report has, per scene,
 the spectrum section, the overview chart and the side-by-side at 4 and 16 spp, and every image it links
@@ -10,7 +10,8 @@ import tempfile
 import unittest
 
 from . import synthetic
-from ..aliaslab_analysis import figures, spectra, study_csv
+from ..aliaslab_analysis.charts import figures, spectra
+from ..aliaslab_analysis.io import study_csv
 from ..aliaslab_analysis.report import cli as report_cli
 from .test_report import links, run
 
@@ -28,10 +29,7 @@ class WithSpectra(unittest.TestCase):
         cls.tmp = tempfile.TemporaryDirectory()
         cls.results = os.path.join(cls.tmp.name, "r")
         cls.csv = synthetic.make_results(cls.results, spectra=True)
-        code, out, err = run(report_cli.main, [cls.results, "--link"])
-        assert code == 0, err
-        with open(os.path.join(cls.results, "index.html"), encoding="utf-8") as f:
-            cls.page = f.read()
+        cls.page = synthetic.report_page(cls.results, "--link")
 
     @classmethod
     def tearDownClass(cls):
@@ -103,7 +101,7 @@ class WithoutSpectra(unittest.TestCase):
             self.assertEqual(code, 0, err)
             with open(os.path.join(results, "index.html"), encoding="utf-8") as f:
                 page = f.read()
-            # said once, above the scenes, not repeated in each (issue 30: nothing repeated)
+            # said once, above the scenes, not repeated in each (nothing repeated)
             self.assertEqual(page.count("No error spectra"), 1)
             self.assertLess(page.index("id='scenes'"), page.index("No error spectra"))
             self.assertLess(page.index("No error spectra"), page.index("id='scene-"))

@@ -7,8 +7,8 @@ import math
 import os
 import unittest
 
-from analysis.aliaslab_analysis.study_csv import load_study
-from analysis.aliaslab_analysis.teaching import negative
+from ..aliaslab_analysis.io.study_csv import load_study
+from ..aliaslab_analysis.teaching import negative
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 CONTROL = os.path.join(REPO, "results", "negative_control", "study.csv")

@@ -6,6 +6,7 @@ import unittest
 import numpy as np
 import pandas as pd
 
+from ..aliaslab_analysis.io import study_rows
 from ..aliaslab_analysis.stats import bootstrap, ties
 
 
@@ -79,9 +80,9 @@ class TieGroups(unittest.TestCase):
         self.assertEqual(list(ties.tied([0.0, 0.1], [np.nan, np.nan])), [True, False])
 
     def test_parse_seeds(self):
-        self.assertEqual(list(ties.parse_seeds("1;2.5;3")), [1.0, 2.5, 3.0])
+        self.assertEqual(list(study_rows.parse_seeds("1;2.5;3")), [1.0, 2.5, 3.0])
         for bad in ("", None, float("nan"), "1", "a;b"):
-            self.assertIsNone(ties.parse_seeds(bad))
+            self.assertIsNone(study_rows.parse_seeds(bad))
 
 
 class AcrossScenes(unittest.TestCase):

@@ -1,4 +1,4 @@
-"""The comparison viewer's data (issue 30).
+"""The comparison viewer's data.
 
 The committed viewer data of the presented study (results/viewer) against its CSV, read here with the csv module
 (not the package's loader): every value the viewer displays beside an image equals the CSV row's. The image
@@ -14,8 +14,9 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis.viewer import export, flip, plan, section
-from ..aliaslab_analysis.viewer.exr import read_exr
+from ..aliaslab_analysis.viewer import export, flip, plan
+from ..aliaslab_analysis.report import viewer_section as section
+from ..aliaslab_analysis.io.exr import read_exr
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")
@@ -242,6 +243,17 @@ class ImageSizes(unittest.TestCase):
             plt.imsave(path, np.zeros((7, 13)))  # 13 wide, 7 high
             tag = build.img(path, "cap")
             self.assertIn("width='13' height='7'", tag)
+
+    def test_the_teaching_command_needs_the_viewers_renders(self):
+        from . import synthetic
+        from ..aliaslab_analysis.teaching import cli
+        with tempfile.TemporaryDirectory() as tmp:
+            study = os.path.join(tmp, "study.csv")
+            synthetic.write(study)
+            code, _, err = synthetic.run(cli.main, [tmp, "--study", study])
+            self.assertEqual(code, 2)
+            self.assertIn("run `python3 -m analysis viewer", err)
+            self.assertFalse(os.path.exists(os.path.join(tmp, "viewer", "teaching.html")))
 
 
 class Section(unittest.TestCase):

@@ -1,4 +1,4 @@
-"""The viewer holds the answer (issue 45 item 1): every method answer.csv names (equivalent to the best, the best
+"""The viewer holds the answer: every method answer.csv names (equivalent to the best, the best
 of each sampler) is among the committed viewer's configurations, found from answer.csv with the csv module,
 independently of the viewer's own choice (viewer/answer.py)."""
 import csv
@@ -17,7 +17,7 @@ def answer_rows():
     if os.path.isfile(ANSWER):
         with open(ANSWER, newline="", encoding="utf-8") as f:
             return list(csv.DictReader(f))
-    from ..aliaslab_analysis import study_csv
+    from ..aliaslab_analysis.io import study_csv
     from ..aliaslab_analysis.findings.study import Study
     df, notes = study_csv.load_study(STUDY)
     return [{k: str(v) for k, v in r.items()} for r in Study(df, notes).answer.to_dict("records")]

@@ -1,4 +1,4 @@
-"""x-t slices (xt_slice.py, report/motion_xt.py; issue 47 item 4).
+"""x-t slices (xt_slice.py, report/motion_xt.py).
 
 - Registration, through the raytracer (`-frames -motion -register`): a point-sampled grating below Nyquist
   (0.375 cycles/pixel, band-limited) moving 0.25 px per frame gives a slice whose rows equal each other away from
@@ -15,10 +15,10 @@ import unittest
 
 import numpy as np
 
-from ..aliaslab_analysis import xt_slice
-from ..aliaslab_analysis.motion_loop import display
-from ..aliaslab_analysis.study_csv import load_study
-from ..aliaslab_analysis.viewer.exr import read_exr, read_exrs
+from ..aliaslab_analysis.viewer import xt_slice
+from ..aliaslab_analysis.charts.motion_loop import display
+from ..aliaslab_analysis.io.study_csv import load_study
+from ..aliaslab_analysis.io.exr import read_exr, read_exrs
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 RAYTRACER = os.path.join(REPO, "build", "bin", "raytracer")

@@ -2,10 +2,9 @@
 // of docs/science.md, the fitted log-log slopes, and a table comparing them with
 // the slopes theory expects.
 //
-// Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations),
-// slopes.md, and (unless --no-chart) convergence.png drawn by
-// analysis/convergence_chart.py.
-#include "aliaslab_paths.h"
+// Output in --out: convergence.csv (sampler,integrand,n,rmse,realisations) and
+// slopes.md; the chart convergence.png is drawn from the CSV by
+// `/usr/bin/python3 -m analysis convergence` (the command is printed at the end).
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -33,7 +32,6 @@ const FrontEnd kConvergence{"convergence", {{"sampler", "--samplers"}, {"out", "
 int main(int argc, char** argv) {
   ConvergenceStudy p;
   std::string out = "results/convergence";  // output folder
-  bool chart = true;                        // run analysis/convergence_chart.py
   CLI::App app{"convergence: RMSE against N of every sampler on the analytic integrands, with fitted slopes (aliaslab)"};
   setupCommandLine(app, "convergence");
   app.add_option("--out", out, "Output folder")->capture_default_str();
@@ -46,7 +44,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
   app.add_option("--samplers", p.samplers, "Samplers to run (default: all)")->delimiter(',');
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
-  app.add_flag("!--no-chart", chart, "Skip the chart (analysis/convergence_chart.py)");
+  app.add_flag("--no-chart")
+      ->description("Ignored, kept for old scripts: the chart is drawn by `python3 -m analysis convergence`");
   if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
   return runFrontEnd(kConvergence, [&] {
@@ -71,12 +70,10 @@ int main(int argc, char** argv) {
     writeTextFile((fs::path(out) / "convergence.csv").string(), convergenceCsv(rows, p.realisations));
     writeTextFile((fs::path(out) / "slopes.md").string(), slopesTable(p, rows));
 
-    // Chart through the Python plotter (arguments passed as they are: no shell).
-    if (chart && runProgram({"/usr/bin/python3", std::string(ALIASLAB_SOURCE_DIR) + "/analysis/convergence_chart.py",
-                             (fs::path(out) / "convergence.csv").string(), "--out", out, "--fit-min",
-                             formatNumber(p.fitMin), "--fit-max", formatNumber(p.fitMax)}) != 0)
-      std::cerr << "convergence: warning: the chart failed (analysis/convergence_chart.py); the CSV and slopes.md are written\n";
-    std::cout << "wrote " << out << "/convergence.csv and slopes.md\n";
+    std::cout << "wrote " << out << "/convergence.csv and slopes.md; the chart, from the repository root:\n"
+              << "  /usr/bin/python3 -m analysis convergence " << (fs::path(out) / "convergence.csv").string()
+              << " --out " << out << " --fit-min " << formatNumber(p.fitMin) << " --fit-max " << formatNumber(p.fitMax)
+              << "\n";
     return 0;
   });
 }

@@ -1,5 +1,5 @@
 // filterprofile: each filter's 1-D profile and frequency response, as CSV,
-// for analysis/filter_profiles.py (one source of truth: the library's eval).
+// for analysis/aliaslab_analysis/charts/filter_profiles.py (one source of truth: the library's eval).
 //
 // Columns and the response's definition: lib/measure/filter_response.h.
 // Filters are drawn at their natural radius (box 0.5, tent 1, gaussian 1.5 =

@@ -10,8 +10,8 @@
 //   points_<sampler>_<N>.png       the set of pixel (0, 0)
 //   periodogram_<sampler>_<N>.png  mean 2-D periodogram, DC at the centre,
 //                  grey = 0.5 + 0.25 log2 P (P = 1, white noise, is mid-grey)
-// and (unless --no-chart) spectra.png via analysis/pointset_chart.py.
-#include "aliaslab_paths.h"
+// The charts spectra.png and discrepancy.png are drawn from the CSVs by
+// `/usr/bin/python3 -m analysis pointsets` (the command is printed at the end).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
@@ -36,7 +36,6 @@ const FrontEnd kPointsets{"pointsets", {{"sampler", "--samplers"}, {"spp", "--co
 int main(int argc, char** argv) {
   PointSetStudy p;
   std::string out = "results/pointsets";  // output folder
-  bool chart = true;                      // run analysis/pointset_chart.py
   CLI::App app{"pointsets: discrepancy, minimum distance and power spectra of every sampler (aliaslab)"};
   setupCommandLine(app, "pointsets");
   app.add_option("--out", out, "Output folder")->capture_default_str();
@@ -50,7 +49,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
   app.add_option("--samplers", p.samplers, "Samplers (default: all)")->delimiter(',');
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
-  app.add_flag("!--no-chart", chart, "Skip the chart (analysis/pointset_chart.py)");
+  app.add_flag("--no-chart")
+      ->description("Ignored, kept for old scripts: the charts are drawn by `python3 -m analysis pointsets`");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
   return runFrontEnd(kPointsets, [&] {
@@ -67,11 +67,8 @@ int main(int argc, char** argv) {
     writeTextFile((fs::path(out) / "pointsets.csv").string(), pointSetTableCsv(stats, p.sets));
     writeTextFile((fs::path(out) / "spectra.csv").string(), pointSetSpectraCsv(stats, p.sets));
 
-    // Charts through the Python plotter (arguments passed as they are: no shell).
-    if (chart && runProgram({"/usr/bin/python3", std::string(ALIASLAB_SOURCE_DIR) + "/analysis/pointset_chart.py",
-                             out, "--out", out}) != 0)
-      std::cerr << "pointsets: warning: the chart failed (analysis/pointset_chart.py); the CSVs and images are written\n";
-    std::cout << "wrote " << out << "/pointsets.csv, spectra.csv and images\n";
+    std::cout << "wrote " << out << "/pointsets.csv, spectra.csv and images; the charts, from the repository root:\n"
+              << "  /usr/bin/python3 -m analysis pointsets " << out << " --out " << out << "\n";
     return 0;
   });
 }

@@ -34,10 +34,10 @@ for name in box gauss; do
     echo "$name,$t,$mse" >> "$FRAMES/errors.csv"
   done
 done
-/usr/bin/python3 -m analysis.aliaslab_analysis.motion_loop --frames "$FRAMES" --reference ref \
+/usr/bin/python3 -m analysis.aliaslab_analysis.charts.motion_loop --frames "$FRAMES" --reference ref \
   --errors "$FRAMES/errors.csv" \
   --methods "box=uniform 1 spp box r 0.5,gauss=uniform 1 spp gaussian r 1.5" --out "$OUT/study/loop.png"
-/usr/bin/python3 -m analysis.aliaslab_analysis.xt_slice --study "$OUT/study/study.csv" --bin "$BIN" --frames 32 \
+/usr/bin/python3 -m analysis.aliaslab_analysis.viewer.xt_slice --study "$OUT/study/study.csv" --bin "$BIN" --frames 32 \
   --out "$OUT/study/xt"
 /usr/bin/python3 -m analysis report "$OUT" --study "$OUT/study/study.csv"
 /usr/bin/python3 "$OUT/make_motion_md.py"

@@ -14,8 +14,8 @@ def xt_checks(d, check, wait, source, artifacts, row, image_row=16, frames=4):
     sys.path.insert(0, source)
     import numpy as np
     from PIL import Image
-    from analysis.aliaslab_analysis.motion_loop import display
-    from analysis.aliaslab_analysis.viewer.exr import read_exr
+    from analysis.aliaslab_analysis.charts.motion_loop import display
+    from analysis.aliaslab_analysis.io.exr import read_exr
     options = d.execute_script("return [...document.querySelectorAll('#alv .alv-serve-row option')].map(o => o.text)")
     want = f"{row['sampler']}, {row['spp']} spp, {row['filter']} r={float(row['radius']):g} "
     index = next((i for i, o in enumerate(options) if o.startswith(want)), None)

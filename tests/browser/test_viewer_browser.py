@@ -75,7 +75,7 @@ def read_image(path):
         return buf.get_pixels(oiio.FLOAT)
     except ImportError:
         sys.path.insert(0, ARGS.source)
-        from analysis.aliaslab_analysis.viewer.exr import read_exr
+        from analysis.aliaslab_analysis.io.exr import read_exr
         return read_exr(path)
 
 

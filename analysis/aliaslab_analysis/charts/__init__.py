@@ -38,9 +38,13 @@ Writes into DIR, each as .png (and .svg with --svg):
 and the tables pareto.csv (the front of every scene), flagged.csv and
 decomposition.csv. A CSV repeating a configuration is refused (exit 2).
 
-Colours and markers: palette.py. One module per chart family (axes.py: what they share); draw_all draws them all, cli.py is the command.
+Colours and markers: palette.py; matplotlib (Agg) and saving: figures.py. One module per chart family (axes.py:
+what they share); draw_all draws them all, cli.py is the command. Beside the study's charts, the charts of
+the other programs and records: convergence_experiment.py (`convergence`), pointsets.py (`pointsets`),
+filter_profiles.py (`filters`), spectra.py (the error spectra beside a study CSV, for the report),
+motion_loop.py (the animated loop of a motion study's frames).
 """
-from .. import errors
+from ..io import errors
 from .blur_curve import blur_curve
 from .convergence import convergence
 from .decomposition import decomposition

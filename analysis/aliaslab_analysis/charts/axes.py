@@ -6,7 +6,8 @@ import matplotlib.patheffects
 import matplotlib.ticker
 import numpy as np
 
-METHOD = ["sampler", "filter_name", "radius", "filter_params", "reconstruction", "prefilter"]
+from ..stats.rankings import METHOD, method_label  # noqa: F401 (the charts' method key and label)
+
 ERROR_LABEL = {True: "error against the target (mse_target, per pixel and channel; lower is better)",
                False: "error against the pixel-area reference (mse_area, per pixel and channel; lower is better)"}
 COMPONENT_COLOURS = {"noise": "#4c72b0", "aliasing": "#dd8452", "blur": "#55a868", "cross": "#8c8c8c",
@@ -16,17 +17,6 @@ BEST_SHOWN = 10
 
 def has_target(df):
     return "mse_target" in df.columns
-
-
-def method_label(row, show_recon=False, sampler=True):
-    label = f"{row['filter_name']} r={row['radius']:g}"
-    if sampler:
-        label = f"{row['sampler']} " + label
-    if show_recon:
-        label += f" {row['reconstruction']}"
-    if row.get("prefilter", "none") not in ("none", ""):
-        label += f" [{row['prefilter']}]"
-    return label
 
 
 def usable(df, column="error"):

@@ -14,8 +14,8 @@ blur_curve(df, out_dir) draws blur_curve_<scene> (.png; .svg too after figures.w
 import numpy as np
 import pandas as pd
 
-from .. import figures, palette
-from ..figures import plt
+from . import figures, palette
+from .figures import plt
 
 SIGMAS = (0.5, 1.0, 2.0, 4.0)
 

@@ -2,7 +2,8 @@
 import argparse
 import sys
 
-from .. import errors, figures, study_csv, study_rows
+from ..io import errors, study_csv, study_rows
+from . import figures
 from . import draw_all
 
 

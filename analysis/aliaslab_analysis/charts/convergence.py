@@ -3,8 +3,9 @@ per scene; slopes only over at least three spp levels (fits.MIN_SLOPE_LEVELS).""
 import numpy as np
 import pandas as pd
 
-from .. import figures, fits, palette
-from ..figures import plt
+from . import figures, palette
+from ..stats import fits
+from .figures import plt
 from .axes import best_row, empty_panel, has_target, label_log_axis, method_label, usable, yerr_log
 
 

@@ -7,16 +7,10 @@ import matplotlib.patches
 import numpy as np
 import pandas as pd
 
-from .. import figures
-from ..figures import plt
+from . import figures
+from .figures import plt
+from ..io.study_rows import components
 from .axes import BEST_SHOWN, COMPONENT_COLOURS, ERROR_LABEL, METHOD, empty_panel, has_target, method_label
-
-
-def components(df):
-    """The decomposition's terms present in df, in drawing order: [(column, label)]."""
-    if "blur" in df.columns and "cross" in df.columns:
-        return [("noise", "noise"), ("aliasing", "aliasing"), ("blur", "blur"), ("cross", "cross term")]
-    return [("noise", "noise"), ("aliasing", "aliasing"), ("blur_cross", "blur + cross (mse_area - mse)")]
 
 
 def chosen_methods(sd):

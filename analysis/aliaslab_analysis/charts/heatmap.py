@@ -4,8 +4,9 @@ are hatched, labelled and kept out of the colour scale, so that the useful cells
 import matplotlib.colors
 import numpy as np
 
-from .. import degenerate, figures
-from ..figures import plt
+from ..stats import degenerate
+from . import figures
+from .figures import plt
 from .axes import ERROR_LABEL, has_target, usable
 
 CELL_W, CELL_H = 0.52, 0.27  # inches per cell: at the page's width the numbers are about 10 px tall

@@ -4,8 +4,9 @@ compared), set by the non-degenerate values (degenerate.py); degenerate points a
 red up-triangles with their value."""
 import numpy as np
 
-from .. import degenerate, figures
-from ..figures import plt
+from ..stats import degenerate
+from . import figures
+from .figures import plt
 from .axes import ERROR_LABEL, best_row, has_target, label_log_axis, usable, yerr_log
 
 

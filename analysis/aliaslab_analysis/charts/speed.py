@@ -8,11 +8,11 @@ import os
 import numpy as np
 import pandas as pd
 
-from .. import figures, palette
-from ..figures import plt
+from . import figures, palette
+from .figures import plt
 from ..stats import fronts as tie_fronts
-from .axes import (ERROR_LABEL, METHOD, clip_outliers, empty_panel, has_target, method_label,
-                   number_points, plain_log_x, usable, yerr_log)
+from .axes import (ERROR_LABEL, METHOD, clip_outliers, empty_panel, has_target, method_label, number_points,
+                   plain_log_x, usable, yerr_log)
 
 
 def speed_accuracy(df, out_dir):

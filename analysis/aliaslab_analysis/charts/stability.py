@@ -4,8 +4,9 @@ import os
 
 import numpy as np
 
-from .. import figures, study_csv
-from ..figures import plt
+from . import figures
+from ..io import study_csv
+from .figures import plt
 
 
 def stability(df, out_dir):

@@ -12,8 +12,8 @@ import re
 
 import numpy as np
 
-from .. import figures, palette
-from ..figures import plt
+from . import figures, palette
+from .figures import plt
 
 CLIP = 100.0  # the axes end at CLIP x the 90th percentile of the values (degenerate filters reach 1e6 and more)
 # The filters' natural radii as lib/filter/factory.cpp registers them (used when the CSV has no natural_radius).

@@ -1,4 +1,4 @@
-"""The findings of a study, generated from its CSV (issue 29 item 7): structured numbers and the text that
+"""The findings of a study, generated from its CSV: structured numbers and the text that
 states them, for the report's page and for results/README.md's findings section.
 
 compute(df, notes) -> [Finding]. A Finding has a `key`, a `title`, a `text` (Markdown-light: **bold** and
@@ -18,7 +18,8 @@ over csv rows, no pandas groupby) and compare.
               within error, flagged and heavy-tailed rows
   grid.py     the fixed grid ranked as deterministic, its alignment, the shifted grid; samplers against random
   prefilter.py  pre-filtering against plain sampling (studies with pre-filtered rows)
-  render.py   the findings as HTML paragraphs or a Markdown section
+  compare.py  two study CSVs compared (`compare`; exit 1 on an accuracy regression)
+(the findings as HTML or Markdown: report/findings_text.py)
 """
 from . import answer, factors, grid, prefilter, study, terms, time
 from .study import Finding, Study

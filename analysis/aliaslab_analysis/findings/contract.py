@@ -126,8 +126,8 @@ def table(df):
 
 
 def main(argv=None):
-    from ..errors import InputError
-    from ..study_csv import load_study
+    from ..io.errors import InputError
+    from ..io.study_csv import load_study
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 1:
         print("usage: python3 -m analysis.aliaslab_analysis.findings.contract STUDY.csv", file=sys.stderr)

@@ -7,8 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .. import study_rows
-from ..charts import axes
+from ..io import study_rows
 from ..stats import effect, equivalence, factors, fronts, rankings
 
 TRUSTED_SIZE = 256
@@ -24,7 +23,7 @@ class Finding:
 
 
 def method_name(r):
-    return axes.method_label(r, show_recon=False)
+    return rankings.method_label(r, show_recon=False)
 
 
 def method_key(r):

@@ -4,7 +4,7 @@ comes from is stated under every target; the rest against the primary target, co
 columns repeat once per target)."""
 import numpy as np
 
-from ..charts.decomposition import components
+from ..io.study_rows import components
 from ..stats import flags, tails
 from .study import Finding, fmt, method_name
 

@@ -68,7 +68,9 @@ Modules: findings.py (the generated findings as HTML, the rules of the verdicts 
 favours), tradeoff.py (the targets as a trade-off), sizes.py (the quick study against this one), studies.py (the other studies linked), summary_chart.py (the findings' chart),
 scene.py (a scene's section), elements.py (HTML building blocks), page.py (the pages' assembly),
 markdown.py (--tables' Markdown, the fallback reader), docs_html.py (Markdown to HTML: docs/, engineering.html),
-navigation.py (contents, gallery, lightbox), tables.py (--tables), cli.py (the command).
+navigation.py (contents, gallery, lightbox), tables.py (--tables), findings_text.py (the findings as HTML
+paragraphs or README's Markdown section), viewer_section.py (the viewer's section of the page),
+adaptive_record.py (results/adaptive.md's generated section), cli.py (the command).
 """
 
 

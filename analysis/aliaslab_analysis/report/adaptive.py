@@ -1,4 +1,4 @@
-"""The report's adaptive section (issue 32 item 3): where an adaptive sampler wins against its base sampler,
+"""The report's adaptive section: where an adaptive sampler wins against its base sampler,
 and where it loses, by how much and why, with its sample-density image beside the error images.
 
 Per scene and spp, for each base sampler B that some adaptive sampler `adaptive-METHOD:B[+key=value...]` of
@@ -27,7 +27,7 @@ import os
 
 import numpy as np
 
-from .. import figures
+from ..charts import figures
 from ..stats import ties
 from .elements import figure, image_src
 

@@ -12,7 +12,7 @@ import os
 
 import pandas as pd
 
-from .. import errors
+from ..io import errors
 from ..stats import equivalence
 
 NAME = "answer.csv"

@@ -3,7 +3,8 @@ import argparse
 import os
 import sys
 
-from .. import errors, figures
+from ..io import errors
+from ..charts import figures
 from .page import build_report, shown_path
 from .tables import tables
 
@@ -17,8 +18,9 @@ def default_study(results):
 
 def findings_markdown(study, margin=None):
     """The findings section of results/README.md, generated from the study CSV."""
-    from .. import findings, study_csv
-    from ..findings import render
+    from .. import findings
+    from ..io import study_csv
+    from . import findings_text as render
     df, notes = study_csv.load_study(study)
     text = render.markdown_section(findings.compute(df, notes, margin=margin), shown_path(study))
     return text + ("\n" + " ".join(f"_{n}_" for n in notes) if notes else "")

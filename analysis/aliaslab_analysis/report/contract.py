@@ -3,7 +3,7 @@ sees, in a box of its own; when every bound holds, one line, with the table of r
 import html
 
 from ..findings import contract
-from ..findings.render import html_paragraphs
+from .findings_text import html_paragraphs
 
 STYLE = "background:#fde8e8;border-left:4px solid #c22;padding:.4em 1em;margin:1em 0"
 

@@ -6,7 +6,8 @@ import html
 import io
 import os
 
-from .. import errors, palette
+from ..io import errors
+from ..charts import palette
 from . import navigation
 
 CSS = """body{font-family:sans-serif;margin:0 auto;max-width:1250px;padding:1em 1.5em;background:#fafafa;
@@ -38,7 +39,7 @@ def chart_png_bytes(path):
             return f.read()
     out = io.BytesIO()
     with Image.open(path) as im:
-        if im.mode == "P":  # already palette-coded (figures.save_figure does it since issue 30)
+        if im.mode == "P":  # already palette-coded (figures.save_figure does it)
             with open(path, "rb") as f:
                 return f.read()
         im.convert("RGB").quantize(colors=256, dither=Image.Dither.NONE).save(out, "PNG", optimize=True)

@@ -1,7 +1,7 @@
 """The page's findings: the generated findings (the findings package: every number from the CSV, each
 recomputed by the tests) as HTML paragraphs, and the page's statement of the rules behind every verdict."""
 from .. import findings as generated
-from ..findings import render
+from . import findings_text as render
 from ..findings.study import method_name  # noqa: F401  (the name the report's modules use)
 from ..stats import bootstrap, effect, factors, tails
 

@@ -1,4 +1,4 @@
-"""The motion section of the report (issues 33 and 47; definitions docs/science.md "Motion"). For a study CSV made
+"""The motion section of the report (definitions docs/science.md "Motion"). For a study CSV made
 with frames (sweep --frames F > 1: the motion columns of lib/study/csv.h), against the primary target:
   - per scene a chart: shimmer (measured in the content's frame) against blur and against noise, one line per
     (sampler, spp, filter) through its radii, the target's own shimmer drawn as a level;
@@ -18,8 +18,8 @@ import os
 
 import numpy as np
 
-from .. import figures, palette
-from ..figures import plt
+from ..charts import figures, palette
+from ..charts.figures import plt
 from ..stats import ties
 from .elements import figure
 from .motion_xt import read_panels, xt_figure

@@ -1,4 +1,4 @@
-"""The x-t slices of the motion section (issue 47 item 4; docs/science.md "Motion", "Looking at it: x-t slices"):
+"""The x-t slices of the motion section (docs/science.md "Motion", "Looking at it: x-t slices"):
 per scene, the PNG xt_slice.py wrote in the folder xt/ beside the study CSV, with a caption naming each panel's
 configuration, why it was chosen, and its shimmer (and the target's own) with the standard error, read from the
 study CSV's rows. '' when xt/xt.csv is missing or does not list the scene."""

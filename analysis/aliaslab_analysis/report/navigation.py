@@ -7,7 +7,7 @@ window.ALIASLAB_PALETTE (palette.as_json) and as CSS variables (--sampler-NAME).
 import html
 import re
 
-from .. import palette
+from ..charts import palette
 
 CSS = """body{max-width:1560px}.layout{display:grid;grid-template-columns:230px minmax(0,1fr);gap:1.6em}
 .layout>main{min-width:0}nav.toc{position:sticky;top:0;align-self:start;max-height:100vh;overflow-y:auto;

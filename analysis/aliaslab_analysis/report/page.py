@@ -10,7 +10,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import charts, errors, figures, spectra, study_csv
+from .. import charts
+from ..io import errors, study_csv
+from ..charts import figures, spectra
 from ..findings import Study
 from ..findings.study import facts as facts_of, is_quick
 from . import docs_html, navigation, studies
@@ -24,7 +26,7 @@ from .markdown import markdown_tables
 from .motion import motion_section
 from .scene import scene_notes, scene_section
 from .sizes import sizes_section
-from ..viewer.section import viewer_section
+from .viewer_section import viewer_section
 from .summary_chart import summary_chart
 from .targets_table import targets_text
 from .tradeoff import tradeoff_section
@@ -236,7 +238,7 @@ SECTIONS = [
     motion_section,  # aliasing in motion (studies with frames; report/motion.py)
     lambda c: viewer_section(c.results),  # the comparison viewer and the teaching strand (viewer/)
     scenes_section,
-    adaptive_section,  # the adaptive samplers against their base: wins, losses and why (issue 32)
+    adaptive_section,  # the adaptive samplers against their base: wins, losses and why
     stability_section,
     lambda c: isolation_section(c.results, c.embed),
     engineering_section,

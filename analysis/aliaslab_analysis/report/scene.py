@@ -1,12 +1,12 @@
 """One scene's section of the report: its table of the lowest errors, its charts, the contact sheet, the
-images of the best and the worst method, and where the error sits on screen (error spectra, issue 22)."""
+images of the best and the worst method, and where the error sits on screen (error spectra)."""
 import html
 import os
 
 import numpy as np
 
-from .. import figures, spectra
-from ..charts.decomposition import components
+from ..charts import figures, spectra
+from ..io.study_rows import components
 from .elements import figure
 from .findings import method_name
 
@@ -102,7 +102,7 @@ def scene_table(sd, ranked=None, margin=None):
 
 
 def spectrum_section(page_dir, scene, sd, spec, charts_dir, images, embed):
-    """Issue 22: where the error sits on screen. An overview chart of every sampler's error spectrum at one
+    """Where the error sits on screen. An overview chart of every sampler's error spectrum at one
     spp, then, at 4 and 16 spp, an independent and a correlated sampler side by side (error images, their
     spectra, mse, blurred mse, FLIP). Says so instead of failing when spectra or images are absent."""
     head = "<h4>Where the error sits on screen</h4>"

@@ -1,4 +1,4 @@
-"""The quick study against the presented one (issue 44 item 6): the same scenes at two image sizes, compared
+"""The quick study against the presented one: the same scenes at two image sizes, compared
 on what both hold (stats/sizes.py: the shared scenes, spp, targets and methods, ranked as answer.csv ranks
 them), in words and a table generated from the two CSVs.
 
@@ -10,7 +10,7 @@ import os
 
 import numpy as np
 
-from .. import study_csv
+from ..io import study_csv
 from ..findings.study import facts, plural
 from ..stats import factors, sizes
 

@@ -1,4 +1,4 @@
-"""The other studies a page links to (issue 29 item 9): every folder directly under the results folder that
+"""The other studies a page links to: every folder directly under the results folder that
 holds a study CSV (study/study.csv or study.csv), linked to its page (index.html) or else to the CSV, described
 from its CSV (scenes,
 size, spp, seeds, references, targets), and the repository's presented study (results/index.html) when the
@@ -9,7 +9,7 @@ import os
 import pandas as pd
 
 from ..findings.study import is_quick
-from ..study_rows import targets
+from ..io.study_rows import targets
 
 COLUMNS = ["scene", "width", "height", "spp", "seeds", "ref_spp", "sampler"]
 

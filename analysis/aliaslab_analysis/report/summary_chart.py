@@ -10,10 +10,10 @@ import os
 import matplotlib.ticker
 import numpy as np
 
-from .. import figures, palette
+from ..charts import figures, palette
 from ..stats import fronts
 from ..charts import axes
-from ..figures import plt
+from ..charts.figures import plt
 from .findings import method_name
 
 CAP_FACTOR = 4.0

@@ -5,7 +5,7 @@ import os
 import numpy as np
 import pandas as pd
 
-from .. import study_csv, study_rows
+from ..io import study_csv, study_rows
 from ..stats import fronts
 from .markdown import markdown
 

@@ -1,4 +1,4 @@
-"""The target as a choice the reader sees (issue 29 item 3, issue 44 item 5): what each target favours, and
+"""The target as a choice the reader sees: what each target favours, and
 why the pixel-area target itself aliases; the answer under each target is the answer table's column."""
 
 

@@ -1,4 +1,4 @@
-"""The page's trade-off section (issue 44 item 5): per target, noise plus aliasing against blur for every
+"""The page's trade-off section: per target, noise plus aliasing against blur for every
 filter over its radii (charts/tradeoff.py), at each spp level with the leading sampler there, and where the
 error of each scene's best comes from under that target (findings/terms.shares)."""
 import html

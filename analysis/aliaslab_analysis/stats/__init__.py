@@ -16,7 +16,9 @@ margin of practical equivalence, heavy tails, the answer by factor, fronts of er
   bootstrap.py    the seeded bootstrap of a median over scenes
   flags.py        why a flagged row is flagged: unstable or reference-limited
   ties.py         the standard error of a paired or independent difference and tie groups (the motion section)
-  rankings.py     the columns naming a method and a cell
+  rankings.py     the columns naming a method and a cell, a method's label
+  fits.py         the log-log slope fit and the Pareto front
+  degenerate.py   the rule that marks degenerate configurations (weight sums near zero) on the charts
 The constants (the margin, the bootstrap seeds and sizes, the heavy-tail factor) are stated in each module's
 doc and on the page.
 """

@@ -1,4 +1,4 @@
-"""Two studies of the same scenes at two image sizes, reconciled (issue 44 item 6): the quick study (48 px)
+"""Two studies of the same scenes at two image sizes, reconciled: the quick study (48 px)
 against the presented one (256 px).
 
 Only what both hold is compared: the scenes, spp levels and targets of both, and in each of those cells the
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from .. import study_rows
+from ..io import study_rows
 from . import effect, equivalence, factors
 from .rankings import CELL, METHOD
 

@@ -26,19 +26,6 @@ Z = 2.0
 SAMPLE_SET = ["scene", "sampler", "spp", "prefilter", "target"]
 
 
-def parse_seeds(text):
-    """The per-seed values of mse_target_seeds ('a;b;c') as a float array, or None when empty/unreadable."""
-    if text is None or (isinstance(text, float) and np.isnan(text)):
-        return None
-    parts = [p for p in str(text).strip().split(";") if p.strip() != ""]
-    if len(parts) < 2:
-        return None
-    try:
-        return np.array([float(p) for p in parts])
-    except ValueError:
-        return None
-
-
 def sample_set_ids(rows):
     """An integer per row: equal for rows that share their samples (SAMPLE_SET; columns absent are ignored)."""
     key = [c for c in SAMPLE_SET if c in rows.columns]

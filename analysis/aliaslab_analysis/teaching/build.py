@@ -1,4 +1,4 @@
-"""The teaching strand (issue 30, item 2): written by `python3 -m analysis viewer` as RESULTS/viewer/teaching.html,
+"""The teaching strand: written by `python3 -m analysis teaching` (after `viewer`) as RESULTS/viewer/teaching.html,
 a fragment the page includes after the viewer, its pictures embedded. Built from the study's own images (the
 viewer's renders, the references) and the point sets of RESULTS/pointsets; every number in its prose is computed
 from the CSV here (facts.py)."""
@@ -8,10 +8,10 @@ import os
 
 import numpy as np
 
-from ..viewer.exr import read_exr
+from ..io.exr import read_exr
 from ..viewer.export import SceneExport, channels
 from ..viewer.plan import image_stem
-from ..study_csv import load_study
+from ..io.study_csv import load_study
 from . import facts, figures, negative
 
 TRIO = ("uniform", "jittered", "sobol")

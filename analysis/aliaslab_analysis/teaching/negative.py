@@ -1,4 +1,4 @@
-"""The negative control and the grid against jittered, every number from a CSV (issue 48 item 2, issue 44 item 7):
+"""The negative control and the grid against jittered, every number from a CSV:
 
   control(df)      on each scene negative_sppN at N spp (a grating of exactly sqrt(N) cycles per pixel, box r = 0.5):
                    random's noise against 1/(8N), each sampler's noise as a multiple of random's with its se, the
@@ -179,7 +179,7 @@ def markdown(c, source):
 
 
 def main(argv=None):
-    from ..study_csv import load_study
+    from ..io.study_csv import load_study
     argv = sys.argv[1:] if argv is None else argv
     if len(argv) != 1:
         print("usage: python3 -m analysis.aliaslab_analysis.teaching.negative STUDY.csv", file=sys.stderr)

@@ -1,4 +1,4 @@
-"""The comparison viewer of the page (issue 30): the study's own images side by side on the same region.
+"""The comparison viewer of the page: the study's own images side by side on the same region.
 
   answer.py   the methods the answer names (as answer.csv: equivalent to the best, best of each sampler) and
               the default view
@@ -6,12 +6,12 @@
   view.py     the view opened first (the answer's default) and its crop
   serve.py    --serve: the page on localhost, any CSV row rendered on request, the user's EXRs
   render.py   renders them with the raytracer (the sweep's sampler, seed and filter: the same images)
-  exr.py      reads EXR images through Debian's oiiotool
   encoding.py an image's values as a PNG data URI (8 or 16 bits over its own range) and back
   export.py   checks each image against the CSV's per-seed mse_target and writes RESULTS/viewer/<scene>.js
               (loaded when the scene is opened) and <scene>_whole.js (whole images, whole FLIP maps against
               every target: loaded when asked for)
-  section.py  the page's section; copies viewer.js, viewer_serve.js and viewer.css into RESULTS/viewer/ (the
-              page refers to them)
+  xt_slice.py x-t slices of the motion study: one image row over the frames, rendered and drawn
+(the page's section of the viewer is report/viewer_section.py; the teaching strand, built from these renders,
+is the teaching package)
   cli.py      `python3 -m analysis viewer RESULTS --study CSV --raytracer build/bin/raytracer [--serve]`
 """

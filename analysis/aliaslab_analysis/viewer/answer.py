@@ -1,4 +1,4 @@
-"""The methods the answer names, for the viewer (issue 45): computed from the study CSV by the same code as
+"""The methods the answer names, for the viewer: computed from the study CSV by the same code as
 answer.csv and the findings (findings/study.Study: stats/equivalence, stats/factors), so the viewer holds what
 the page names without reading a file the report writes later.
 

@@ -6,14 +6,15 @@ folder and exports the viewer's data beside the page (export.py).
 
 writes RESULTS/viewer/<scene>.js (one per scene, loaded by the page when that scene is opened) and
 RESULTS/viewer/index.json (what was chosen and how); the FLIP maps (imgdiff) are kept in the work folder too;
-`report` then shows the viewer when RESULTS/viewer exists. With --serve [--port N] [--exr FILE ...] it renders
+`teaching` then builds the teaching strand from these renders, and `report` shows the viewer when
+RESULTS/viewer exists. With --serve [--port N] [--exr FILE ...] it renders
 nothing first: it serves RESULTS on localhost and renders any CSV row on request (serve.py)."""
 import argparse
 import json
 import os
 
-from .. import errors, figures, study_csv
-from ..teaching import build as teaching
+from ..io import errors, study_csv
+from ..charts import figures
 from . import export, render, serve
 from .flip import imgdiff_beside
 from .plan import WHOLE, Plan
@@ -98,7 +99,6 @@ def main(argv=None, prog=None):
             return 0
         out = export.export_study(args.results, args.study, df, plan, scenes, args.work, args.cache,
                                   quiet=args.quiet, imgdiff=args.imgdiff or imgdiff_beside(args.raytracer))
-        teaching.build(args.results, args.study, df, plan, args.work, args.cache, out)
     except errors.InputError as e:
         errors.fail(str(e))
     print(f"wrote {out}")

@@ -30,9 +30,10 @@ import json
 import os
 
 import numpy as np
-from .. import errors, figures
+from ..io import errors
+from ..charts import figures
 from .encoding import channels, decode, png_entry  # noqa: F401 (decode: the tests' inverse of png_entry)
-from .exr import read_exr, read_exrs
+from ..io.exr import read_exr, read_exrs
 from .flip import flip_maps, map_path
 from . import view
 from .plan import image_stem

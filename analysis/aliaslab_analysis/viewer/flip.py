@@ -7,8 +7,8 @@ import os
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from .. import errors
-from .exr import read_exrs
+from ..io import errors
+from ..io.exr import read_exrs
 
 
 def imgdiff_beside(raytracer):

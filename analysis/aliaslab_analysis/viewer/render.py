@@ -7,7 +7,7 @@ import shlex
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 
-from .. import errors
+from ..io import errors
 from .plan import image_stem
 
 

@@ -1,4 +1,4 @@
-"""The viewer served on localhost (issue 45 item 3): `python3 -m analysis viewer RESULTS --study CSV --serve
+"""The viewer served on localhost: `python3 -m analysis viewer RESULTS --study CSV --serve
 [--port N] [--exr FILE ...]` serves the page folder RESULTS (its viewer as exported) over http://127.0.0.1 and
 answers the viewer's requests under /alv-api/:
 
@@ -26,10 +26,11 @@ from http.server import SimpleHTTPRequestHandler, ThreadingHTTPServer
 
 import numpy as np
 
-from .. import errors, figures
+from ..io import errors
+from ..charts import figures
 from . import render, serve_xt
 from .encoding import channels, png_entry
-from .exr import read_exr
+from ..io.exr import read_exr
 from .export import SceneExport
 from .view import key_id
 from .flip import flip_maps, map_path

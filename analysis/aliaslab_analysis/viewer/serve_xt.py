@@ -1,4 +1,4 @@
-"""The served viewer's x-t slice (issue 47 item 4; docs/science.md "Motion", "Looking at it: x-t slices"):
+"""The served viewer's x-t slice (docs/science.md "Motion", "Looking at it: x-t slices"):
 
   xt?scene&sampler&spp&filter&radius&seed&row&frames
       renders F frames (2 .. MAX_FRAMES, default DEFAULT_FRAMES) of that CSV row's configuration and seed with a
@@ -13,8 +13,10 @@ import base64
 import io
 import os
 
-from .. import errors, figures, xt_slice
-from .exr import read_exrs
+from ..io import errors
+from ..charts import figures
+from . import xt_slice
+from ..io.exr import read_exrs
 from .plan import image_stem
 from .view import key_id
 

@@ -1,4 +1,4 @@
-"""The view the viewer opens on (issue 45 item 2): the default view's configuration ids among those exported, and
+"""The view the viewer opens on: the default view's configuration ids among those exported, and
 the crop where its methods' mean images differ most relative to their noise (plan.crop_window)."""
 import numpy as np
 

@@ -1,4 +1,4 @@
-"""Error spectra of the study (issue 22): reading <csv folder>/spectra/*.csv and drawing them.
+"""Error spectra of the study: reading <csv folder>/spectra/*.csv and drawing them.
 
 The sweep writes, per scene, the radially averaged power spectrum of every configuration's error
 (I_k - G) and noise (I_k - m), averaged over seeds (lib/measure/spectrum.h, docs/spectrum.md). Frequencies

@@ -28,15 +28,15 @@ CONFIG_KEY = ["scene", "width", "height", "sampler", "spp", "filter", "radius", 
 OPTIONAL_TEXT = ["target", "prefilter", "mse_target_seeds", "align_mse_target_offsets"]
 OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasing_se", "mse_target_se",
                     "flip", "lowfreq_error", "lowfreq_error_se", "blurred_mse", "mean_spp", "max_spp",
-                    # issue 29 (Interface 3): one row per (configuration, target)
+                    # one row per (configuration, target)
                     "target_ref_error", "blur_se", "deterministic", "blurred_mse_own", "lowfreq_error_own",
                     "lowfreq_error_own_se", "cpu_ms", "cpu_ms_se",
-                    # issue 32: the blur curve (the error left after a Gaussian blur of sigma 0.5, 1, 2, 4 px)
+                    # the blur curve (the error left after a Gaussian blur of sigma 0.5, 1, 2, 4 px)
                     "blur_ratio_0.5", "blur_ratio_0.5_se", "blur_ratio_1", "blur_ratio_1_se", "blur_ratio_2",
                     "blur_ratio_2_se", "blur_ratio_4", "blur_ratio_4_se",
-                    # issue 31: NaN / infinite samples left out of the images (absent: unknown)
+                    # NaN / infinite samples left out of the images (absent: unknown)
                     "nonfinite_samples",
-                    # issue 44: the filter's natural radius; the fixed grid's error over K sub-pixel camera
+                    # the filter's natural radius; the fixed grid's error over K sub-pixel camera
                     # offsets (references moved with the camera), on the fixed grid's rows only
                     "natural_radius", "align_offsets", "align_mse_target", "align_mse_target_sd",
                     "align_mse_target_se"]
@@ -220,7 +220,7 @@ def load_study(path):
         (older CSVs: blur and the cross term together, not separable);
       - `aliasing_zero` = True where aliasing is within two standard errors of
         0 (needs aliasing_se; False when unknown);
-      - the columns of issue 29 (study_rows.add_columns): `deterministic`, `cost`,
+      - the columns study_rows.add_columns adds: `deterministic`, `cost`,
         `cost_se` and `seed_values`, with their fallbacks for older CSVs.
     `notes` lists, in words, each fallback taken, for the report and charts to show.
     """

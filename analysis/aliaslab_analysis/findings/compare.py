@@ -41,7 +41,7 @@ import sys
 
 import pandas as pd
 
-from . import errors, study_csv
+from ..io import errors, study_csv
 
 METRICS = ["mse", "aliasing", "noise", "mse_area"]
 TIMES = ["trace_ms", "reconstruct_ms", "time_ms"]

@@ -1,5 +1,5 @@
 """The findings as HTML paragraphs (the page) or as a Markdown section (results/README.md)."""
-from ..report.markdown import inline
+from .markdown import inline
 
 
 def html_paragraphs(findings):

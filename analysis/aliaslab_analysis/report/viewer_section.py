@@ -1,18 +1,18 @@
 """The viewer's section of the page: the element #alv (data-base: the data folder relative to the page,
 data-scenes: the scenes and their files, from RESULTS/viewer/index.json), its style and its script, copied from
-this package into the data folder once (viewer.css, viewer.js: written when they differ) and referred to by
-<link> and <script src> (both work from file://). '' when the folder has no viewer data (run `python3 -m
+the viewer package's folder (aliaslab_analysis/viewer/) into the data folder once (viewer.css, viewer.js: written
+when they differ) and referred to by <link> and <script src> (both work from file://). '' when the folder has no viewer data (run `python3 -m
 analysis viewer` first)."""
 import html
 import json
 import os
 
-HERE = os.path.dirname(os.path.abspath(__file__))
+ASSET_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "viewer")
 ASSETS = ("viewer.js", "viewer_serve.js", "viewer.css")  # viewer_serve.js: active only when served (serve.py)
 
 
 def asset(name):
-    with open(os.path.join(HERE, name), encoding="utf-8") as f:
+    with open(os.path.join(ASSET_DIR, name), encoding="utf-8") as f:
         return f.read()
 
 

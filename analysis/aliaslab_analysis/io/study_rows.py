@@ -1,4 +1,4 @@
-"""The columns of issue 29 that load_study adds to a study's rows, with the fallbacks for older CSVs, and
+"""The columns that load_study adds to a study's rows, with the fallbacks for older CSVs, and
 the study's targets in their order.
 
   deterministic  the CSV's column (1: every seed gave the same image, the fixed grid), else inferred:
@@ -15,7 +15,6 @@ first.
 """
 import numpy as np
 
-from .stats.ties import parse_seeds
 
 PRIMARY_TARGET = "box:0.5"
 # The run-to-run spread of cpu_ms per configuration, relative (module doc).
@@ -60,3 +59,23 @@ def targets(df):
         seen.remove(PRIMARY_TARGET)
         seen.insert(0, PRIMARY_TARGET)
     return seen
+
+
+def parse_seeds(text):
+    """The per-seed values of mse_target_seeds ('a;b;c') as a float array, or None when empty/unreadable."""
+    if text is None or (isinstance(text, float) and np.isnan(text)):
+        return None
+    parts = [p for p in str(text).strip().split(";") if p.strip() != ""]
+    if len(parts) < 2:
+        return None
+    try:
+        return np.array([float(p) for p in parts])
+    except ValueError:
+        return None
+
+
+def components(df):
+    """The decomposition's terms present in df, in drawing order: [(column, label)]."""
+    if "blur" in df.columns and "cross" in df.columns:
+        return [("noise", "noise"), ("aliasing", "aliasing"), ("blur", "blur"), ("cross", "cross term")]
+    return [("noise", "noise"), ("aliasing", "aliasing"), ("blur_cross", "blur + cross (mse_area - mse)")]

@@ -11,7 +11,8 @@ import os
 
 import pandas as pd
 
-from . import csv_tables, errors, figures, palette
+from ..io import csv_tables, errors
+from . import figures, palette
 from .figures import plt
 
 

@@ -1,5 +1,5 @@
 """The one palette: each sampler's colour and each filter's marker (and line colour), defined here once and
-used by every chart (charts/, report/summary_chart.py, spectra.py, pointset_chart.py, convergence_chart.py,
+used by every chart (charts/, report/summary_chart.py, spectra.py, pointsets.py, convergence_experiment.py,
 filter_profiles.py) and by the page's script (as_json, css_variables).
 
 The colours are the Okabe-Ito and Paul Tol "muted" sets, chosen to stay apart under the common forms of

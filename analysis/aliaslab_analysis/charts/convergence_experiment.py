@@ -3,6 +3,9 @@
 Usage: /usr/bin/python3 -m analysis convergence convergence.csv --out DIR
            [--fit-min 16] [--fit-max 4096]
 
+The CSV is the `convergence` program's (which prints this command with its fit range). As the program does,
+--fit-max is capped at the CSV's largest N and --fit-min defaults to at most half of it.
+
 One panel per integrand, one line per sampler; the legend gives the slope
 fitted by least squares on log-log over the powers of two in
 [fit-min, fit-max] (the same fit as lib/measure/convergence.h). Counts that are
@@ -12,7 +15,9 @@ import argparse
 
 import numpy as np
 
-from . import csv_tables, errors, figures, fits, palette
+from ..io import csv_tables, errors
+from . import figures, palette
+from ..stats import fits
 from .figures import plt
 
 COLUMNS = ["sampler", "integrand", "n", "rmse", "realisations"]
@@ -62,8 +67,10 @@ def main(argv=None, prog=None):
     ap = argparse.ArgumentParser(prog=prog, description="RMSE against N chart with fitted slopes")
     ap.add_argument("csv")
     ap.add_argument("--out", required=True)
-    ap.add_argument("--fit-min", type=float, default=16)
-    ap.add_argument("--fit-max", type=float, default=4096)
+    ap.add_argument("--fit-min", type=float, help="smallest N of the slope fit (default 16, at most half the "
+                    "largest N)")
+    ap.add_argument("--fit-max", type=float, default=4096, help="largest N of the slope fit (capped at the largest "
+                    "N; default %(default)s)")
     figures.add_svg_option(ap)
     args = ap.parse_args(argv)
     figures.write_svg(args.svg)
@@ -72,5 +79,7 @@ def main(argv=None, prog=None):
     except errors.InputError as e:
         errors.fail(str(e))
     errors.prepare_out(args.out)
-    chart(df, args.out, args.fit_min, args.fit_max)
+    largest = float(df["n"].max())
+    fit_min = min(16.0, largest / 2) if args.fit_min is None else args.fit_min
+    chart(df, args.out, fit_min, min(args.fit_max, largest))
     return 0

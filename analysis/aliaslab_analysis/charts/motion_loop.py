@@ -1,15 +1,15 @@
-"""An animated image of a short loop of frames (issue 33 item 4; definitions docs/science.md "Motion"): for one
+"""An animated image of a short loop of frames (definitions docs/science.md "Motion"): for one
 scene, each method's frames beside the reference's, the signed error of each frame against that frame's
 reference, and each frame's error (the mean squared difference over pixels and channels) written on it.
 
 Frames are EXR files NAME_0000.exr, NAME_0001.exr, ... as `raytracer -frames F -motion dx,dy -output NAME.exr`
-writes them (results/motion/make_study.sh), read with viewer/exr.py (oiiotool). Each frame's error is the
+writes them (results/motion/make_study.sh), read with io/exr.py (oiiotool). Each frame's error is the
 library's, not computed again here: `imgdiff NAME_t.exr REF_t.exr` (its mse line) for every method and frame,
 gathered in the --errors CSV (name,frame,mse; make_study.sh writes it). Writes an animated PNG (Pillow, Debian's
 python3-pil) and beside it a CSV of the errors (method, frame, mse), which the report's motion section shows
 (report/motion.py).
 
-  python3 -m aliaslab_analysis.motion_loop --frames DIR --reference ref --errors DIR/errors.csv
+  python3 -m analysis.aliaslab_analysis.charts.motion_loop --frames DIR --reference ref --errors DIR/errors.csv
       --methods box=box r 0.5,gauss=gaussian r 1.5 --out results/motion/loop.png"""
 import argparse
 import csv
@@ -19,8 +19,8 @@ import sys
 
 import numpy as np
 
-from . import errors
-from .viewer.exr import read_exrs
+from ..io import errors
+from ..io.exr import read_exrs
 
 SCALE = 2           # pixels per image pixel in the animation (nearest neighbour)
 ERROR_RANGE = 0.2   # the signed error map's full scale (red positive, blue negative)

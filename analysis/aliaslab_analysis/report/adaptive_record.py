@@ -1,8 +1,8 @@
-"""The adaptive samplers against their base, before and after they kept the base's stratification (issue 48 item 4):
+"""The adaptive samplers against their base, before and after they kept the base's stratification:
 the tables and the chart of results/adaptive.md's section "Keeping the base's stratification", generated from
 the sweeps' CSVs (every number there comes from here; analysis/tests/test_adaptive_record.py recomputes them).
 
-    python3 -m analysis.aliaslab_analysis.adaptive_record --before B1.csv [B2.csv ...] --after A1.csv [A2.csv ...]
+    python3 -m analysis.aliaslab_analysis.report.adaptive_record --before B1.csv [B2.csv ...] --after A1.csv [A2.csv ...]
             --out FOLDER
 
 Rows: box r = 0.5, weighted, the error mse_target against the pixel area with its se. Several CSVs of one side
@@ -161,7 +161,7 @@ def chart(path, after, before, same_time):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(prog="python3 -m analysis.aliaslab_analysis.adaptive_record")
+    ap = argparse.ArgumentParser(prog="python3 -m analysis.aliaslab_analysis.report.adaptive_record")
     ap.add_argument("--before", nargs="+", required=True)
     ap.add_argument("--after", nargs="+", required=True)
     ap.add_argument("--out", required=True)

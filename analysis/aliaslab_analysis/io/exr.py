@@ -9,7 +9,7 @@ import tempfile
 
 import numpy as np
 
-from .. import errors
+from . import errors
 
 
 def oiiotool():

@@ -1,4 +1,4 @@
-"""x-t slices (issue 47 item 4; definitions docs/science.md "Motion"): one image row followed over the frames of
+"""x-t slices (definitions docs/science.md "Motion"): one image row followed over the frames of
 a moving camera, the frames registered to the content, stacked top to bottom (frame 0 at the top).
 
 The frames are rendered by the project's raytracer, `-frames F -motion dx,dy -register`: frame t is written moved
@@ -15,7 +15,7 @@ Which rows are shown is chosen from the study CSV by choose(): per scene, the ta
 sample positions, jitter turns it into noise); the grid's still-best method (lowest mse_target) and its steadiest
 (lowest shimmer) at the lowest spp where they differ. Seed 0 of each, as the viewer renders it (viewer/render.py).
 
-  python3 -m analysis.aliaslab_analysis.xt_slice --study results/motion/study/study.csv --bin build/bin
+  python3 -m analysis.aliaslab_analysis.viewer.xt_slice --study results/motion/study/study.csv --bin build/bin
       --frames 32 --out results/motion/study/xt
 writes OUT/xt-SCENE.png per scene and OUT/xt.csv (scene, panel, label, why, the configuration, the row, the
 frames and the motion), which the report's motion section shows (report/motion_xt.py)."""
@@ -31,12 +31,13 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numpy as np
 
-from . import errors, figures, study_rows
-from .motion_loop import display, error_map
-from .report.motion import best, motion_rows
-from .study_csv import load_study
-from .viewer import render
-from .viewer.exr import read_exrs
+from ..io import errors, study_rows
+from ..charts import figures
+from ..charts.motion_loop import display, error_map
+from ..report.motion import best, motion_rows
+from ..io.study_csv import load_study
+from . import render
+from ..io.exr import read_exrs
 
 GUARD = 8         # measure/registration.h kRegistrationGuard: pixels kept clear of the interpolation's border error
 SCALE_X, SCALE_Y = 2, 3  # pixels per image pixel and per frame in the PNG (at least)

@@ -20,7 +20,8 @@ import subprocess
 
 import pandas as pd
 
-from . import csv_tables, errors, figures, palette
+from ..io import csv_tables, errors
+from . import figures, palette
 from .figures import plt
 
 COLUMNS = ["filter", "radius", "describe", "kind", "x", "value"]
