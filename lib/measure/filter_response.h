@@ -1,5 +1,5 @@
 // Each filter's 1-D profile and frequency response, as CSV rows (the
-// filterprofile program; analysis/filter_profiles.py draws them). One source
+// filterprofile program; analysis charts/filter_profiles.py draws them). One source
 // of truth: the library's Filter::profile and Filter::eval.
 //
 // Columns: filter,radius,describe,kind,x,value
