@@ -10,7 +10,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build git
-  libeigen3-dev libopenimageio-dev openimageio-tools libcli11-dev
+  libeigen3-dev libopenimageio-dev openimageio-tools libcli11-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   python3 python3-numpy python3-pandas python3-matplotlib python3-markdown
   parallel clang libclang-rt-14-dev

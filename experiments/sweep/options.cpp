@@ -60,7 +60,8 @@ void addSweepOptions(CLI::App& app, SweepArgs& a) {
   app.add_option("--align-ref-spp", a.c.alignRefSpp, "samples per pixel of the references at each alignment offset")
       ->capture_default_str();
   app.add_option("--out", a.c.out, "output folder (CSV, images, reference manifests)")->capture_default_str();
-  app.add_option("--csv", a.c.csv, "CSV path (default OUT/study.csv, or OUT/study.shard-i-of-N.csv)");
+  app.add_option("--csv", a.c.csv, "CSV path (default OUT/study.csv, or OUT/study.csv.gz when only that exists, or "
+                 "OUT/study.shard-i-of-N.csv); a name ending in .gz is written gzipped");
   app.add_option("--cache", a.c.cache, "reference cache folder")->capture_default_str();
   app.add_option("--threads", a.c.threads, "worker threads (0 = all cores)")->capture_default_str();
   app.add_flag("--images", a.imagesOn, "write images (default: when the study has at most 200 configurations)");

@@ -8,7 +8,7 @@
 #
 # References are rendered once first (--refs-only, on every core whatever
 # --threads says) so shards do not repeat them. Each shard writes OUT/study.shard-i-of-N.csv; the merge writes
-# OUT/study.csv in canonical order. Rerunning resumes every shard.
+# OUT/study.csv (OUT/study.csv.gz when only that exists) in canonical order. Rerunning resumes every shard.
 # Environment: SWEEP (sweep binary, default build/bin/sweep), JOBS (parallel
 # jobs at once, default N).
 set -euo pipefail
@@ -17,4 +17,4 @@ source "$(dirname "$0")/shard_args.sh" "$@"
 "$SWEEP" "${REF_ARGS[@]}" --refs-only
 parallel --will-cite --halt now,fail=1 -j "${JOBS:-$N}" \
   "$SWEEP" "${SWEEP_ARGS[@]}" --quiet --shard {}/"$N" --csv "$OUT"/study.shard-{}-of-"$N".csv ::: $(seq 0 $((N - 1)))
-"$SWEEP" --merge "$OUT/study.csv" "${SHARDS[@]}"
+"$SWEEP" --merge "$MERGED" "${SHARDS[@]}"

@@ -8,7 +8,8 @@
 # value they set, when they do), REF_ARGS (the
 # options without --threads, for the reference pass: it uses every core, and
 # references do not depend on the thread count) and SHARDS (the shard CSV
-# paths OUT/study.shard-i-of-N.csv, i = 0..N-1).
+# paths OUT/study.shard-i-of-N.csv, i = 0..N-1), MERGED (what the merge writes: OUT/study.csv, or
+# OUT/study.csv.gz when only that exists, as the sweep's own default: a study kept gzipped stays so).
 if [[ $# -lt 1 || ! $1 =~ ^[0-9]{1,6}$ ]] || ((10#$1 < 1)); then
   echo "usage: $0 N [sweep options...] (N: the number of shards, 1 or more)" >&2
   exit 2
@@ -50,3 +51,5 @@ for ((k = 0; k < ${#SWEEP_ARGS[@]}; ++k)); do
 done
 SHARDS=()
 for ((i = 0; i < N; ++i)); do SHARDS+=("$OUT/study.shard-$i-of-$N.csv"); done
+MERGED=$OUT/study.csv
+if [[ ! -e $MERGED && -e $MERGED.gz ]]; then MERGED=$MERGED.gz; fi

@@ -9,7 +9,7 @@
 # Submits three jobs: (1) the references, rendered once into the shared
 # cache (--refs-only), (2) an array whose task i runs `sweep --shard i/N` into
 # OUT/study.shard-i-of-N.csv, after (1) succeeded, and (3) the merge into
-# OUT/study.csv, after every array task ended, whatever its state. A task
+# OUT/study.csv (or OUT/study.csv.gz when only that exists), after every array task ended, whatever its state. A task
 # that ends well leaves OUT/slurm/shard-i-of-N.done; the merge job refuses
 # (exit 1) naming the shards without one (a task failed, was cancelled or
 # ran out of time), so a partial shard CSV is never merged. Resubmit those
@@ -88,5 +88,5 @@ check+=" missing=\"\$missing \$i\"; done; if [ -n \"\$missing\" ]; then echo \"s
 check+=" did not finish (failed, cancelled or out of time: see $(p "$OUT")/slurm/shard-i.log); resubmit them with"
 check+=" TASKS=\$(echo \$missing | tr ' ' ,) and the same options\" >&2; exit 1; fi"
 merge=$(submit "${common[@]}" ${SBATCH_EXTRA:-} --job-name=sweep-merge --dependency=afterany:"$array" \
-  --output="$OUT/slurm/merge-%j.log" --wrap="$check; $(p "$SWEEP") --merge $(q "$OUT/study.csv" "${SHARDS[@]}")")
-echo "submitted: references $refs, shards $array ($tasks), merge $merge -> $OUT/study.csv"
+  --output="$OUT/slurm/merge-%j.log" --wrap="$check; $(p "$SWEEP") --merge $(q "$MERGED" "${SHARDS[@]}")")
+echo "submitted: references $refs, shards $array ($tasks), merge $merge -> $MERGED"

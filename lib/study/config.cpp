@@ -214,7 +214,10 @@ std::string csvPath(const StudyConfig& config) {
     return (fs::path(config.out) / ("study.shard-" + std::to_string(config.shardIndex) + "-of-" +
                                     std::to_string(config.shardCount) + ".csv"))
         .string();
-  return (fs::path(config.out) / "study.csv").string();
+  // OUT/study.csv, or OUT/study.csv.gz when only that exists (a study kept gzipped is resumed under its name)
+  const std::string plain = (fs::path(config.out) / "study.csv").string();
+  std::error_code ec;
+  return !fs::exists(plain, ec) && fs::exists(plain + ".gz", ec) ? plain + ".gz" : plain;
 }
 
 ReferenceOptions referenceOptions(const StudyConfig& c) {

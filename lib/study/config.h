@@ -58,7 +58,7 @@ struct StudyConfig {
   /// (sigma = r/3 = 0.5) and the band-limited Lanczos-windowed sinc with its zeros on integer pixels
   std::vector<std::string> targets = {"area", "gaussian:1.5", "lanczos:3"};
   std::string out = "results/study";  ///< output folder
-  std::string csv;          ///< CSV path (default out/study.csv, or out/study.shard-i-of-N.csv)
+  std::string csv;          ///< CSV path (default out/study.csv, or out/study.shard-i-of-N.csv); *.gz: gzipped
   std::string cache = "results/cache/refs";  ///< reference cache folder
   int threads = 0;          ///< worker threads (0: all cores)
   std::optional<bool> images;  ///< write images (default: when there are at most 200 configurations)

@@ -15,6 +15,8 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
+#include "core/gzip.h"
+#include "study/study_scene.h"  // readFileBytes
 
 namespace aliaslab {
 
@@ -113,11 +115,7 @@ std::string csvKey(const std::vector<std::string>& fields) {
 std::string csvKey(const CsvRow& row) { return csvKey(splitCsvLine(formatCsvRow(row))); }
 
 std::vector<std::string> readCsvLines(const std::string& path, bool* motion) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string text = ss.str();
+  const std::string text = readTextMaybeGzip(path, true);  // gzipped or not; a torn last gzip member dropped
   std::vector<std::string> lines;
   size_t start = 0;
   bool header = true;
@@ -168,7 +166,7 @@ std::vector<std::string> sortCsvRows(std::vector<std::string> lines) {
 void writeCsvFile(const std::string& path, const std::vector<std::string>& lines, bool motion) {
   std::string text = csvHeader(motion) + '\n';
   for (const std::string& l : lines) text += l + '\n';
-  writeTextFile(path, text);
+  writeTextMaybeGzip(path, text);  // gzipped when the name ends in .gz
 }
 
 void canonicaliseCsv(const std::string& path) {
@@ -184,9 +182,17 @@ CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
   bool exists = fs::exists(path, ec) && fs::file_size(path, ec) > 0;
   if (exists) {
     // Check that this is a study CSV before changing anything: a file that is not one is never modified.
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw FileError(path, "cannot open for reading");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string bytes = readFileBytes(path);
+    gzip_ = isGzipPath(path) || isGzipData(bytes);
+    std::string text = bytes;
+    size_t wholeBytes = bytes.size();  // the bytes of the file's complete gzip members (all of a plain file)
+    if (gzip_) {  // one gzip member per append: a killed run's torn last member is cut below, as a torn line is
+      Gunzipped g = gunzipMembers(bytes);
+      if (!g.damage.empty() && !g.cutShort)
+        throw FileError(path, "not a gzipped study CSV (" + g.damage + "); left unchanged: give another {csv} or "
+                              "{out}");
+      text = std::move(g.text), wholeBytes = g.completeBytes;
+    }
     const size_t first = text.find('\n');
     const std::string header = csvHeader(motion) + '\n';
     const bool studyHeader = first == std::string::npos ? header.compare(0, text.size(), text) == 0
@@ -219,8 +225,11 @@ CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
                                            std::to_string(expected) + "); the CSV is left unchanged");
       start = end + 1;
     }
-    // Resume: keep complete lines, cut a torn last line (or a torn header).
-    if (keep != text.size()) fs::resize_file(path, keep, ec);
+    // Resume: keep complete lines, cut a torn last line (or a torn header), and a gzip file's torn last member.
+    if (gzip_ && keep != text.size() && keep > 0)  // a torn line inside whole members: rewrite the kept lines
+      writeTextFile(path, gzipMember(text.substr(0, keep)));
+    else if (const size_t size = gzip_ ? (keep > 0 ? wholeBytes : 0) : keep; size != bytes.size())
+      fs::resize_file(path, size, ec);
     if (ec) throw FileError(path, "cannot truncate the partial last line: " + ec.message());
     exists = keep > 0;
     if (exists) {
@@ -232,7 +241,8 @@ CsvAppender::CsvAppender(const std::string& path, bool motion) : path_(path) {
   if (fd_ < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());
   if (!exists) {
     created_ = true;
-    const std::string h = csvHeader(motion) + '\n';
+    gzip_ = isGzipPath(path);
+    const std::string h = gzip_ ? gzipMember(csvHeader(motion) + '\n') : csvHeader(motion) + '\n';
     if (const std::string why = writeFully(fd_, h); !why.empty()) throw FileError(path, "write failed: " + why);
   }
 }
@@ -246,6 +256,7 @@ void CsvAppender::append(const CsvRow& row) { append(std::vector<CsvRow>{row}); 
 void CsvAppender::append(const std::vector<CsvRow>& rows) {
   std::string lines;
   for (const CsvRow& row : rows) lines += formatCsvRow(row) + '\n';
+  if (gzip_) lines = gzipMember(lines);  // one whole member per append
   if (const std::string why = writeFully(fd_, lines); !why.empty()) throw FileError(path_, "write failed: " + why);
   ::fdatasync(fd_);
   wrote_ = wrote_ || !rows.empty();

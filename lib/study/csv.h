@@ -58,6 +58,9 @@
 // not a study CSV is never modified),
 // truncates a trailing partial line (a killed run), and appends each new row
 // with one write() followed by fsync, so a finished row is never lost or torn.
+// A CSV named *.gz is gzipped (core/gzip.h): every append is one whole gzip member written with one write(),
+// so a killed run's torn last member is cut on resume as a torn line is; readers take either kind, told by
+// the gzip magic, and the end of a run or a merge writes the whole file as one member.
 // sortCsvRows() puts rows into the canonical order (by key, numbers compared
 // as numbers), which the end of a run and the merge of shards (study/merge.h) both apply, so a
 // resumed, sharded or interrupted run ends with the same file.
@@ -180,6 +183,7 @@ class CsvAppender {
   int fd_ = -1;
   bool created_ = false;  ///< the file was created (or was empty) here
   bool wrote_ = false;    ///< a row was appended
+  bool gzip_ = false;     ///< the file is gzipped (named *.gz, or found so): each append writes one gzip member
   std::set<std::string> keys_;
   std::vector<std::string> lines_;
 };

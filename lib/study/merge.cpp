@@ -8,21 +8,24 @@
 #include <optional>
 #include <regex>
 #include <set>
+#include <sstream>
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/gzip.h"
 #include "study/contact.h"
 #include "study/csv.h"
 #include "study/lock.h"
 #include "study/spectrum_files.h"
 #include "study/study_identity.h"
+#include "study/study_scene.h"  // readFileBytes
 
 namespace aliaslab {
 
 namespace fs = std::filesystem;
 
 void checkShardSet(const std::vector<std::string>& inputs) {
-  static const std::regex name(R"(shard-(\d+)-of-(\d+)\.csv$)");
+  static const std::regex name(R"(shard-(\d+)-of-(\d+)\.csv(\.gz)?$)");
   std::map<int, std::vector<int>> seen;  // N -> the i given
   for (const std::string& in : inputs) {
     std::smatch m;
@@ -56,10 +59,16 @@ std::vector<std::string> readShardCsv(const std::string& path, bool allowNoRows,
   if (fs::is_directory(path, ec)) throw FileError(path, "is a folder, not a shard CSV");
   if (!fs::exists(path, ec)) throw FileError(path, "no such shard CSV");
   requireRegularFile(path, "a shard CSV is read from a regular file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (text.empty()) throw FileError(path, "is empty (0 bytes): the shard was never written or was emptied");
+  const std::string bytes = readFileBytes(path);
+  std::string text = bytes;
+  if (isGzipData(bytes)) {  // a gzipped shard (study/csv.h): a torn last member is an interrupted shard
+    Gunzipped g = gunzipMembers(bytes);
+    if (!g.damage.empty())
+      throw FileError(path, g.damage + (g.cutShort ? ": the shard was interrupted; rerun its sweep command to "
+                                                      "finish it, then merge" : ""));
+    text = std::move(g.text);
+  }
+  if (bytes.empty()) throw FileError(path, "is empty (0 bytes): the shard was never written or was emptied");
   std::vector<std::string> lines;
   size_t start = 0;
   int lineNo = 0;
@@ -122,7 +131,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
   // A shard with no rows is legitimate only when the study has fewer groups than shards: shard i holds the groups
   // g with g mod N == i, so then every non-empty shard holds exactly one (scene, sampler, spp) group and the
   // empty ones are the highest-numbered. Anything else means rows were lost.
-  static const std::regex shardName(R"(shard-(\d+)-of-(\d+)\.csv$)");
+  static const std::regex shardName(R"(shard-(\d+)-of-(\d+)\.csv(\.gz)?$)");
   std::vector<std::pair<int, std::string>> empty;  // (shard index, file)
   int highestWithRows = -1;
   bool severalGroups = false;
@@ -156,7 +165,7 @@ void mergeCsvFiles(const std::string& out, const std::vector<std::string>& input
     severalGroups = severalGroups || groups.size() > 1;
     if (named) highestWithRows = std::max(highestWithRows, std::stoi(m[1].str()));
     // Line numbers for messages (readShardCsv skips blank lines, so count them again here).
-    std::ifstream text(in, std::ios::binary);
+    std::istringstream text(readTextMaybeGzip(in, false));
     std::string l;
     size_t lineNo = 0, next = 0;
     while (next < lines.size() && std::getline(text, l)) {

@@ -15,7 +15,9 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
+#include "core/gzip.h"
 #include "study/csv.h"
+#include "study/study_scene.h"  // readFileBytes
 
 namespace aliaslab {
 
@@ -138,7 +140,7 @@ void canonicaliseSpectrumCsv(const std::string& path) {
 }
 
 std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene) {
-  const std::filesystem::path csv(studyCsv);
+  const std::filesystem::path csv(withoutGzipSuffix(studyCsv));  // study.csv.gz's spectra are study.csv's
   const std::string stem = csv.filename() == "study.csv" ? "" : "." + csv.stem().string();
   return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
 }
@@ -197,12 +199,6 @@ std::string usualBins(const std::map<std::string, std::map<std::string, std::str
     if (n > most) best = b, most = n;
   return best;
 }
-
-std::string readWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw FileError(path, "cannot open for reading: " + lastSystemError());
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 }  // namespace
 
 void checkSpectrumFile(const std::string& path, const std::vector<std::string>& configurations) {
@@ -210,7 +206,7 @@ void checkSpectrumFile(const std::string& path, const std::vector<std::string>& 
   std::error_code ec;
   if (!fs::exists(path, ec)) throw FileError(path, "missing: its study CSV holds rows of this scene" + kDamaged);
   requireRegularFile(path, "a spectrum CSV is a regular file");
-  const std::string text = readWhole(path);
+  const std::string text = readFileBytes(path);
   if (text.empty()) throw FileError(path, "is empty (0 bytes)" + kDamaged);
   if (text.back() != '\n') throw FileError(path, "cut last line (no newline at the end)" + kDamaged);
   const auto blocks = spectrumBlocks(path, text);
@@ -233,7 +229,7 @@ std::set<std::string> completeSpectra(const std::string& path, std::set<std::str
   std::set<std::string> done;
   if (!std::filesystem::exists(path, ec)) return done;
   requireRegularFile(path, "a spectrum CSV is a regular file");
-  const auto blocks = spectrumBlocks(path, readWhole(path));
+  const auto blocks = spectrumBlocks(path, readFileBytes(path));
   const std::string usual = usualBins(blocks);
   for (const auto& [key, kinds] : blocks) {
     if (present) present->insert(key);

@@ -33,7 +33,8 @@ void canonicaliseSpectrumCsv(const std::string& path);
 /// The header of the spectrum CSV (no newline).
 const std::string& spectrumCsvHeader();
 /// Where the sweep writes a scene's spectra for the study CSV `studyCsv`: <its folder>/spectra/<scene>.csv,
-/// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one.
+/// or <scene>.<CSV stem>.csv when the CSV is not called study.csv (shards, --csv), so shards never share one
+/// (a trailing .gz is not part of the name: study.csv.gz's are study.csv's).
 std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scene);
 /// The spectra of the shard CSVs `inputs` (each shard's spectrumCsvPath files) joined per scene into
 /// spectrumCsvPath(out, scene), in canonical order (study/merge.h). Each shard's spectra must be complete for
