@@ -3,6 +3,7 @@ from the committed quick study's CSV by another path (the csv module and plain l
 from the module's statement), under every target; the verdict rule can say each of wins, loses and tied;
 the losing cells show their density and error images."""
 import csv
+import io
 import math
 import os
 import re
@@ -12,14 +13,15 @@ import unittest
 
 from ..aliaslab_analysis.io import study_csv, study_rows
 from ..aliaslab_analysis.report import adaptive
+from ..aliaslab_analysis.io import text_file
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-COMMITTED = os.path.join(REPO, "results", "study", "study.csv")
+COMMITTED = os.path.join(REPO, "results", "study", "study.csv.gz")
 
 
 def recompute(path, target):
     """{(scene, spp, base): dict} by the module doc's rule, from the raw CSV."""
-    with open(path, newline="") as f:
+    with io.StringIO(text_file.read_text(path), newline="") as f:
         rows = [r for r in csv.DictReader(f) if r["target"] == target and math.isfinite(float(r["mse_target"]))]
     own_name, own_r = target.split(":")
     cells = {}
@@ -139,7 +141,7 @@ class AdaptiveSection(unittest.TestCase):
 
     def test_no_images_no_figures_and_no_adaptive_no_section(self):
         with tempfile.TemporaryDirectory() as tmp:
-            with open(COMMITTED, newline="") as f:
+            with io.StringIO(text_file.read_text(COMMITTED), newline="") as f:
                 rows = list(csv.DictReader(f))
             path = os.path.join(tmp, "plain", "study.csv")
             os.makedirs(os.path.dirname(path))

@@ -14,8 +14,8 @@ from ..aliaslab_analysis.report import answer_csv
 from ..aliaslab_analysis.stats import factors
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-PRESENTED = os.path.join(REPO, "results", "presented", "study.csv")
-QUICK = os.path.join(REPO, "results", "study", "study.csv")
+PRESENTED = os.path.join(REPO, "results", "presented", "study.csv.gz")
+QUICK = os.path.join(REPO, "results", "study", "study.csv.gz")
 TOL = 2e-5  # answer.csv keeps 6 significant digits
 
 

@@ -2,20 +2,22 @@
 plain loops) and the finding's claims against it; a study whose jittered noise is made larger than random's
 yields violations, the finding says so, and the page's contract section shows them in its warning box."""
 import csv
+import io
 import math
 import os
 import unittest
 
 from ..aliaslab_analysis.findings import contract
 from ..aliaslab_analysis.io.study_csv import load_study
+from ..aliaslab_analysis.io import text_file
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-STUDIES = [os.path.join(REPO, "results", p, "study.csv") for p in ("presented", "study", "negative_control")]
+STUDIES = [text_file.existing(os.path.join(REPO, "results", p, "study.csv")) for p in ("presented", "study", "negative_control")]
 
 
 def plain_checks(path):
     rows = {}
-    with open(path, newline="") as f:
+    with io.StringIO(text_file.read_text(path), newline="") as f:
         for r in csv.DictReader(f):
             if (r["filter"], r["reconstruction"], r["prefilter"]) != ("box", "weighted", "none"):
                 continue

@@ -16,8 +16,8 @@ from ..aliaslab_analysis import findings
 from ..aliaslab_analysis.io import study_csv
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-COMMITTED = os.path.join(REPO, "results", "study", "study.csv")
-PRESENTED = os.path.join(REPO, "results", "presented", "study.csv")
+COMMITTED = os.path.join(REPO, "results", "study", "study.csv.gz")
+PRESENTED = os.path.join(REPO, "results", "presented", "study.csv.gz")
 RESULTS_README = os.path.join(REPO, "results", "README.md")
 
 

@@ -13,7 +13,7 @@ from ..aliaslab_analysis.findings import Study
 from ..aliaslab_analysis.stats import fronts
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
-STUDIES = [os.path.join(REPO, "results", p, "study.csv") for p in ("presented", "study")]
+STUDIES = [os.path.join(REPO, "results", p, "study.csv.gz") for p in ("presented", "study")]
 
 
 def dominated(err, cost, i):

@@ -40,8 +40,8 @@ class Page(unittest.TestCase):
             self.assertIn(f"id='tradeoff-chart-{target.replace(':', '-').replace('.', '-')}'", self.page)
         for spp in (1, 4, 16, 64):
             self.assertIn(f"<tr><th>{spp} spp</th>", section)
-        self.assertIn("<a href='answer.csv'>answer.csv</a>", section)
-        self.assertTrue(os.path.isfile(os.path.join(self.results, "answer.csv")))
+        self.assertIn("<a href='answer.csv.gz'>answer.csv.gz</a>", section)
+        self.assertTrue(os.path.isfile(os.path.join(self.results, "answer.csv.gz")))
         self.assertIn("What holds under every target", self.page)
 
     def test_the_fixed_grid_is_deterministic_and_the_shifted_grid_explained(self):

@@ -5,6 +5,7 @@ The committed viewer data of the presented study (results/viewer) against its CS
 encoding round trip, the crop choice and the plan's filter choice against independent computations. (The viewer
 holds the answer: test_viewer_answer; the teaching strand's rules: test_teaching_facts.)"""
 import csv
+import io
 import json
 import os
 import shutil
@@ -17,13 +18,14 @@ import numpy as np
 from ..aliaslab_analysis.viewer import export, flip, plan
 from ..aliaslab_analysis.report import viewer_section as section
 from ..aliaslab_analysis.io.exr import read_exr
+from ..aliaslab_analysis.io import text_file
 
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 IMGDIFF = os.path.join(REPO, "build", "bin", "imgdiff")
 # ALIASLAB_VIEWER_DATA: check viewer data made elsewhere (e.g. a scratch export of the presented study)
 VIEWER = os.environ.get("ALIASLAB_VIEWER_DATA") or os.path.join(REPO, "results", "viewer")
-STUDY = os.environ.get("ALIASLAB_VIEWER_STUDY") or os.path.join(REPO, "results", "presented", "study.csv")
-ANSWER = os.path.join(os.path.dirname(VIEWER), "answer.csv")
+STUDY = os.environ.get("ALIASLAB_VIEWER_STUDY") or os.path.join(REPO, "results", "presented", "study.csv.gz")
+ANSWER = os.path.join(os.path.dirname(VIEWER), "answer.csv.gz")
 WHOLE_BUDGET = 20_000_000  # bytes of the whole-image files of all scenes (loaded only when asked for; 19.2 MB)
 
 
@@ -49,7 +51,7 @@ def load_whole(path, scene):
 
 def csv_rows():
     out = {}
-    with open(STUDY, newline="", encoding="utf-8") as f:
+    with io.StringIO(text_file.read_text(STUDY), newline="") as f:
         for r in csv.DictReader(f):
             if r["reconstruction"] == "weighted" and r["prefilter"] == "none":
                 out[(r["scene"], r["sampler"], int(r["spp"]), r["filter"], float(r["radius"]), r["target"])] = r

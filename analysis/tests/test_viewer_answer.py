@@ -2,6 +2,7 @@
 of each sampler) is among the committed viewer's configurations, found from answer.csv with the csv module,
 independently of the viewer's own choice (viewer/answer.py)."""
 import csv
+import io
 import json
 import os
 import unittest
@@ -9,13 +10,14 @@ import unittest
 import numpy as np
 
 from .test_viewer import ANSWER, STUDY, VIEWER, load_js
+from ..aliaslab_analysis.io import text_file
 
 
 def answer_rows():
     """answer.csv beside the viewer data (read with the csv module), else the report's answer table computed from
     the study (the code that writes answer.csv), as rows of strings."""
     if os.path.isfile(ANSWER):
-        with open(ANSWER, newline="", encoding="utf-8") as f:
+        with io.StringIO(text_file.read_text(ANSWER), newline="") as f:
             return list(csv.DictReader(f))
     from ..aliaslab_analysis.io import study_csv
     from ..aliaslab_analysis.findings.study import Study

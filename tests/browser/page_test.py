@@ -100,7 +100,7 @@ class Page(unittest.TestCase):
 
     def test_the_answer_table_and_the_trade_off_charts_open(self):
         """Issue 44: the answer at a glance is a table near the top of the page (a row per spp level, a column per
-        target, read from the answer.csv beside the page), the rules name the margin, and every target's trade-off
+        target, read from the answer.csv.gz beside the page), the rules name the margin, and every target's trade-off
         chart decodes; screenshots of both go to ARTIFACTS (answer-table.png, tradeoff.png)."""
         from selenium.webdriver.common.by import By
         table = self.driver.find_element(By.CSS_SELECTOR, "table.answer-table")
@@ -109,7 +109,7 @@ class Page(unittest.TestCase):
         targets = self.js("return arguments[0].querySelectorAll('th code').length;", table)
         self.assertEqual(targets, 2)
         self.assertGreater(self.js("return arguments[0].querySelectorAll('.samplers').length;", table), 3)
-        self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(self.page), "answer.csv")))
+        self.assertTrue(os.path.isfile(os.path.join(os.path.dirname(self.page), "answer.csv.gz")))
         self.assertIn("margin of 10 %", self.js("return document.getElementById('rules').textContent;"))
         browser.screenshot(self.driver, os.path.join(ARGS.artifacts, "answer-table.png"),
                            self.js("return arguments[0].getBoundingClientRect().top + window.scrollY - 60;", table))

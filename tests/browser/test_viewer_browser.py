@@ -29,6 +29,8 @@ Exit 77 (CTest: skipped) with the reason when chromium, chromium-driver or pytho
 import argparse
 import csv
 import glob
+import gzip
+import io
 import json
 import os
 import shutil
@@ -85,8 +87,12 @@ def run(cmd, **kw):
 
 
 def csv_rows(path):
-    with open(path, newline="", encoding="utf-8") as f:
-        return list(csv.DictReader(f))
+    """The rows of a CSV, gzipped (answer.csv.gz) or not."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if data[:2] == b"\x1f\x8b":
+        data = gzip.decompress(data)
+    return list(csv.DictReader(io.StringIO(data.decode("utf-8"), newline="")))
 
 
 def default_view_checks(d, check, wait):
@@ -110,7 +116,7 @@ def answer_checks(d, check, wait, page, work):
     scene = d.execute_script("return window.ALIASLAB_VIEWER.state.scene")
     held = set(d.execute_script("return window.ALIASLAB_VIEWER.data[arguments[0]].configs.map(c => c.id)", scene))
     named = set()
-    for r in csv_rows(os.path.join(page, "answer.csv")):
+    for r in csv_rows(os.path.join(page, "answer.csv.gz")):
         if r["verdict"] == "equivalent" and r["scope"] in ("all", scene) and r["reconstruction"] == "weighted":
             named.add(f"{r['sampler']}|{int(float(r['spp']))}|{r['filter']}|{float(r['radius']):g}")
     check(named and named <= held, f"every method answer.csv calls equivalent in {scene} is held "

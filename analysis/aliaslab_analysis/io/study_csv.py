@@ -3,14 +3,16 @@
 load_study(path) -> (DataFrame, notes) is the one entry: columns checked, numbers converted, one row per
 configuration (a repeated configuration is refused), well-named columns added (`error`, the error against
 the common target every ranking uses, and the others listed in its doc), and the fallbacks taken for
-older CSVs listed in words. read_study_csv is the plain checked read (compare uses it).
+older CSVs listed in words. read_study_csv is the plain checked read (compare uses it). A study CSV may be
+gzipped (study.csv.gz): read the same (io/text_file.py).
 """
+import io
 import os
 
 import numpy as np
 import pandas as pd
 
-from . import study_rows
+from . import study_rows, text_file
 from .errors import InputError
 
 # The sweep CSV's columns, in order (lib/study/csv.h).
@@ -64,9 +66,9 @@ def read_study_csv(path):
         raise InputError(f"{path}: no such file")
     if not os.path.isfile(path):
         raise InputError(f"{path}: not a regular file (a FIFO or device?): a study CSV is read from a file")
-    check_lines(path)
+    text = check_lines(path)
     try:
-        df = pd.read_csv(path, dtype=str, keep_default_na=False)
+        df = pd.read_csv(io.StringIO(text), dtype=str, keep_default_na=False)
     except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError) as e:
         raise InputError(f"{path}: not a readable CSV: {e}") from e
     missing = [c for c in STUDY_COLUMNS if c not in df.columns]
@@ -126,16 +128,10 @@ def check_motion(df, path):
 
 def check_lines(path):
     """Raises InputError naming the line when the CSV's last line is cut (no newline at its end, as a
-    killed sweep leaves it) or a row has another number of fields than the header."""
+    killed sweep leaves it; or a gzipped CSV's last member cut short) or a row has another number of fields
+    than the header. Returns the CSV's text (decompressed when gzipped: io/text_file.py)."""
     import csv
-    import io
-    try:
-        with open(path, newline="", encoding="utf-8") as f:
-            text = f.read()
-    except UnicodeDecodeError as e:
-        raise InputError(f"{path}: not a readable CSV: {e}") from e
-    except OSError as e:
-        raise InputError(f"{path}: cannot read: {e.strerror or e}") from e
+    text = text_file.read_text(path)
     if not text:
         raise InputError(f"{path}: is empty (0 bytes)")
     rows = list(csv.reader(io.StringIO(text)))
@@ -146,6 +142,7 @@ def check_lines(path):
     for i, r in enumerate(rows[1:], start=2):
         if r and len(r) != width:
             raise InputError(f"{path}: line {i}: has {len(r)} fields, the header {width} (a cut or damaged row)")
+    return text
 
 
 def absurd_values(df, path):

@@ -1,5 +1,5 @@
-"""answer.csv: the answer as data (stats/equivalence.table), written by the report beside its page and read
-back for the page's answer table, so that the page shows what the file says.
+"""answer.csv.gz: the answer as data (stats/equivalence.table), written gzipped by the report beside its page and
+read back for the page's answer table, so that the page shows what the file says.
 
 Columns: target, spp, scope (a scene, or "all" across scenes), the method (sampler, filter, radius,
 filter_params, reconstruction, prefilter, deterministic), ratio (to the scene's best; for "all" the median over
@@ -8,22 +8,27 @@ verdict (equivalent / worse / undetermined at the margin), heavy_tailed, margin,
 made: log, bootstrap, linear, best; bootstrap-scenes for "all"), best (the scene's best row), error and
 error_se (per scene), scenes and equivalent_scenes (for "all": the scenes with a ratio and those where the
 method is equivalent)."""
+import gzip
+import io
 import os
 
 import pandas as pd
 
-from ..io import errors
+from ..io import errors, text_file
 from ..stats import equivalence
 
-NAME = "answer.csv"
+NAME = "answer.csv.gz"
 
 
 def write(table, folder):
-    """Writes FOLDER/answer.csv atomically (6 significant digits); returns its path."""
+    """Writes FOLDER/answer.csv.gz atomically (6 significant digits; gzip -9 without a name or time, so the same
+    table gives the same bytes); returns its path."""
     path = os.path.join(folder, NAME)
     tmp = path + ".partial"
     try:
-        table.to_csv(tmp, index=False, float_format="%.6g")
+        data = gzip.compress(table.to_csv(index=False, float_format="%.6g").encode("utf-8"), compresslevel=9, mtime=0)
+        with open(tmp, "wb") as f:
+            f.write(data)
         os.replace(tmp, path)
     except OSError as e:
         if os.path.exists(tmp):
@@ -33,8 +38,8 @@ def write(table, folder):
 
 
 def read(path):
-    """answer.csv as a DataFrame (text columns as text, booleans as bool)."""
-    t = pd.read_csv(path, dtype={"scope": str, "sampler": str, "filter": str, "filter_params": str,
+    """answer.csv(.gz) as a DataFrame (text columns as text, booleans as bool); gzipped or not."""
+    t = pd.read_csv(io.StringIO(text_file.read_text(path)), dtype={"scope": str, "sampler": str, "filter": str, "filter_params": str,
                                  "reconstruction": str, "prefilter": str, "verdict": str, "interval": str,
                                  "target": str}, keep_default_na=False, na_values=[""])
     for c in ("deterministic", "heavy_tailed", "best"):

@@ -69,4 +69,4 @@ def answer_table(path, targets, levels, present, n_scenes, margin, science):
             "their median error over each scene's best. The rows compared in a scene share its references: their "
             f"part of the error is counted for both rows of a ratio (conservative). Rules: <a href='{science}"
             "#answers-a-practitioner-can-act-on'>docs/science.md</a>; the numbers: "
-            f"<a href='{html.escape(answer_csv.NAME)}'>answer.csv</a>.</p>")
+            f"<a href='{html.escape(answer_csv.NAME)}'>{html.escape(answer_csv.NAME)}</a>.</p>")

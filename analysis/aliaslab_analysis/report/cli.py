@@ -3,7 +3,7 @@ import argparse
 import os
 import sys
 
-from ..io import errors
+from ..io import errors, text_file
 from ..charts import figures
 from .page import build_report, shown_path
 from .tables import tables
@@ -11,6 +11,7 @@ from .tables import tables
 
 def default_study(results):
     for p in (os.path.join(results, "study", "study.csv"), os.path.join(results, "study.csv")):
+        p = text_file.existing(p)  # or study.csv.gz
         if os.path.isfile(p):
             return p
     return None
@@ -30,7 +31,8 @@ def main(argv=None, prog=None):
     ap = argparse.ArgumentParser(prog=prog, description="The HTML report of an aliaslab study (findings first); "
                                  "definitions in docs/science.md")
     ap.add_argument("results", help="folder the report is written into (index.html, engineering.html)")
-    ap.add_argument("--study", help="study CSV (default RESULTS/study/study.csv, else RESULTS/study.csv)")
+    ap.add_argument("--study", help="study CSV, gzipped or not (default RESULTS/study/study.csv, else "
+                    "RESULTS/study.csv, each also as .csv.gz)")
     ap.add_argument("--charts", help="folder of the charts, drawn there from the study (default RESULTS/charts)")
     ap.add_argument("--images", help="folder of the sweep's images (default: the study CSV's folder/images)")
     ap.add_argument("--label", help="how the page names the study (default: 'the quick study PATH' or "
@@ -43,7 +45,7 @@ def main(argv=None, prog=None):
                     help="the margin of practical equivalence: a method is equivalent to a scene's best when the 95 %% "
                     "interval of its error ratio lies below 1 + DELTA (default 0.10, printed on the page)")
     ap.add_argument("--quick", metavar="CSV", help="the quick study to reconcile this one with (same scenes at "
-                    "another size; default RESULTS/study/study.csv when it exists and is not --study)")
+                    "another size; default RESULTS/study/study.csv[.gz] when it exists and is not --study)")
     ap.add_argument("--tables", action="store_true", help="print Markdown tables for results/README.md")
     ap.add_argument("--findings-md", action="store_true",
                     help="print the generated findings as Markdown (results/README.md's findings section)")

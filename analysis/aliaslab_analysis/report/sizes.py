@@ -10,14 +10,14 @@ import os
 
 import numpy as np
 
-from ..io import study_csv
+from ..io import study_csv, text_file
 from ..findings.study import facts, plural
 from ..stats import factors, sizes
 
 
 def quick_csv(results, study, given=None):
     """The quick study to reconcile the page's study with (module doc), or None."""
-    path = given or os.path.join(results, "study", "study.csv")
+    path = given or text_file.existing(os.path.join(results, "study", "study.csv"))  # or study.csv.gz
     if not os.path.isfile(path) or os.path.realpath(path) == os.path.realpath(study):
         return None
     return path

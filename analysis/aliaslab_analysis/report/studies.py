@@ -1,5 +1,5 @@
 """The other studies a page links to: every folder directly under the results folder that
-holds a study CSV (study/study.csv or study.csv), linked to its page (index.html) or else to the CSV, described
+holds a study CSV (study/study.csv or study.csv, or either .csv.gz), linked to its page (index.html) or else to the CSV, described
 from its CSV (scenes,
 size, spp, seeds, references, targets), and the repository's presented study (results/index.html) when the
 page is written elsewhere (the quick study of README command (a) writes runs/default/index.html)."""
@@ -9,6 +9,7 @@ import os
 import pandas as pd
 
 from ..findings.study import is_quick
+from ..io import text_file
 from ..io.study_rows import targets
 
 COLUMNS = ["scene", "width", "height", "spp", "seeds", "ref_spp", "sampler"]
@@ -16,6 +17,7 @@ COLUMNS = ["scene", "width", "height", "spp", "seeds", "ref_spp", "sampler"]
 
 def csv_of(folder):
     for p in (os.path.join(folder, "study", "study.csv"), os.path.join(folder, "study.csv")):
+        p = text_file.existing(p)  # or study.csv.gz
         if os.path.isfile(p):
             return p
     return None
@@ -27,7 +29,7 @@ def summary(csv):
         head = pd.read_csv(csv, nrows=0).columns
         use = [c for c in COLUMNS + ["target", "prefilter", "frames"] if c in head]
         df = pd.read_csv(csv, usecols=use, dtype={"target": str, "prefilter": str})
-    except (OSError, ValueError, pd.errors.ParserError):
+    except (OSError, EOFError, ValueError, pd.errors.ParserError):  # EOFError: a gzip member cut short
         return ""
     if "target" not in df.columns:
         df["target"] = "box:0.5"

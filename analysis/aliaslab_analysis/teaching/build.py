@@ -8,6 +8,7 @@ import os
 
 import numpy as np
 
+from ..io import text_file
 from ..io.exr import read_exr
 from ..viewer.export import SceneExport, channels
 from ..viewer.plan import image_stem
@@ -59,7 +60,7 @@ def negative_control(results):
     """negative.control of the negative-control study beside the page (RESULTS/negative_control/study.csv, else the
     repository's), or {}."""
     for folder in (results, os.path.join(REPO, "results")):
-        path = os.path.join(folder, "negative_control", "study.csv")
+        path = text_file.existing(os.path.join(folder, "negative_control", "study.csv"))  # or study.csv.gz
         if os.path.isfile(path):
             return negative.control(load_study(path)[0])
     return {}
