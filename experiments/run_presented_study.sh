@@ -16,11 +16,12 @@
 #       a Slurm job array of N shards (experiments/sweep/slurm_sweep.sh;
 #       SBATCH_EXTRA passes partition, account, time limit ...).
 #
-# Output: results/presented/study.csv (shards study.shard-i-of-N.csv beside
+# Output: results/presented/study.csv.gz, the committed study, gzipped (or
+# study.csv when no .gz is there; shards study.shard-i-of-N.csv beside
 # it), reference manifests in results/presented/references, the reference
 # cache in results/cache/refs. Rerunning the same command resumes every shard
 # where it stopped; nothing finished is lost. Then, e.g.:
-#   /usr/bin/python3 -m analysis report results --study results/presented/study.csv
+#   /usr/bin/python3 -m analysis report results --study results/presented/study.csv.gz
 # Environment: SWEEP (sweep binary, default build/bin/sweep), JOBS (parallel
 # jobs at once, default N).
 set -euo pipefail

@@ -15,6 +15,15 @@ namespace aliaslab {
 namespace {
 constexpr int kGzipWindow = 15 + 16;  // zlib: a 32 KiB window, with the gzip header and trailer
 constexpr size_t kChunk = 1 << 18;
+
+// Gives the stream the next part of `bytes` (from `fed` on) when it has used what it had (zlib counts in 32 bits).
+void feed(z_stream& s, const std::string& bytes, size_t& fed) {
+  if (s.avail_in > 0 || fed >= bytes.size()) return;
+  const size_t n = std::min<size_t>(bytes.size() - fed, UINT_MAX / 2);
+  s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data() + fed));
+  s.avail_in = static_cast<uInt>(n);
+  fed += n;
+}
 }  // namespace
 
 bool isGzipPath(const std::string& path) {
@@ -39,12 +48,7 @@ std::string gzipMember(const std::string& text) {
   size_t fed = 0;
   int rc = Z_OK;
   do {
-    if (s.avail_in == 0 && fed < text.size()) {
-      const size_t n = std::min<size_t>(text.size() - fed, UINT_MAX / 2);
-      s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(text.data() + fed));
-      s.avail_in = static_cast<uInt>(n);
-      fed += n;
-    }
+    feed(s, text, fed);
     s.next_out = reinterpret_cast<Bytef*>(buffer.data());
     s.avail_out = static_cast<uInt>(buffer.size());
     rc = deflate(&s, fed == text.size() ? Z_FINISH : Z_NO_FLUSH);
@@ -65,12 +69,7 @@ Gunzipped gunzipMembers(const std::string& bytes) {
     size_t fed = g.completeBytes;
     int rc = Z_OK;
     do {
-      if (s.avail_in == 0 && fed < bytes.size()) {
-        const size_t n = std::min<size_t>(bytes.size() - fed, UINT_MAX / 2);
-        s.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data() + fed));
-        s.avail_in = static_cast<uInt>(n);
-        fed += n;
-      }
+      feed(s, bytes, fed);
       s.next_out = reinterpret_cast<Bytef*>(buffer.data());
       s.avail_out = static_cast<uInt>(buffer.size());
       rc = inflate(&s, Z_NO_FLUSH);
