@@ -89,9 +89,9 @@ class StudyCharts(unittest.TestCase):
         self.assertEqual(int(row["flagged"].iloc[0]), 1)
 
     def test_a_flagged_row_keeps_its_place_on_the_charts(self):
-        # scene b, random, spp 1 is flagged: it stays in decomposition.csv, and on the summary chart its
+        # scene b, random, spp 1 is flagged: it stays in decomposition.csv.gz, and on the summary chart its
         # method's point is drawn (hollow), with the true number of scenes behind its median.
-        dec = pd.read_csv(os.path.join(self.out, "decomposition.csv"))
+        dec = pd.read_csv(os.path.join(self.out, "decomposition.csv.gz"))
         self.assertEqual(int(dec[(dec["sampler"] == "random") & (dec["spp"] == 1)]["flagged"].sum()), 4)
         df, notes = study_csv.load_study(self.csv)
         from ..aliaslab_analysis.findings import Study

@@ -64,7 +64,7 @@ class DegenerateStudies(unittest.TestCase):
         def negative(r):
             r["aliasing"] = -abs(r["aliasing"]) - 1e-6
         out = self.draw(negative)
-        table = pd.read_csv(os.path.join(out, "decomposition.csv"))
+        table = pd.read_csv(os.path.join(out, "decomposition.csv.gz"))
         self.assertTrue((table["aliasing"] < 0).all())
 
     def test_nan_and_inf_values(self):

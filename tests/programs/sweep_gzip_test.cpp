@@ -98,6 +98,18 @@ TEST(SweepGzip, AGzipCsvHoldsTheBytesOfThePlainOne) {
   EXPECT_LT(fs::file_size(merged), plain.size() / 2);
 }
 
+TEST(SweepGzip, TheDefaultCsvIsTheGzippedOneWhenOnlyThatExists) {
+  // OUT/study.csv.gz alone (a committed study): the sweep without --csv resumes it and writes no study.csv
+  const fs::path out = workDir() / "default";
+  fs::create_directories(out);
+  std::ofstream(out / "study.csv.gz", std::ios::binary) << gzipMember(headAndRows(7));
+  const auto r = run(tinyArgs() + " --out " + out.string());
+  ASSERT_EQ(r.exitCode, 0) << r.out;
+  EXPECT_NE(r.out.find("7 resumed"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(out / "study.csv"));
+  EXPECT_EQ(withoutTiming(gunzip(out / "study.csv.gz")), withoutTiming(slurp(plainCsv())));
+}
+
 TEST(SweepGzip, ATornLastMemberIsCutOnResumeAndTheRunEndsWithTheSameRows) {
   const auto expected = withoutTiming(slurp(plainCsv()));
   // As a killed run leaves it: the header and 5 rows in whole members, then half of a member with 2 more rows.

@@ -36,7 +36,7 @@ Writes into DIR, each as .png (and .svg with --svg):
                           per sampler, beside white noise's curve (CSVs with
                           the blur_ratio columns)
 and the tables pareto.csv (the front of every scene), flagged.csv and
-decomposition.csv. A CSV repeating a configuration is refused (exit 2).
+decomposition.csv.gz. A CSV repeating a configuration is refused (exit 2).
 
 Colours and markers: palette.py; matplotlib (Agg) and saving: figures.py. One module per chart family (axes.py:
 what they share); draw_all draws them all, cli.py is the command. Beside the study's charts, the charts of

@@ -7,9 +7,9 @@ Usage:
   /usr/bin/python3 -m analysis report RESULTS_DIR --tables [--study CSV]
   /usr/bin/python3 -m analysis report RESULTS_DIR --findings-md [--study CSV]
 
-Writes RESULTS_DIR/index.html and RESULTS_DIR/answer.csv, and RESULTS_DIR/engineering.html when
+Writes RESULTS_DIR/index.html and RESULTS_DIR/answer.csv.gz, and RESULTS_DIR/engineering.html when
 RESULTS_DIR holds benchmark or fuzzing records (*_speed.md, fuzzing.md).
-Defaults: --study RESULTS_DIR/study/study.csv (else RESULTS_DIR/study.csv),
+Defaults: --study RESULTS_DIR/study/study.csv (else RESULTS_DIR/study.csv; each also as .csv.gz),
 --charts RESULTS_DIR/charts, --images = the study CSV's folder + /images.
 Only the one study CSV is read: shard CSVs lying beside it are ignored, and a
 CSV that repeats a configuration is refused (exit 2).
@@ -22,7 +22,7 @@ from its anchors (navigation.py; every scene and every chart has one), click-to-
      CSV: its page, else its CSV; report/studies.py); then the answer at a
      glance: a table (a row per spp, a column per target) of the leading
      samplers, their filter and radius and jittered's and random's error
-     against the best, read from RESULTS_DIR/answer.csv, which the report
+     against the best, read from RESULTS_DIR/answer.csv.gz, which the report
      writes (answer_csv.py, answer_table.py; the margin of equivalence:
      --margin, default 0.10); then the scene gallery (a card per scene: the
      study's reference image or thumbnails/<scene>.png beside the CSV, its

@@ -1,7 +1,7 @@
 """The `teaching` command: the teaching strand (build.py) from a study's CSV and the images the `viewer` command
 rendered and exported, written as RESULTS/viewer/teaching.html for the page to show.
 
-  /usr/bin/python3 -m analysis viewer results --study results/presented/study.csv --raytracer build/bin/raytracer
+  /usr/bin/python3 -m analysis viewer results --study results/presented/study.csv.gz --raytracer build/bin/raytracer
   /usr/bin/python3 -m analysis teaching results --study results/presented/study.csv
 
 The chosen configurations are the viewer's (viewer/plan.py, with the same --flip-seeds), read from --work."""

@@ -1,7 +1,7 @@
 """The `viewer` command: renders the chosen configurations of a study (plan.py) with the raytracer into a work
 folder and exports the viewer's data beside the page (export.py).
 
-  /usr/bin/python3 -m analysis viewer results --study results/presented/study.csv \\
+  /usr/bin/python3 -m analysis viewer results --study results/presented/study.csv.gz \\
       --raytracer build/bin/raytracer [--imgdiff build/bin/imgdiff] [--work results/cache/viewer] [--jobs 2]
 
 writes RESULTS/viewer/<scene>.js (one per scene, loaded by the page when that scene is opened) and
