@@ -54,16 +54,31 @@ class TheAnswerIsInTheViewer(unittest.TestCase):
     def test_every_method_answer_csv_names_is_in_the_viewer(self):
         with open(os.path.join(VIEWER, "index.json"), encoding="utf-8") as f:
             index = json.load(f)
-        held = {}
+        held, whole, primary = {}, {}, {}
         for s, v in index["scenes"].items():
             d = load_js(os.path.join(VIEWER, v["file"]))
             held[s] = {(c["sampler"], c["spp"], c["filter"], float(c["radius"])) for c in d["configs"]}
-            # the methods equivalent to the best: their whole image and whole FLIP maps, unless the export kept
-            # only the opening view's whole images (viewer --whole view; the rest rendered on demand with --serve)
+            # the methods equivalent to the best: their whole image and whole FLIP maps (--whole answer or all;
+            # --whole headline: those against the primary target at the lowest spp; --whole view: the opening
+            # view's only, the rest rendered on demand with --serve)
+            whole[s] = {(c["sampler"], c["spp"], c["filter"], float(c["radius"])) for c in d["configs"]
+                        if c["whole"] and set(c["flipWhole"]) == set(d["targets"])}
+            primary[s] = d["primary"]
             for c in d["configs"]:
                 if "E" in c["sets"] and index.get("whole", "answer") in ("answer", "all"):
                     self.assertTrue(c["whole"] and set(c["flipWhole"]) == set(d["targets"]), (s, c["id"]))
-        named = named_methods(answer_rows(), sorted(held))
+        rows = answer_rows()
+        if index.get("whole") == "headline":
+            low = min(int(float(r["spp"])) for r in rows)
+            target = next(iter(primary.values()))  # the study's primary target (every scene's)
+            first = [r for r in rows if r["target"] == target and int(float(r["spp"])) == low]
+            wanted = named_methods(first, sorted(held))
+            headline = [(s, k) for s in wanted for k, why in wanted[s].items() if why.startswith("equivalent")]
+            self.assertGreater(len(headline), 0)
+            self.assertEqual([x for x in headline if x[1] not in whole[x[0]]], [],
+                             "methods equivalent to the best at the lowest spp against the primary target without "
+                             "their whole image and whole FLIP maps")
+        named = named_methods(rows, sorted(held))
         missing = [(s, k, why) for s in named for k, why in named[s].items() if k not in held[s]]
         self.assertGreater(sum(map(len, named.values())), 0)
         self.assertEqual(missing, [], f"{len(missing)} named methods missing from {VIEWER} (regenerate it: "

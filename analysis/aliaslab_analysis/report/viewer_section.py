@@ -8,7 +8,8 @@ import json
 import os
 
 ASSET_DIR = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "viewer")
-ASSETS = ("viewer.js", "viewer_serve.js", "viewer.css")  # viewer_serve.js: active only when served (serve.py)
+SCRIPTS = ("viewer_kit.js", "viewer_panels.js", "viewer.js", "viewer_serve.js")  # in load order; viewer_serve.js: active only when served (serve.py)
+ASSETS = SCRIPTS + ("viewer.css",)
 
 
 def asset(name):
@@ -17,7 +18,7 @@ def asset(name):
 
 
 def write_assets(data_dir):
-    """Copies viewer.js and viewer.css into data_dir where missing or different."""
+    """Copies the scripts and viewer.css into data_dir where missing or different."""
     for name in ASSETS:
         path, text = os.path.join(data_dir, name), asset(name)
         if os.path.isfile(path):
@@ -76,8 +77,7 @@ def viewer_section(page_dir, data_dir=None, write=True):
             "<div class='alv-scenes'></div><div class='alv-controls'></div><div class='alv-status'></div>"
             "<canvas class='alv-bar' width='384' height='12'></canvas><span class='alv-bar-label'></span>"
             "<div class='alv-panels'></div></div>"
-            f"<script src='{html.escape(rel)}viewer.js'></script>"
-            f"<script src='{html.escape(rel)}viewer_serve.js'></script>" + teaching(data_dir))
+            + "".join(f"<script src='{html.escape(rel)}{name}'></script>" for name in SCRIPTS) + teaching(data_dir))
 
 
 def teaching(data_dir):

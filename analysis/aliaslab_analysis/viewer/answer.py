@@ -28,11 +28,12 @@ def plain(t):
 
 
 class Answer:
-    """wanted[scene] = {config key: [reasons]}; sets[scene] = {config key: set of "E"/"P"}; s: the Study."""
+    """wanted[scene] = {config key: [reasons]}; sets[scene] = {config key: set of "E"/"P"}; headline[scene] = the
+    keys equivalent to the best against the primary target at the lowest spp (the page's first answer); s: the Study."""
 
     def __init__(self, df, notes=None):
         self.s = Study(df, notes or [])
-        self.wanted, self.sets = {}, {}
+        self.wanted, self.sets, self.headline = {}, {}, {}
         ans = plain(self.s.answer)
         eq = ans[ans["verdict"] == factors.EQUIVALENT]
         picks = plain(self.s.picks)
@@ -47,6 +48,8 @@ class Answer:
             for _, r in eq[(eq["scope"] == scene) | (eq["scope"] == "all")].iterrows():
                 where = "across scenes" if r["scope"] == "all" else "in this scene"
                 add(key_of(r, "filter"), f"equivalent to the best {where} against {r['target']} at {int(r['spp'])} spp", "E")
+                if r["target"] == self.s.primary and int(r["spp"]) == self.s.levels[0]:
+                    self.headline.setdefault(scene, set()).add(key_of(r, "filter"))
             for _, r in picks.iterrows():
                 add(key_of(r), f"best of {r['sampler']} against {r['target']} at {int(r['spp'])} spp "
                                f"(median {r['median_ratio']:.3g}x the best)", "P")

@@ -18,7 +18,8 @@ TEACHING_SAMPLERS = ("uniform", "jittered", "sobol")
 CROP_SEEDS = 4  # seeds rendered for the default view's methods (their mean images and noise choose the crop)
 
 WHOLE = {"all": "every configuration shown", "answer": "the methods equivalent to the best (set E) and the default "
-         "view", "view": "the default view's methods"}  # --whole: whose whole image and whole FLIP maps are held
+         "view", "headline": "the default view's methods and those equivalent to the best against the primary target at "
+         "the lowest spp (the page's first answer)", "view": "the default view's methods"}  # --whole: whose whole image and whole FLIP maps are held
 
 
 def shown_rows(df):
@@ -69,8 +70,9 @@ class Plan:
             for key in ([self.default["cfg"]] + self.default["pins"]) if self.default else []:
                 if key in want:  # the default view's noise, which the crop is judged by, from more seeds
                     want[key]["seeds"].update(range(min(self.seeds, max(self.flip, CROP_SEEDS))))
-            self.configs[str(scene)] = [dict(c, seeds=sorted(c["seeds"]), sets=sorted(c["sets"]))
-                                        for _, c in sorted(want.items())]
+            first = answer.headline.get(str(scene), set())
+            self.configs[str(scene)] = [dict(c, seeds=sorted(c["seeds"]), sets=sorted(c["sets"]), headline=k in first)
+                                        for k, c in sorted(want.items())]
 
     def describe(self):
         return (f"E: every method the answer calls equivalent to the best (in the scene or across scenes, every "

@@ -56,4 +56,5 @@ def default_view(plan, out_configs):
 def holds_whole(plan, c):
     """Whether configuration c's whole image and whole FLIP maps are stored (plan.whole: a key of WHOLE)."""
     how = getattr(plan, "whole", "all")
-    return how == "all" or config_id(c) in default_ids(plan) or (how == "answer" and "E" in c["sets"])
+    return how == "all" or config_id(c) in default_ids(plan) or (how == "answer" and "E" in c["sets"]) or \
+        (how == "headline" and c.get("headline", False))

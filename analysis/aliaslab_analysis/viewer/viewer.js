@@ -5,8 +5,10 @@
 // FLIP maps against the non-primary targets) are in the scene's second file (d.wholeFile), loaded the same way
 // the first time one of them is shown; it calls ALIASLAB_VIEWER_WHOLE(scene, images). Panels: the current method and the
 // pinned ones, drawn with the same mode, seed, region, zoom and pan; the numbers beside each are its CSV row's.
+// Loaded after viewer_kit.js (decoding, colour maps) and viewer_panels.js (the panels, readout and colour bar).
 (function () {
   "use strict";
+  const K = window.ALIASLAB_VIEWER_KIT, {el, byValue} = K;
   const root = document.getElementById("alv");
   if (!root) return;
   const base = root.dataset.base, scenes = JSON.parse(root.dataset.scenes);
@@ -18,6 +20,10 @@
                  ["flip", "FLIP map vs T"]];
   const DIMS = ["sampler", "spp", "filter", "radius"], VIEW = 384;
   window.ALIASLAB_VIEWER = {state: S, data: data};
+  const D = () => data[S.scene];
+  const cfgOf = (id) => D().configs.find((c) => c.id === id);
+  const cur = () => cfgOf(S.cfg);
+  const P = window.ALIASLAB_VIEWER_PANELS({S, D, cur, root, VIEW, draw: () => draw()});
   // select(id[, mode, region]): shows a configuration (the tests; a link to a method); false when it is not held
   window.ALIASLAB_VIEWER.select = (id, mode, region) => {
     if (!S.scene || !cfgOf(id)) return false;
@@ -37,18 +43,6 @@
     Object.assign(data[scene].images, images);
     if (arrived[scene]) arrived[scene]();
   };
-
-  const fmt = (v) => v === null || v === undefined ? "n/a"
-    : typeof v === "number" ? (Number.isInteger(v) ? String(v) : Number(v).toPrecision(3)) : String(v);
-  const el = (tag, attrs, text) => {
-    const e = document.createElement(tag);
-    for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
-  const D = () => data[S.scene];
-  const cfgOf = (id) => D().configs.find((c) => c.id === id);
-  const cur = () => cfgOf(S.cfg);
 
   function load(scene) {
     if (data[scene]) return open(scene);
@@ -73,19 +67,6 @@
     return later[scene];
   }
 
-  function pixelsOf(src, w, h) {  // Promise of the RGBA bytes of a PNG data URI
-    return new Promise((resolve, reject) => {
-      const img = new Image();
-      img.onload = () => {
-        const c = el("canvas", {width: w, height: h}), ctx = c.getContext("2d");
-        ctx.drawImage(img, 0, 0);
-        resolve(ctx.getImageData(0, 0, w, h).data);
-      };
-      img.onerror = () => reject(new Error("cannot decode an image of " + S.scene));
-      img.src = src;
-    });
-  }
-
   function values(id) {  // Promise of {w, h, c, v: Float32Array (interleaved channels), step} of an image id
     const scene = S.scene, key = scene + "/" + id;
     if (decoded[key]) return decoded[key];
@@ -93,24 +74,11 @@
     decoded[key] = ready.then(() => {
       const e = data[scene].images[id];
       if (!e) throw new Error("no image " + id + " in the data of " + scene);
-      return Promise.all([pixelsOf(e.src, e.w, e.h), e.src2 ? pixelsOf(e.src2, e.w, e.h) : null]).then(([a, b]) => [e, a, b]);
-    }).then(([e, a, b]) => {
-      const n = e.w * e.h, v = new Float32Array(n * e.c), k = (e.hi - e.lo) / (Math.pow(2, e.bits) - 1);
-      for (let i = 0; i < n; ++i)
-        for (let ch = 0; ch < e.c; ++ch) {
-          const q = e.bits === 8 ? a[4 * i + ch] : e.c === 1 ? a[4 * i] * 256 + a[4 * i + 1] : a[4 * i + ch] * 256 + b[4 * i + ch];
-          v[i * e.c + ch] = e.lo + q * k;
-        }
-      return {w: e.w, h: e.h, c: e.c, v: v, step: k};
+      return K.decode(e);
     });
     decoded[key].catch(() => { delete decoded[key]; });  // a failed load may be retried
     return decoded[key];
   }
-
-  const at = (im, i, ch) => im.v[i * im.c + Math.min(ch, im.c - 1)];
-  const mean = (im, i) => { let s = 0; for (let ch = 0; ch < 3; ++ch) s += at(im, i, ch); return s / 3; };
-  const shownValue = (im, i) => im.c === 1 ? at(im, i, 0).toFixed(4)
-    : "(" + [0, 1, 2].map((ch) => at(im, i, ch).toFixed(4)).join(", ") + ")";
 
   function open(scene) {
     S.pending = null; S.scene = scene;
@@ -142,7 +110,7 @@
   function step(dim, by) {  // filter and radius keep the sampler and spp: when they cannot, the status says why
     const c = cur(), keep = dim === "sampler" || dim === "spp" ? [] : ["sampler", "spp"];
     const pool = D().configs.filter((x) => keep.every((k) => String(x[k]) === String(c[k])));
-    const vals = [...new Set(pool.map((x) => x[dim]))].sort((a, b) => (typeof a === "number" ? a - b : a < b ? -1 : 1));
+    const vals = [...new Set(pool.map((x) => x[dim]))].sort(byValue);
     if (vals.length < 2) {
       S.note = `${c.sampler} at ${c.spp} spp is held with this ${dim} only (the viewer holds the methods the answer ` +
         `names: ${c.filter} r=${c.radius} is this sampler's); pick another ${dim} with the buttons to change the sampler too.`;
@@ -171,7 +139,7 @@
     const d = D(), box = $(".alv-controls");
     box.textContent = "";
     for (const dim of DIMS) {
-      const vals = [...new Set(d.configs.map((c) => c[dim]))].sort((a, b) => (typeof a === "number" ? a - b : a < b ? -1 : 1));
+      const vals = [...new Set(d.configs.map((c) => c[dim]))].sort(byValue);
       const row = buttonRow(dim, vals.map((v) => [v, String(v)]), (v) => choose(dim, v));
       row.dataset.dim = dim;
       box.appendChild(row);
@@ -203,19 +171,6 @@
     return [S.region === "crop" ? c.crop[String(seed)] : c.whole, seed];
   }
 
-  function diverging(t) {  // t in [-1, 1]: blue, white, red
-    t = Math.max(-1, Math.min(1, t));
-    const [r, g, b] = t < 0 ? [33, 102, 172] : [178, 24, 43], a = Math.abs(t);
-    return [255 + (r - 255) * a, 255 + (g - 255) * a, 255 + (b - 255) * a];
-  }
-
-  function magma(t) {  // t in [0, 1]: black, purple, orange, pale yellow (a magma-like ramp for FLIP)
-    const stops = [[0, 0, 4], [81, 18, 124], [183, 55, 121], [252, 137, 97], [252, 253, 191]];
-    t = Math.max(0, Math.min(1, t)) * (stops.length - 1);
-    const i = Math.min(stops.length - 2, Math.floor(t)), f = t - i;
-    return [0, 1, 2].map((k) => stops[i][k] + (stops[i + 1][k] - stops[i][k]) * f);
-  }
-
   async function panelData(c) {
     const d = D(), [id, seed] = imageId(c), t = d.targetImages[S.target][S.region];
     const r = c.ref && d.refs[c.ref] ? d.refs[c.ref][S.region] : null;
@@ -228,18 +183,11 @@
     if (S.mode === "flip" && !fc && !fw) return {missing: true, seed: seed, why: "no FLIP map stored for this one"};
     try {
       const img = await values(id);
-      const flip = !wantFlip ? null : fc ? await values(fc) : fw ? (S.region === "crop" ? cropOf(await values(fw)) : await values(fw)) : null;
+      const flip = !wantFlip ? null : fc ? await values(fc) : fw ? (S.region === "crop" ? K.cropOf(await values(fw), D().crop) : await values(fw)) : null;
       return {img: img, tgt: await values(t), ref: r ? await values(r) : null, flip: flip, seed: seed};
     } catch (err) {
       return {missing: true, seed: seed, why: String(err.message || err)};
     }
-  }
-
-  function cropOf(im) {  // the crop window of a whole image's values
-    const k = D().crop, v = new Float32Array(k.size * k.size * im.c);
-    for (let y = 0; y < k.size; ++y)
-      v.set(im.v.subarray(((k.y + y) * im.w + k.x) * im.c, ((k.y + y) * im.w + k.x + k.size) * im.c), y * k.size * im.c);
-    return {w: k.size, h: k.size, c: im.c, v: v, step: im.step};
   }
 
   async function draw() {
@@ -262,140 +210,17 @@
     panels.textContent = "";
     const n = S.region === "crop" ? d.crop.size : d.width;
     if (!S.zoom) { S.zoom = VIEW / n; S.ox = 0; S.oy = 0; }
-    all.forEach((p, i) => panels.appendChild(panel(cfgOf(shown[i]), p, scale, i === 0)));
+    all.forEach((p, i) => panels.appendChild(P.panel(cfgOf(shown[i]), p, scale, i === 0)));
     if (others.length) panels.firstChild.dataset.ab = S.ab ? "B" : "A";
     const abCap = panels.firstChild.querySelector("figcaption b");
     if (others.length && abCap) abCap.textContent = (S.ab ? "B: " : "A: ") + abCap.textContent + " (b flips A/B in place)";
-    colourBar(scale);
+    P.colourBar(scale);
     const crop = d.crop;
     $(".alv-status").textContent = (S.note ? S.note + " " : "") + (S.region === "crop" ? `crop ${crop.size} x ${crop.size} at (${crop.x}, ${crop.y}): ${crop.how}`
       : `whole image ${d.width} x ${d.height}, seed 0 (the whole images are loaded on demand, from ${d.wholeFile})`) +
       (d.default ? `. Opened on ${d.default.why}` : "") + `. Keys: \u2190 \u2192 sampler, \u2191 \u2193 spp, f filter, r radius, ` +
       "t target, 1-5 show, space next seed, a play, c crop/whole, p pin, x clear pins, b A/B flicker with the first pin, + - zoom, 0 reset; drag to pan, wheel to zoom.";
-    if (S.hover) readout(S.hover[0], S.hover[1]);
-  }
-
-  function panel(c, p, scale, main) {
-    const fig = el("figure", {class: "alv-panel" + (main ? " alv-main" : ""), "data-config": c.id});
-    const cv = el("canvas", {width: VIEW, height: VIEW});
-    if (p.missing) {
-      const ctx = cv.getContext("2d");
-      ctx.fillStyle = "#ddd"; ctx.fillRect(0, 0, VIEW, VIEW); ctx.fillStyle = "#333"; ctx.font = "14px sans-serif";
-      const words = p.why.split(" "), lines = [""];
-      for (const w of words) if ((lines[lines.length - 1] + " " + w).length > 44) lines.push(w); else lines[lines.length - 1] += " " + w;
-      lines.forEach((line, k) => ctx.fillText(line.trim(), 20, VIEW / 2 - 10 + 20 * k));
-      fig.appendChild(cv);
-      fig.appendChild(el("figcaption", {}, `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
-      return fig;
-    }
-    const off = el("canvas", {width: p.img.w, height: p.img.h}), octx = off.getContext("2d");
-    const out = octx.createImageData(p.img.w, p.img.h);
-    const g = (v) => 255 * Math.max(0, Math.min(1, v));
-    for (let i = 0; i < p.img.w * p.img.h; ++i) {
-      let rgb;
-      if (S.mode === "error") rgb = diverging((mean(p.img, i) - mean(p.tgt, i)) / scale);
-      else if (S.mode === "flip") rgb = magma(at(p.flip, i, 0));
-      else { const im = S.mode === "image" ? p.img : S.mode === "ref" ? p.ref : p.tgt; rgb = [0, 1, 2].map((ch) => g(at(im, i, ch))); }
-      out.data.set([rgb[0], rgb[1], rgb[2], 255], 4 * i);
-    }
-    octx.putImageData(out, 0, 0);
-    const ctx = cv.getContext("2d");
-    ctx.imageSmoothingEnabled = false;
-    ctx.fillStyle = "#777"; ctx.fillRect(0, 0, VIEW, VIEW);
-    ctx.setTransform(S.zoom, 0, 0, S.zoom, -S.ox * S.zoom, -S.oy * S.zoom);
-    ctx.drawImage(off, 0, 0);
-    cv._p = p; cv._off = off;
-    attachPointer(cv);
-    fig.appendChild(cv);
-    const row = c.rows[S.target] || {};
-    const cap = el("figcaption");
-    cap.appendChild(el("b", {}, c.sets.includes("exr") ? `${c.sampler} (your EXR)` : `${c.sampler}, ${c.spp} spp, ${c.filter} r=${c.radius}`));
-    const seedNote = S.mode === "flip" ? " (FLIP map: seed 0)" : p.seed !== S.seed ? ` (only seed ${p.seed} held)` : "";
-    cap.appendChild(el("span", {class: "alv-seed"}, ` seed ${S.mode === "flip" ? 0 : p.seed}` + seedNote));
-    const dl = el("div", {class: "alv-values"});
-    const item = (col, label, extra) => {
-      if (!(col in row)) return;
-      const s = el("span", {"data-col": col, "data-value": String(row[col])}, `${label} ${fmt(row[col])}`);
-      dl.appendChild(s);
-      if (extra) dl.appendChild(document.createTextNode(extra));
-    };
-    dl.appendChild(document.createTextNode(`against ${S.target}: `));
-    item("mse_target", "mse_target");
-    if (row.deterministic) dl.appendChild(el("span", {class: "alv-det"}, " (deterministic: one image, no standard error)"));
-    else item("mse_target_se", " \u00b1");
-    dl.appendChild(el("br"));
-    item("aliasing", "aliasing"); item("noise", " noise"); item("blur", " blur"); item("cross", " cross");
-    dl.appendChild(el("br")); item("flip", "FLIP"); item("cpu_ms", " cpu ms"); item("flagged", " flagged");
-    cap.appendChild(dl);
-    if (c.why && c.why.length) cap.appendChild(el("div", {class: "alv-why", title: c.why.join("; ")},
-      c.why[0] + (c.why.length > 1 ? ` (+${c.why.length - 1} more reasons: hover)` : "")));
-    cap.appendChild(el("div", {class: "alv-readout"}, "point at a pixel for its value"));
-    fig.appendChild(cap);
-    return fig;
-  }
-
-  function attachPointer(cv) {
-    let drag = null;
-    cv.addEventListener("mousemove", (ev) => {
-      const r = cv.getBoundingClientRect(), mx = (ev.clientX - r.left) * VIEW / r.width, my = (ev.clientY - r.top) * VIEW / r.height;
-      if (drag) { S.ox = drag[2] - (mx - drag[0]) / S.zoom; S.oy = drag[3] - (my - drag[1]) / S.zoom; redrawOnly(); return; }
-      const x = Math.floor(S.ox + mx / S.zoom), y = Math.floor(S.oy + my / S.zoom);
-      S.hover = [x, y]; readout(x, y);
-    });
-    cv.addEventListener("mousedown", (ev) => {
-      S.engaged = true;
-      const r = cv.getBoundingClientRect();
-      drag = [(ev.clientX - r.left) * VIEW / r.width, (ev.clientY - r.top) * VIEW / r.height, S.ox, S.oy];
-    });
-    window.addEventListener("mouseup", () => { drag = null; });
-    cv.addEventListener("wheel", (ev) => { ev.preventDefault(); zoom(ev.deltaY < 0 ? 1.25 : 0.8); }, {passive: false});
-  }
-
-  function redrawOnly() {
-    for (const cv of root.querySelectorAll(".alv-panel canvas")) {
-      if (!cv._off) continue;
-      const ctx = cv.getContext("2d");
-      ctx.setTransform(1, 0, 0, 1, 0, 0); ctx.fillStyle = "#777"; ctx.fillRect(0, 0, VIEW, VIEW);
-      ctx.setTransform(S.zoom, 0, 0, S.zoom, -S.ox * S.zoom, -S.oy * S.zoom);
-      ctx.imageSmoothingEnabled = false;
-      ctx.drawImage(cv._off, 0, 0);
-    }
-  }
-  function zoom(f) { S.zoom = Math.max(VIEW / 512, Math.min(64, S.zoom * f)); draw(); }
-
-  function readout(x, y) {
-    const d = D();
-    for (const fig of root.querySelectorAll(".alv-panel")) {
-      const p = fig.querySelector("canvas")._p, out = fig.querySelector(".alv-readout");
-      if (!out) continue;
-      if (!p || x < 0 || y < 0 || x >= p.img.w || y >= p.img.h) { out.textContent = "outside the image"; continue; }
-      const i = y * p.img.w + x, gx = S.region === "crop" ? x + d.crop.x : x, gy = S.region === "crop" ? y + d.crop.y : y;
-      const vals = [0, 1, 2].slice(0, p.img.c).map((ch) => at(p.img, i, ch));
-      out.textContent = "";
-      const attrs = {"data-x": gx, "data-y": gy, "data-value": vals.join(","), "data-step": String(p.img.step)};
-      if (p.flip) attrs["data-flip"] = String(at(p.flip, i, 0));
-      out.appendChild(el("span", attrs,
-        `pixel (${gx}, ${gy}): value ${shownValue(p.img, i)} (\u00b1${(p.img.step / 2).toPrecision(2)} stored), target ` +
-        `${shownValue(p.tgt, i)}, error ${(mean(p.img, i) - mean(p.tgt, i)).toFixed(4)}` + (p.img.c > 1 ? " (mean of R, G, B)" : "") +
-        (p.ref ? `, own reference ${shownValue(p.ref, i)}` : "") +
-        (p.flip ? `, FLIP (seed 0) ${at(p.flip, i, 0).toFixed(3)}` : "")));
-    }
-  }
-
-  function colourBar(scale) {
-    const cv = $(".alv-bar"), ctx = cv.getContext("2d"), w = cv.width;
-    for (let i = 0; i < w; ++i) {
-      const t = i / (w - 1);
-      const rgb = S.mode === "error" ? diverging(2 * t - 1) : S.mode === "flip" ? magma(t)
-        : [255 * t, 255 * t, 255 * t];
-      ctx.fillStyle = `rgb(${rgb.map(Math.round).join(",")})`; ctx.fillRect(i, 0, 1, cv.height);
-    }
-    $(".alv-bar-label").textContent = S.mode === "error"
-      ? `signed error I \u2212 T against ${S.target}: blue ${fmt(-scale)} (too dark), white 0, red +${fmt(scale)} (too bright); ` +
-        `scale: ${D().scaleHow} (${cur().spp} spp), larger errors saturate`
-      : S.mode === "flip" ? `FLIP against ${S.target}: black 0 (no visible difference) to pale yellow 1 (largest); ` +
-        (D().flipHow || "")
-      : "value: black 0, white 1 (values outside [0, 1] saturate; the readout gives them)";
+    if (S.hover) P.readout(S.hover[0], S.hover[1]);
   }
 
   document.addEventListener("mousedown", (ev) => { S.engaged = root.contains(ev.target); });
@@ -408,7 +233,7 @@
       t: () => { const ts = D().targets; S.target = ts[(ts.indexOf(S.target) + 1) % ts.length]; draw(); },
       " ": () => { S.seed = (S.seed + 1) % Math.max(...D().configs.map((c) => c.seeds.length)); draw(); },
       a: togglePlay, c: () => { S.region = S.region === "crop" ? "whole" : "crop"; S.zoom = 0; draw(); },
-      p: pinCurrent, x: () => { S.pins = []; draw(); }, b: () => { S.ab = !S.ab; draw(); }, "+": () => zoom(1.25), "=": () => zoom(1.25), "-": () => zoom(0.8),
+      p: pinCurrent, x: () => { S.pins = []; draw(); }, b: () => { S.ab = !S.ab; draw(); }, "+": () => P.zoom(1.25), "=": () => P.zoom(1.25), "-": () => P.zoom(0.8),
       "0": () => { S.zoom = 0; draw(); },
       "1": () => { S.mode = "image"; draw(); }, "2": () => { S.mode = "ref"; draw(); },
       "3": () => { S.mode = "target"; draw(); }, "4": () => { S.mode = "error"; draw(); },

@@ -9,12 +9,7 @@
   const V = window.ALIASLAB_VIEWER, root = document.getElementById("alv");
   if (!V || !root || !location.protocol.startsWith("http")) return;
   let info = null, n = 0;
-  const el = (tag, attrs, text) => {
-    const e = document.createElement(tag);
-    for (const k in attrs || {}) e.setAttribute(k, attrs[k]);
-    if (text !== undefined) e.textContent = text;
-    return e;
-  };
+  const el = window.ALIASLAB_VIEWER_KIT.el;
   const box = el("div", {class: "alv-row alv-serve"}), say = el("span", {class: "alv-serve-status"});
 
   function add(scene, res) {  // res: {config, images: {whole, crop, flip: {target: entry}}, rowColumns}
