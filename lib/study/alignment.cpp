@@ -75,7 +75,7 @@ ReferenceOptions alignmentReferenceOptions(const StudyConfig& config) {
 }
 
 std::vector<ReferenceSet> alignmentReferences(const StudyConfig& c, StudyScene& scene,
-                                              const std::vector<FilterSpec>& targets, const ReferenceOptions& options) {
+                                              const std::vector<StudyFilter>& targets, const ReferenceOptions& options) {
   FilmOffsetCamera camera(scene);
   std::vector<ReferenceSet> sets;
   for (int k = 0; k < c.alignOffsets; ++k) {

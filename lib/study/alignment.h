@@ -58,7 +58,7 @@ class FilmOffsetCamera {
 /// The references of `targets` at each of the config's alignOffsets offsets (element k = offset k), from the cache
 /// or rendered with `options` (their spp: config.alignRefSpp).
 std::vector<ReferenceSet> alignmentReferences(const StudyConfig& config, StudyScene& scene,
-                                              const std::vector<FilterSpec>& targets, const ReferenceOptions& options);
+                                              const std::vector<StudyFilter>& targets, const ReferenceOptions& options);
 
 /// The reference options of the offset references: the study's, at alignRefSpp samples per pixel.
 ReferenceOptions alignmentReferenceOptions(const StudyConfig& config);

@@ -18,7 +18,6 @@
 #include "core/progress.h"
 #include "core/stopwatch.h"
 #include "film/film.h"
-#include "filter/filter.h"
 #include "measure/metrics.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
@@ -88,16 +87,19 @@ std::string gitRevision() {
   return rev.size() == 40 ? rev : "unknown";
 }
 
-ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& o) {
+  std::vector<std::string> keys;
+  for (const StudyFilter& f : filters) keys.push_back(referenceKey(scene, f.filter->describe(), o));
+  return renderReferences(scene, filters, o, keys);
+}
+
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
+                              const ReferenceOptions& o, const std::vector<std::string>& keys) {
   validateReferenceOptions(o);
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::unique_ptr<Filter>> filters;
   std::vector<const Filter*> raw;
-  for (const auto& [name, r] : specs) {
-    filters.push_back(makeFilter(name, static_cast<float>(r)));
-    raw.push_back(filters.back().get());
-  }
+  for (const StudyFilter& f : filters) raw.push_back(f.filter.get());
 
   // Two independent halves: even batches into a, odd batches into b.
   Accumulator a(scene.width, scene.height, raw), b(scene.width, scene.height, raw);
@@ -128,17 +130,17 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterS
   set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
   set.traceSeconds = traced[0] + traced[1], set.splatSeconds = splatted[0] + splatted[1];
   set.accumulatorBytes = a.bytes() + b.bytes();
-  for (size_t i = 0; i < specs.size(); ++i) {
+  for (size_t i = 0; i < filters.size(); ++i) {
     Reconstruction ra = a.resolve(i), rb = b.resolve(i);
     ReferenceImage ref;
-    ref.filter = specs[i];
-    ref.describe = filters[i]->describe();
+    ref.filter = filters[i].spec;
+    ref.describe = filters[i].filter->describe();
     ref.image = averageImages(ra.image, rb.image);
     ref.halfDiff = halfDifference(ra.image, rb.image);
     ref.error = halvesError(ra.image, rb.image);
     ref.stats = ra.stats;
     ref.stats += rb.stats;
-    ref.key = referenceKey(scene, ref.describe, o);
+    ref.key = keys.at(i);
     if (ref.stats.nonFiniteSamples > 0)  // left out of the sums, so the pixels may look finite (often black)
       throw InputError(scene.path + ": the reference (" + ref.describe + ") met " +
                        std::to_string(ref.stats.nonFiniteSamples) + " NaN or infinite samples (lights or colours "

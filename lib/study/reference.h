@@ -39,11 +39,10 @@
 #include "core/files.h"  // writeTextFile
 #include "core/image.h"
 #include "film/film.h"
+#include "study/filter_cache.h"  // StudyFilter: the filters a reference pass splats
 #include "study/study_scene.h"
 
 namespace aliaslab {
-
-using FilterSpec = std::pair<std::string, double>;  ///< (filter name, radius in pixels)
 
 /// The one default reference sample count of every front end (sweep --ref-spp,
 /// reference --spp): 1024 samples per pixel, a reference error well below the
@@ -60,7 +59,7 @@ struct ReferenceOptions {
 };
 
 struct ReferenceImage {
-  FilterSpec filter;
+  FilterSpec filter;     ///< the (name, radius) of the StudyFilter it was made with: the manifest's key
   std::string describe;  ///< Filter::describe()
   Image image;           ///< G = (Ga + Gb) / 2
   Image halfDiff;        ///< D = (Ga - Gb) / 2: per value, D^2 estimates Var G without bias
@@ -95,13 +94,17 @@ double referenceMemoryBytes(int width, int height, size_t specs, const Reference
 /// The cache key of one reference.
 std::string referenceKey(const StudyScene& scene, const std::string& filterDescribe, const ReferenceOptions& options);
 
-/// Renders every filter in one streamed pass (no cache).
-ReferenceSet renderReferences(const StudyScene& scene, const std::vector<FilterSpec>& filters,
+/// Renders every filter in one streamed pass (no cache); `keys[i]` is filters[i]'s referenceKey (computed once by
+/// the caller).
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
+                              const ReferenceOptions& options, const std::vector<std::string>& keys);
+/// The same, with the keys computed here.
+ReferenceSet renderReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& options);
 
 /// Loads cached references from `cacheDir`, renders the missing ones in one
 /// pass and stores them. Throws FileError when the cache cannot be written.
-ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterSpec>& filters,
+ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& options, const std::string& cacheDir);
 
 /// JSON manifest of a reference set: scene, size, flags, spp, sampler, seed,

@@ -8,7 +8,6 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/parallel.h"
-#include "filter/filter.h"
 #include "study/reference.h"
 
 namespace aliaslab {
@@ -32,27 +31,29 @@ std::string jsonText(const std::string& text, const std::string& field) {
 }
 }  // namespace
 
-ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterSpec>& specs,
+ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& o, const std::string& cacheDir) {
   std::error_code ec;
   fs::create_directories(cacheDir, ec);
   ReferenceSet set;
   set.spp = o.spp, set.sampler = o.sampler, set.seed = o.seed;
-  set.images.resize(specs.size());
+  set.images.resize(filters.size());
+  std::vector<std::string> describe, keys;  // each filter's, computed once
+  for (const StudyFilter& f : filters) {
+    describe.push_back(f.filter->describe());
+    keys.push_back(referenceKey(scene, describe.back(), o));
+  }
 
   // A folder, FIFO or device where an entry's file should be is refused before anything reads or renders (a FIFO
   // would block the reader; a folder cannot be replaced).
-  for (const FilterSpec& spec : specs) {
-    const std::string key = referenceKey(scene, makeFilter(spec.first, static_cast<float>(spec.second))->describe(), o);
+  for (const std::string& key : keys)
     for (const char* ext : {".exr", ".diff.exr", ".json"})
       requireRegularFile((fs::path(cacheDir) / (key + ext)).string(),
                          "the reference cache keeps an entry there; remove it or give another cache folder");
-  }
   // Load what the cache holds: one task per entry (each reads two files and writes only its own slot).
-  std::vector<char> cached(specs.size(), 0);
-  parallelFor(int(specs.size()), o.threads, [&](int i) {
-    const std::string describe = makeFilter(specs[i].first, static_cast<float>(specs[i].second))->describe();
-    const std::string key = referenceKey(scene, describe, o);
+  std::vector<char> cached(filters.size(), 0);
+  parallelFor(int(filters.size()), o.threads, [&](int i) {
+    const std::string& key = keys[i];
     const fs::path exr = fs::path(cacheDir) / (key + ".exr"), json = fs::path(cacheDir) / (key + ".json");
     const fs::path diff = fs::path(cacheDir) / (key + ".diff.exr");
     if (!fs::exists(exr) || !fs::exists(json)) return;
@@ -78,20 +79,21 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<FilterS
       r.error = jsonField(manifest, "ref_error");
       if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height &&
           r.halfDiff.width() == scene.width && r.halfDiff.height() == scene.height) {
-        r.filter = specs[i], r.describe = describe, r.key = key, r.fromCache = true;
+        r.filter = filters[i].spec, r.describe = describe[i], r.key = key, r.fromCache = true;
         cached[i] = 1;
       }
     } catch (const InputError&) {
     }  // unreadable entry: render it again (its slot is overwritten below)
   });
-  std::vector<FilterSpec> missing;
+  std::vector<StudyFilter> missing;
+  std::vector<std::string> missingKeys;
   std::vector<size_t> missingIndex;
-  for (size_t i = 0; i < specs.size(); ++i)
-    if (!cached[i]) missing.push_back(specs[i]), missingIndex.push_back(i);
+  for (size_t i = 0; i < filters.size(); ++i)
+    if (!cached[i]) missing.push_back(filters[i]), missingKeys.push_back(keys[i]), missingIndex.push_back(i);
   if (missing.empty()) return set;
 
   // Render the missing ones together and store each with its manifest.
-  ReferenceSet fresh = renderReferences(scene, missing, o);
+  ReferenceSet fresh = renderReferences(scene, missing, o, missingKeys);
   set.seconds = fresh.seconds;
   set.accumulatorBytes = fresh.accumulatorBytes;
   set.traceSeconds = fresh.traceSeconds, set.splatSeconds = fresh.splatSeconds, set.resolveSeconds = fresh.resolveSeconds;

@@ -33,11 +33,11 @@ namespace {
 
 // The CSV a run appends to (null with refsOnly), checked to hold the same study; then the temporaries of killed
 // runs ("*.partial.<pid>.*" whose process is gone) are removed from the output and cache folders.
-std::unique_ptr<CsvAppender> openCsv(const StudyConfig& config, const std::string& csv) {
+std::unique_ptr<CsvAppender> openCsv(const StudyConfig& config, const StudyPlan& plan, const std::string& csv) {
   std::unique_ptr<CsvAppender> out;
   if (!config.refsOnly) {
     out = std::make_unique<CsvAppender>(csv, config.frames > 1);
-    checkSameStudy(csv, out->resumedLines(), config);
+    checkSameStudy(csv, out->resumedLines(), config, plan.targets);
   }
   for (const std::string& dir : {config.out, config.cache})
     if (const size_t n = removeStaleTemporaries(dir))
@@ -50,7 +50,7 @@ std::unique_ptr<CsvAppender> openCsv(const StudyConfig& config, const std::strin
 struct SweepRun {
   SweepRun(const StudyConfig& c, const StudyPlan& p, SweepSummary& s, size_t groups)
       : config(c), plan(p), sum(s), threads(resolveThreads(c.threads)), csv(csvPath(c)),
-        lock(c.refsOnly ? nullptr : std::make_unique<CsvLock>(csv, "sweep")), out(openCsv(c, csv)),
+        lock(c.refsOnly ? nullptr : std::make_unique<CsvLock>(csv, "sweep")), out(openCsv(c, p, csv)),
         progress(double(groups) * c.seeds, "sweep", c.progress && !c.refsOnly) {}
 
   const StudyConfig& config;
@@ -174,9 +174,8 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   const SceneSize size = run.plan.sceneSizes.at(path);  // read by validateStudy from the render line
   if (run.out) checkSameSceneSize(run.csv, run.out->resumedLines(), stem, size.width, size.height);
 
-  std::vector<FilterSpec> specs{kAreaSpec};  // the area, every target, then the rows' (filter, radius)
-  for (const Target& t : run.plan.targets)
-    if (std::find(specs.begin(), specs.end(), t.spec) == specs.end()) specs.push_back(t.spec);
+  std::vector<StudyFilter> specs{run.plan.area};  // the area, every target, then the rows' (filter, radius)
+  for (const Target& t : run.plan.targets) addFilterOnce(specs, t.filter);
   run.sum.phases.io += run.writer.wait();  // `out`'s keys are read by planRows and added to by the writer
   if (run.out) resumeSpectra(run, stem);
   auto pending = planRows(config, run.plan.targets, stem, size, groups, run.out.get(), specs, run.sum.rowsSkipped);
@@ -196,12 +195,11 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   // With frames: every later frame's target references too, and the targets' own shimmer (study/sweep_motion.h).
   MotionReferences motion;
   if (config.frames > 1) {
-    std::vector<FilterSpec> targetSpecs;
-    for (const Target& t : run.plan.targets)
-      if (std::find(targetSpecs.begin(), targetSpecs.end(), t.spec) == targetSpecs.end()) targetSpecs.push_back(t.spec);
-    const std::vector<ReferenceSet> later = frameReferences(config, *scene, targetSpecs, referenceOptions(config));
+    std::vector<StudyFilter> targetFilters;
+    for (const Target& t : run.plan.targets) addFilterOnce(targetFilters, t.filter);
+    const std::vector<ReferenceSet> later = frameReferences(config, *scene, targetFilters, referenceOptions(config));
     for (const ReferenceSet& r : later) countReferences(r);
-    motion = motionReferences(config, refs, specs, later, targetSpecs, run.plan.targets);
+    motion = motionReferences(config, refs, later, run.plan.targets);
   }
   run.sum.phases.references += clock.seconds();
   // The fixed grid's alignment: the targets' references at every camera offset (study/alignment.h).
@@ -211,13 +209,13 @@ void runScene(SweepRun& run, const std::vector<const SampleSetGroup*>& groups) {
   std::vector<ReferenceSet> align;
   if (grid && config.alignOffsets > 0) {
     const Stopwatch offsets;
-    std::vector<FilterSpec> targets;
-    for (const Target& t : run.plan.targets) targets.push_back(t.spec);
+    std::vector<StudyFilter> targets;
+    for (const Target& t : run.plan.targets) targets.push_back(t.filter);
     align = alignmentReferences(config, *scene, targets, alignmentReferenceOptions(config));
     run.sum.phases.alignmentReferences += offsets.seconds();
   }
   if (config.refsOnly) return;
-  const RowReferences rowRefs(refs, specs, run.plan.targets);
+  const RowReferences rowRefs(refs, run.plan.targets);
   for (size_t g = 0; g < groups.size(); ++g) runGroupRows(run, *scene, *groups[g], pending[g], rowRefs, motion, align);
 }
 

@@ -31,14 +31,15 @@ class FrameCamera {
   uint64_t hash_;
 };
 
-RefEstimate estimate(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const FilterSpec& spec) {
-  const ReferenceImage& r = set.images.at(size_t(std::find(specs.begin(), specs.end(), spec) - specs.begin()));
-  return {&r.image, &r.halfDiff, spec.second};
+RefEstimate estimate(const ReferenceSet& set, const FilterSpec& spec) {
+  const auto r = std::find_if(set.images.begin(), set.images.end(), [&](const ReferenceImage& i) { return i.filter == spec; });
+  if (r == set.images.end()) throw std::logic_error("motionReferences: no reference of a target");
+  return {&r->image, &r->halfDiff, spec.second};
 }
 
 }  // namespace
 
-std::vector<ReferenceSet> frameReferences(const StudyConfig& c, StudyScene& scene, const std::vector<FilterSpec>& specs,
+std::vector<ReferenceSet> frameReferences(const StudyConfig& c, StudyScene& scene, const std::vector<StudyFilter>& specs,
                                           const ReferenceOptions& options) {
   FrameCamera camera(scene, c);
   std::vector<ReferenceSet> sets;
@@ -50,12 +51,11 @@ std::vector<ReferenceSet> frameReferences(const StudyConfig& c, StudyScene& scen
 }
 
 MotionReferences motionReferences(const StudyConfig& c, const ReferenceSet& still,
-                                  const std::vector<FilterSpec>& stillSpecs, const std::vector<ReferenceSet>& later,
-                                  const std::vector<FilterSpec>& laterSpecs, const std::vector<Target>& targets) {
+                                  const std::vector<ReferenceSet>& later, const std::vector<Target>& targets) {
   MotionReferences m;
   for (const Target& target : targets) {
-    std::vector<RefEstimate> T{estimate(still, stillSpecs, target.spec)};
-    for (const ReferenceSet& r : later) T.push_back(estimate(r, laterSpecs, target.spec));
+    std::vector<RefEstimate> T{estimate(still, target.filter.spec)};
+    for (const ReferenceSet& r : later) T.push_back(estimate(r, target.filter.spec));
     m.targetShimmer.push_back(targetShimmer(T, c.motionDx, c.motionDy));
   }
   return m;

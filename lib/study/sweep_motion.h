@@ -28,7 +28,7 @@ namespace aliaslab {
 
 /// The references of `specs` for frames 1 .. F-1 (element t-1 is frame t), from the cache or rendered.
 std::vector<ReferenceSet> frameReferences(const StudyConfig& config, StudyScene& scene,
-                                          const std::vector<FilterSpec>& specs, const ReferenceOptions& options);
+                                          const std::vector<StudyFilter>& specs, const ReferenceOptions& options);
 
 /// Every target's references over the frames: targetShimmer[i] is target i's registered shimmer (measure/motion.h
 /// targetShimmer), computed once per scene.
@@ -36,11 +36,10 @@ struct MotionReferences {
   std::vector<double> targetShimmer;
 };
 
-/// The targets' shimmer from frame 0's references (`still`, holding every spec of `targets`) and the later frames'
-/// (`later`, from frameReferences with the targets' specs in order, `laterSpecs`).
+/// The targets' shimmer from frame 0's references (`still`, holding every target's) and the later frames' (`later`,
+/// from frameReferences with the targets' filters).
 MotionReferences motionReferences(const StudyConfig& config, const ReferenceSet& still,
-                                  const std::vector<FilterSpec>& stillSpecs, const std::vector<ReferenceSet>& later,
-                                  const std::vector<FilterSpec>& laterSpecs, const std::vector<Target>& targets);
+                                  const std::vector<ReferenceSet>& later, const std::vector<Target>& targets);
 
 /// The motion columns of each row of `group` (rows traced with `tracer`, which reads `scene`'s camera).
 void measureGroupMotion(const StudyConfig& config, StudyScene& scene, const Tracer& tracer,

@@ -51,7 +51,7 @@ CsvRow templateRow(const StudyConfig& c, const std::string& stem, SceneSize size
 std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const std::vector<Target>& targets,
                                               const std::string& stem, SceneSize size,
                                               const std::vector<const SampleSetGroup*>& groups, const CsvAppender* out,
-                                              std::vector<FilterSpec>& specs, size_t& skipped) {
+                                              std::vector<StudyFilter>& specs, size_t& skipped) {
   std::vector<std::vector<PendingRow>> pending(groups.size());
   for (size_t g = 0; g < groups.size(); ++g)
     for (const Configuration& cfg : groups[g]->configs) {
@@ -69,7 +69,7 @@ std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const s
         skipped += p.missing.back() ? 0 : 1;
       }
       if (!any) continue;
-      if (std::find(specs.begin(), specs.end(), cfg.filter.spec) == specs.end()) specs.push_back(cfg.filter.spec);
+      addFilterOnce(specs, cfg.filter);
       pending[g].push_back(std::move(p));
     }
   return pending;

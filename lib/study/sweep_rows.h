@@ -54,16 +54,13 @@ struct GroupSpent {
   Image density0;  ///< seed 0's samples per pixel (adaptive samplers, images on)
 };
 
-/// The (filter, radius) of the pixel-area reference (box, r = 0.5).
-inline const FilterSpec kAreaSpec{"box", 0.5};
-
 /// Resume: the configurations of `groups` (one scene, named `stem` and rendered at `size`) with a target row still
 /// missing from the CSV `out` (all of them when there is none), one list per group; adds the (filter, radius) of
 /// each to `specs` (the references to render) and counts the rows already present in `skipped`.
 std::vector<std::vector<PendingRow>> planRows(const StudyConfig& config, const std::vector<Target>& targets,
                                               const std::string& stem,
                                               SceneSize size, const std::vector<const SampleSetGroup*>& groups,
-                                              const CsvAppender* out, std::vector<FilterSpec>& specs, size_t& skipped);
+                                              const CsvAppender* out, std::vector<StudyFilter>& specs, size_t& skipped);
 
 /// "Configuration finished": its measures into its missing target rows (p.rows; `targets` the study's, whose
 /// measures come first in p.measure's result, `areaIndex` the pixel area's position there), its spectra into

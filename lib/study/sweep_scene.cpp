@@ -13,9 +13,9 @@ namespace aliaslab {
 namespace fs = std::filesystem;
 
 namespace {
-std::map<FilterSpec, const ReferenceImage*> byFilter(const ReferenceSet& set, const std::vector<FilterSpec>& specs) {
+std::map<FilterSpec, const ReferenceImage*> byFilter(const ReferenceSet& set) {
   std::map<FilterSpec, const ReferenceImage*> of;
-  for (size_t i = 0; i < specs.size(); ++i) of[specs[i]] = &set.images[i];
+  for (const ReferenceImage& r : set.images) of[r.filter] = &r;
   return of;
 }
 }  // namespace
@@ -33,7 +33,7 @@ void writeSceneManifest(const StudyConfig& config, const StudyScene& scene, cons
   writeTextFile(path.string(), referenceManifest(scene, refs, names));
 }
 
-ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
+ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<StudyFilter>& specs,
                              const ReferenceOptions& options, bool images) {
   ReferenceSet refs = cachedReferences(scene, specs, options, config.cache);
   if (config.refsOnly) return refs;
@@ -46,12 +46,10 @@ ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene,
   return refs;
 }
 
-RowReferences::RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs,
-                             const std::vector<Target>& targets)
-    : of_(byFilter(set, specs)) {
+RowReferences::RowReferences(const ReferenceSet& set, const std::vector<Target>& targets) : of_(byFilter(set)) {
   for (const Target& t : targets) {
-    if (t.spec == kAreaSpec) areaIndex_ = measured_.size();
-    measured_.push_back(of_.at(t.spec));
+    if (t.filter.spec == kAreaSpec) areaIndex_ = measured_.size();
+    measured_.push_back(of_.at(t.filter.spec));
     flip_.push_back(std::make_unique<FlipReference>(measured_.back()->image));
   }
   if (std::find(measured_.begin(), measured_.end(), &area()) == measured_.end()) {

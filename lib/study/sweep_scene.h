@@ -22,7 +22,7 @@
 namespace aliaslab {
 
 /// The references of `specs` (specs[0] the area): cache or one pass, their manifest and reference-area.png.
-ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<FilterSpec>& specs,
+ReferenceSet sceneReferences(const StudyConfig& config, const StudyScene& scene, const std::vector<StudyFilter>& specs,
                              const ReferenceOptions& options, bool images);
 
 /// Writes the manifest of `refs` (rendered for `scene` as it stands) to OUT/references/`name`.
@@ -31,8 +31,8 @@ void writeSceneManifest(const StudyConfig& config, const StudyScene& scene, cons
 
 class RowReferences {
  public:
-  /// `set` holds the references of `specs` (in that order, kAreaSpec and every target among them) and outlives this.
-  RowReferences(const ReferenceSet& set, const std::vector<FilterSpec>& specs, const std::vector<Target>& targets);
+  /// `set` holds the references of the area (kAreaSpec) and every target among others, and outlives this.
+  RowReferences(const ReferenceSet& set, const std::vector<Target>& targets);
   RowReferences(const RowReferences&) = delete;
   RowReferences& operator=(const RowReferences&) = delete;
 

@@ -172,11 +172,12 @@ void checkSceneMemory(const StudyConfig& c, const std::string& path, const Scene
 StudyPlan validateStudy(const StudyConfig& c) {
   StudyPlan plan;
   checkListsAndNumbers(c);
-  plan.targets = parseTargets(c.targets);
+  plan.targets = parseTargets(c.targets, plan.filters);
+  plan.area = plan.filters.get(kAreaSpec);
   checkListEntries(c);
   // The groups, every (filter, radius) built here once (the factory names the valid filters).
   rekeyOption("filter", "filters", [&] {
-    rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, &plan.notes); });
+    rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, plan.filters, &plan.notes); });
   });
 
   // Scenes: present and parseable, with a known size; never the CSV this run writes.
@@ -234,7 +235,8 @@ std::string sameStudyAdvice() {
 }
 }  // namespace
 
-void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c) {
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c,
+                    const std::vector<Target>& targets) {
   const std::pair<const char*, const char*> studyWide[] = {{"seeds", "seeds"}, {"ref_spp", "ref-spp"}};
   const std::string wanted[] = {std::to_string(c.seeds), std::to_string(c.refSpp)};
   for (size_t i = 0; i < lines.size(); ++i) {
@@ -265,7 +267,7 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
   // The targets are study-wide too: every configuration has one row per target, so another list would add a
   // second set of rows to the same configurations (and change which target is primary).
   std::vector<std::string> held, asked;
-  for (const Target& t : parseTargets(c.targets)) asked.push_back(t.label);
+  for (const Target& t : targets) asked.push_back(t.label);
   for (const std::string& l : lines) {
     const auto f = splitCsvLine(l);
     if (isStudyRow(f) && std::find(held.begin(), held.end(), field(f, "target")) == held.end())

@@ -184,7 +184,8 @@ TEST(ReferenceParallel, OneTwoThreeFiveAndMoreThreadsThanBatchesGiveTheSameRefer
   auto render = [&](int threads) {
     ReferenceOptions o;
     o.spp = 96, o.batchSpp = 16, o.threads = threads, o.progress = false;  // 6 batches: 3 pairs
-    return renderReferences(*scene, specs, o);
+    FilterCache filters;
+    return renderReferences(*scene, filters.get(specs), o);
   };
   const ReferenceSet base = render(1);
   for (int threads : {2, 3, 5, 64}) {

@@ -107,7 +107,8 @@ double mseAgainst(const Image& image, const ReferenceImage& t, double& raw) {
 TEST(SweepAlignment, ColumnsEqualTheGridRenderedAtEachOffset) {
   const StudyConfig c = study("aligned", 4, 2);
   const auto rows = sweep(c);
-  const std::vector<FilterSpec> targets{{"box", 0.5}, {"gaussian", 1.5}};
+  FilterCache filters;
+  const std::vector<StudyFilter> targets = filters.get({{"box", 0.5}, {"gaussian", 1.5}});
   ReferenceOptions o = referenceOptions(c);
   o.spp = c.alignRefSpp, o.progress = false;
   // Per offset k: the scene with its camera moved by the film offset (film position p then sees what p + o saw;
