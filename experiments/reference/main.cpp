@@ -1,6 +1,6 @@
 // reference: high-sample ground truth of one scene for every filter x every
 // radius plus the pixel-area reference (box r = 0.5), in one streamed pass
-// (lib/study/reference.h). Writes one EXR per filter and
+// (lib/study/reference/reference.h). Writes one EXR per filter and
 // manifest.json into --out; with --cache the references are also looked up
 // in / stored into the sweep's cache. Bad input (options, scene files)
 // exits 2 before any work, like the sweep; a failure during work exits 1.
@@ -19,7 +19,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "study/config.h"
-#include "study/reference.h"
+#include "study/reference/reference.h"
 #include "study/validate.h"
 #include "study/study_scene.h"
 

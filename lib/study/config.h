@@ -8,7 +8,7 @@
 // configurations inside them come in a fixed canonical order, so a shard
 // (shard i of N: groups g with g mod N == i) is deterministic and keeps the
 // reuse of traced samples. Checking a config before any work is
-// study/validate.h; merging the shards' CSVs is study/merge.h; the bundled
+// study/validate.h; merging the shards' CSVs is study/records/merge.h; the bundled
 // studies are study/presets.h.
 //
 // Errors are InputError: OptionError keyed by the StudyConfig field it is
@@ -31,7 +31,7 @@
 
 #include "film/film.h"
 #include "study/filter_cache.h"
-#include "study/reference.h"  // kDefaultReferenceSpp
+#include "study/reference/reference.h"  // kDefaultReferenceSpp
 #include "study/study_scene.h"
 
 namespace aliaslab {
@@ -68,11 +68,11 @@ struct StudyConfig {
   int refBatch = 16;        ///< reference samples per pixel per streamed batch
   bool refsOnly = false;    ///< render and cache the references, then stop (before sharded runs)
   bool progress = true;     ///< progress bar / lines on stderr
-  /// Motion (study/sweep_motion.h): F frames of a camera moving (dx, dy) pixels per frame; F = 1 is a still study
+  /// Motion (study/sweep/sweep_motion.h): F frames of a camera moving (dx, dy) pixels per frame; F = 1 is a still study
   /// (the CSV without motion columns), F > 1 adds the motion measures to every row.
   int frames = 1;
   double motionDx = 0.25, motionDy = 0;
-  /// The fixed grid's alignment (study/alignment.h; docs/science.md "The grid and alignment"): K seeded sub-pixel
+  /// The fixed grid's alignment (study/sweep/alignment.h; docs/science.md "The grid and alignment"): K seeded sub-pixel
   /// camera offsets, each with the targets' references rendered there, measured on every row of the sampler
   /// `uniform` (0: off, the alignment columns stay empty). alignRefSpp: the offset references' samples per pixel.
   int alignOffsets = 0;

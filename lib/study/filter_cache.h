@@ -3,7 +3,7 @@
 // A study names a filter by (factory name, radius): its FilterSpec, the key of the CSV's filter and radius columns
 // and of the reference manifests. The FilterCache owned by the study plan (study/validate.h StudyPlan) turns each
 // spec into one immutable Filter, shared by the rows that reconstruct with it, the targets and the pixel-area
-// reference; the references (study/reference.h) take those StudyFilters, so a radius is parsed once and the filter
+// reference; the references (study/reference/reference.h) take those StudyFilters, so a radius is parsed once and the filter
 // a reference splats is the very object whose describe() keys its cache entry.
 //
 // Errors: get() passes on the factory's OptionError ("filter", "radius"); callers re-key it to their list.

@@ -13,12 +13,12 @@
 #include "measure/registration.h"
 #include "render/sample_source.h"
 #include "sampling/sampler.h"
-#include "study/alignment.h"
-#include "study/csv.h"
-#include "study/lock.h"
-#include "study/spectrum_files.h"
+#include "study/sweep/alignment.h"
+#include "study/records/csv.h"
+#include "study/records/lock.h"
+#include "study/records/spectrum_files.h"
 #include "study/study_scene.h"
-#include "study/sweep_memory.h"
+#include "study/sweep/sweep_memory.h"
 
 namespace aliaslab {
 
@@ -74,7 +74,7 @@ void checkListsAndNumbers(const StudyConfig& c) {
   if (c.scenes.empty()) throw OptionError("scenes", "needs at least one scene file or folder");
   if (c.seeds < 2) throw OptionError("seeds", "needs K >= 2 (noise is a variance over seeds), found " +
                                                     std::to_string(c.seeds));
-  // The reference options: one check (study/reference.h), the same as the reference front end's.
+  // The reference options: one check (study/reference/reference.h), the same as the reference front end's.
   rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
   if (c.alignOffsets < 0 || c.alignOffsets > 4096)
     throw OptionError("align-offsets", "must be in 0..4096 (0: no alignment columns), found " +
@@ -139,7 +139,7 @@ void checkSceneMemory(const StudyConfig& c, const std::string& path, const Scene
   const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
   const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
   const double pixels = double(size.width) * size.height;
-  // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
+  // with frames (study/sweep/sweep_motion.h): each row's K x F images and every later frame's reference images
   const double image = double(imageBytes(size.width, size.height));
   // the fixed grid's alignment: the targets' references at every offset, held for the scene
   const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
@@ -181,7 +181,7 @@ StudyPlan validateStudy(const StudyConfig& c) {
   });
 
   // Scenes: present and parseable, with a known size; never the CSV this run writes.
-  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep_memory.h sweepMemoryBound),
+  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep/sweep_memory.h sweepMemoryBound),
   // plus the scene's reference images and the reference pass's sums: the largest group decides.
   size_t rowsPerGroup = 0, weightedRows = 0;
   for (const SampleSetGroup& g : plan.groups) {

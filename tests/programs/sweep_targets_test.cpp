@@ -19,7 +19,7 @@
 
 #include "core/error.h"
 #include "study/config.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "study/presets.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"

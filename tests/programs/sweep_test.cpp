@@ -23,14 +23,14 @@
 #include "support/scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "study/reference.h"
+#include "study/reference/reference.h"
 #include "study/config.h"
-#include "study/merge.h"
+#include "study/records/merge.h"
 #include "study/validate.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "filter/filter.h"
 #include "measure/metrics.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
