@@ -91,7 +91,7 @@ void setStudyRadii(StudyConfig& config, const std::vector<std::string>& tokens) 
 
 std::vector<std::string> studyRadiusTokens(const StudyConfig& config) {
   std::vector<std::string> out;
-  for (double r : config.radii) out.push_back(formatNumber(r, "%.9g"));
+  for (double r : config.radii) out.push_back(formatReal(r));
   if (config.naturalRadii) out.push_back("natural");
   return out;
 }

@@ -113,10 +113,10 @@ void checkListEntries(const StudyConfig& c) {
   // Radii are the CSV's key in its text (%.9g): two radii written alike would be one row for two configurations.
   for (size_t i = 0; i < c.radii.size(); ++i)
     for (size_t j = i + 1; j < c.radii.size(); ++j)
-      if (formatNumber(c.radii[i], "%.9g") == formatNumber(c.radii[j], "%.9g"))
+      if (formatReal(c.radii[i]) == formatReal(c.radii[j]))
         throw OptionError("radii", "lists " + formatNumber(c.radii[i], "%.17g") + " and " +
                                        formatNumber(c.radii[j], "%.17g") + ", which the CSV writes alike (" +
-                                       formatNumber(c.radii[i], "%.9g") + ")");
+                                       formatReal(c.radii[i]) + ")");
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
@@ -258,8 +258,8 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
                                              (offsets.empty() ? std::string("none") : offsets) + sameStudyAdvice());
     // Frames and motion are study-wide too (the CsvAppender refuses a still CSV for a study with frames).
     const size_t m = csvColumns().size();
-    if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatNumber(c.motionDx, "%.9g") ||
-                         f[m + 2] != formatNumber(c.motionDy, "%.9g")))
+    if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatReal(c.motionDx) ||
+                         f[m + 2] != formatReal(c.motionDy)))
       throw OptionError(f[m] != std::to_string(c.frames) ? "frames" : "motion",
                         csv + " holds a study made with " + f[m] + " frames and motion " + f[m + 1] + "," +
                             f[m + 2] + " (data row " + std::to_string(i + 1) + ")" + sameStudyAdvice());

@@ -24,12 +24,10 @@ namespace {
 enum Col { kScene = 0, kWidth, kHeight, kSampler, kSpp, kFilter, kRadius, kParams, kRecon, kSeeds,
            kRefSpp = 15, kTarget = 24 };
 
-std::string real(double v) { return formatNumber(v, "%.9g"); }
-
 // Per-seed values in one field: %.9g joined by ';' (no comma, so never quoted).
 std::string joinReals(const std::vector<double>& values) {
   std::string out;
-  for (double v : values) out += (out.empty() ? "" : ";") + real(v);
+  for (double v : values) out += (out.empty() ? "" : ";") + formatReal(v);
   return out;
 }
 
@@ -58,30 +56,36 @@ double num(const std::string& s) {
 
 std::string formatCsvRow(const CsvRow& r) {
   std::ostringstream s;
+  const auto real = [&s](double v) -> std::ostream& { return s << ',' << formatReal(v); };  // ",<v>"
   s << quoted(r.scene) << ',' << r.width << ',' << r.height << ',' << quoted(r.sampler) << ',' << r.spp << ','
-    << quoted(r.filter) << ',' << real(r.radius) << ',' << quoted(r.filterParams) << ',' << quoted(r.reconstruction)
-    << ',' << r.seeds << ',' << real(r.mse) << ',' << real(r.aliasing) << ',' << real(r.noise) << ','
-    << real(r.mseArea) << ',' << real(r.psnr) << ',' << r.refSpp << ',' << real(r.refError) << ',' << r.flagged
-    << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels << ',' << real(r.traceMs) << ','
-    << real(r.reconstructMs) << ',' << r.threads << ',' << quoted(r.target) << ',' << real(r.mseTarget) << ','
-    << real(r.blur) << ',' << real(r.cross) << ',' << real(r.mseSe) << ',' << real(r.noiseSe) << ','
-    << real(r.aliasingSe) << ',' << real(r.mseTargetSe) << ',' << real(r.lowfreqError) << ','
-    << real(r.lowfreqErrorSe) << ',' << real(r.blurredMse) << ',' << real(r.meanSpp) << ',' << r.maxSpp << ','
-    << quoted(r.prefilter) << ',' << real(r.flip) << ',' << real(r.targetRefError) << ',' << real(r.blurSe) << ','
-    << r.deterministic << ',' << joinReals(r.mseTargetSeeds) << ',' << real(r.blurredMseOwn) << ','
-    << real(r.lowfreqErrorOwn) << ',' << real(r.lowfreqErrorOwnSe) << ',' << real(r.cpuMs)
-    << ',' << real(r.cpuMsSe);
-  for (size_t k = 0; k < r.blurRatio.size(); ++k) s << ',' << real(r.blurRatio[k]) << ',' << real(r.blurRatioSe[k]);
-  s << ',' << r.nonFiniteSamples << ',' << real(r.naturalRadius);
-  if (const auto& a = r.align)
-    s << ',' << a->offsets << ',' << real(a->mseTarget) << ',' << real(a->mseTargetSd) << ',' << real(a->mseTargetSe)
-      << ',' << joinReals(a->perOffset);
-  else
+    << quoted(r.filter);
+  real(r.radius) << ',' << quoted(r.filterParams) << ',' << quoted(r.reconstruction) << ',' << r.seeds;
+  real(r.mse), real(r.aliasing), real(r.noise), real(r.mseArea), real(r.psnr);
+  s << ',' << r.refSpp;
+  real(r.refError) << ',' << r.flagged << ',' << r.nanPixels << ',' << r.negativePixels << ',' << r.undefinedPixels;
+  real(r.traceMs), real(r.reconstructMs);
+  s << ',' << r.threads << ',' << quoted(r.target);
+  real(r.mseTarget), real(r.blur), real(r.cross), real(r.mseSe), real(r.noiseSe), real(r.aliasingSe);
+  real(r.mseTargetSe), real(r.lowfreqError), real(r.lowfreqErrorSe), real(r.blurredMse), real(r.meanSpp);
+  s << ',' << r.maxSpp << ',' << quoted(r.prefilter);
+  real(r.flip), real(r.targetRefError), real(r.blurSe);
+  s << ',' << r.deterministic << ',' << joinReals(r.mseTargetSeeds);
+  real(r.blurredMseOwn), real(r.lowfreqErrorOwn), real(r.lowfreqErrorOwnSe), real(r.cpuMs), real(r.cpuMsSe);
+  for (size_t k = 0; k < r.blurRatio.size(); ++k) real(r.blurRatio[k]), real(r.blurRatioSe[k]);
+  s << ',' << r.nonFiniteSamples;
+  real(r.naturalRadius);
+  if (const auto& a = r.align) {
+    s << ',' << a->offsets;
+    real(a->mseTarget), real(a->mseTargetSd), real(a->mseTargetSe);
+    s << ',' << joinReals(a->perOffset);
+  } else {
     s << ",,,,,";
-  if (const auto& m = r.motion)
-    s << ',' << m->frames << ',' << real(m->dx) << ',' << real(m->dy) << ',' << real(m->shimmer) << ','
-      << real(m->shimmerSe) << ',' << real(m->flickerSame) << ',' << real(m->flickerSameSe) << ','
-      << real(m->flickerNew) << ',' << real(m->flickerNewSe) << ',' << real(m->targetShimmer);
+  }
+  if (const auto& m = r.motion) {
+    s << ',' << m->frames;
+    real(m->dx), real(m->dy), real(m->shimmer), real(m->shimmerSe), real(m->flickerSame), real(m->flickerSameSe);
+    real(m->flickerNew), real(m->flickerNewSe), real(m->targetShimmer);
+  }
   return s.str();
 }
 

@@ -25,8 +25,6 @@ const std::string& spectrumCsvHeader() {
 }
 
 namespace {
-std::string real(double v) { return formatNumber(v, "%.9g"); }
-
 /// Complete lines of a spectrum CSV (header checked; a torn last line dropped).
 std::vector<std::string> readSpectrumLines(const std::string& path, bool& any) {
   requireRegularFile(path, "a spectrum CSV is a regular file");
@@ -76,8 +74,8 @@ void appendSpectrumCsv(const std::string& path,
          {std::pair<const char*, const RadialSpectrum*>{"error", &m.error}, {"noise", &m.noise}})
       for (int b = 0; b < kSpectrumBins; ++b)
         if (s->count[b] > 0)
-          out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + real(RadialSpectrum::frequency(b)) + ',' +
-                 real(s->power(b)) + ',' + real(s->energy[b]) + '\n';
+          out += keyFields + ',' + kind + ',' + std::to_string(b) + ',' + formatReal(RadialSpectrum::frequency(b)) +
+                 ',' + formatReal(s->power(b)) + ',' + formatReal(s->energy[b]) + '\n';
   }
   const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
   if (fd < 0) throw FileError(path, "cannot open for appending: " + lastSystemError());

@@ -128,7 +128,7 @@ void writeRows(const StudyConfig& config, const std::vector<std::vector<CsvRow>>
     const CsvRow& r = rows[i].front();
     byFile[spectrumCsvPath(csvPath(config), r.scene)].emplace_back(
         r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
-            formatNumber(r.radius, "%.9g") + ',' + r.reconstruction + ',' + r.prefilter,
+            formatReal(r.radius) + ',' + r.reconstruction + ',' + r.prefilter,
         &spectra[i]);
     all.insert(all.end(), rows[i].begin(), rows[i].end());
   }
