@@ -32,7 +32,7 @@ void printManifest(const fs::path& json, const std::string& key) {
   std::stringstream s;
   s << in.rdbuf();
   std::printf("manifest: %s\n", json.string().c_str());
-  for (const auto& [k, v] : manifestSummary(s.str(), key)) std::printf("  %s: %s\n", k.c_str(), v.c_str());
+  for (const auto& [k, v] : manifestSummary(s.str(), key, json.string())) std::printf("  %s: %s\n", k.c_str(), v.c_str());
 }
 
 }  // namespace

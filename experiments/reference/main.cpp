@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "study/config.h"
+#include "study/reference/manifest.h"
 #include "study/reference/reference.h"
 #include "study/validate.h"
 #include "study/study_scene.h"

@@ -33,18 +33,6 @@ std::string hex16(uint64_t v) {
   return buf;
 }
 
-std::string jsonString(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') out += '\\', out += c;
-    else if (static_cast<unsigned char>(c) < 0x20) out += ' ';
-    else out += c;
-  }
-  return out + "\"";
-}
-
-std::string jsonNumber(double v) { return formatNumber(v, "%.9g"); }
-
 // The batch size actually used: at most half the total, so there are two halves.
 int effectiveBatch(const ReferenceOptions& o) { return std::min(o.batchSpp, o.spp / 2); }
 
@@ -168,33 +156,5 @@ std::string manifestScenePath(const std::string& path) {
 }
 
 std::string imageContentHash(const std::string& path) { return hex16(hashBytes(readFileBytes(path), 0x1a6e)); }
-
-std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
-                              const std::vector<std::string>& imageNames,
-                              const std::vector<std::string>& imageHashes,
-                              const std::vector<std::string>& diffHashes) {
-  std::ostringstream j;
-  j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(manifestScenePath(scene.path))
-    << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
-    << ",\n  \"tracing\": " << jsonString(describeTraceOptions(scene.line.options));
-  if (scene.filmOffset[0] != 0 || scene.filmOffset[1] != 0)  // a shifted camera (study/sweep/alignment.h)
-    j << ",\n  \"film_offset\": [" << jsonNumber(scene.filmOffset[0]) << ", " << jsonNumber(scene.filmOffset[1]) << "]";
-  j << ",\n  \"spp\": " << set.spp
-    << ",\n  \"sampler\": " << jsonString(set.sampler) << ",\n  \"seed\": " << set.seed
-    << ",\n  \"git_revision\": " << jsonString(gitRevision()) << ",\n  \"seconds\": " << jsonNumber(set.seconds)
-    << ",\n  \"filters\": [";
-  for (size_t i = 0; i < set.images.size(); ++i) {
-    const ReferenceImage& r = set.images[i];
-    j << (i ? "," : "") << "\n    {\"filter\": " << jsonString(r.filter.first) << ", \"radius\": "
-      << jsonNumber(r.filter.second) << ", \"describe\": " << jsonString(r.describe)
-      << ", \"ref_error\": " << jsonNumber(r.error) << ", \"undefined_pixels\": " << r.stats.undefinedPixels
-      << ", \"key\": " << jsonString(r.key) << ", \"image\": " << jsonString(i < imageNames.size() ? imageNames[i] : "");
-    if (i < imageHashes.size()) j << ", \"image_hash\": " << jsonString(imageHashes[i]);
-    if (i < diffHashes.size()) j << ", \"diff_hash\": " << jsonString(diffHashes[i]);
-    j << "}";
-  }
-  j << "\n  ]\n}\n";
-  return j.str();
-}
 
 }  // namespace aliaslab

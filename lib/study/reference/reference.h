@@ -23,13 +23,16 @@
 // not reused; 2 since the batched splat, which moved Gaussian and
 // Blackman-Harris weights by float ulps; 3 since entries keep D). Each
 // reference is stored as <cache>/<key>.exr (G) and <key>.diff.exr (D) beside
-// <key>.json (its manifest); study/reference/reference_cache.cpp. cachedReferences()
+// <key>.json (its manifest, study/reference/manifest.h); study/reference/reference_cache.cpp. cachedReferences()
 // loads what is there and renders the missing ones together in one pass;
 // files are written to a temporary name and renamed, so concurrent shards
 // can share a cache. Each manifest records the content hashes of both EXRs
 // ("image_hash", "diff_hash"); an entry whose files do not match them
-// (replaced, damaged, or made before the hash) is not trusted: a note says
+// (replaced, damaged, unreadable, or made before the hash) is not trusted: a note says
 // so on stderr and the reference is rendered again.
+//
+// The filters come as the study's objects (StudyFilter, study/filter_cache.h): a reference splats the very Filter
+// it is given, and its describe() keys the cache entry; the (name, radius) is only the manifest's key.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -106,14 +109,6 @@ ReferenceSet renderReferences(const StudyScene& scene, const std::vector<StudyFi
 /// pass and stores them. Throws FileError when the cache cannot be written.
 ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& options, const std::string& cacheDir);
-
-/// JSON manifest of a reference set: scene, size, flags, spp, sampler, seed,
-/// git revision, seconds, and per filter describe(), ref_error, key, image file.
-/// `imageNames[i]` is the image file of filter i as a path from the manifest's folder ("" for none).
-std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
-                              const std::vector<std::string>& imageNames,
-                              const std::vector<std::string>& imageHashes = {},
-                              const std::vector<std::string>& diffHashes = {});
 
 /// The content hash stored in a cache manifest ("image_hash"): 16 hex digits of hashBytes over the file's bytes.
 std::string imageContentHash(const std::string& path);

@@ -7,29 +7,14 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/format.h"
 #include "core/parallel.h"
+#include "study/reference/manifest.h"
 #include "study/reference/reference.h"
 
 namespace aliaslab {
 
 namespace fs = std::filesystem;
-
-namespace {
-// The number in `"field": <number>` of a small JSON text, or -1.
-double jsonField(const std::string& text, const std::string& field) {
-  const size_t at = text.find("\"" + field + "\":");
-  if (at == std::string::npos) return -1;
-  try { return std::stod(text.substr(at + field.size() + 3)); } catch (const std::exception&) { return -1; }
-}
-// The text in `"field": "<text>"` of a small JSON text, or "".
-std::string jsonText(const std::string& text, const std::string& field) {
-  const std::string open = "\"" + field + "\": \"";
-  const size_t at = text.find(open);
-  if (at == std::string::npos) return {};
-  const size_t end = text.find('"', at + open.size());
-  return end == std::string::npos ? std::string() : text.substr(at + open.size(), end - at - open.size());
-}
-}  // namespace
 
 ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFilter>& filters,
                               const ReferenceOptions& o, const std::string& cacheDir) {
@@ -59,15 +44,17 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFi
     if (!fs::exists(exr) || !fs::exists(json)) return;
     try {
       ReferenceImage& r = set.images[i];
-      const std::string manifest = readFileBytes(json.string());
-      const std::string stored = jsonText(manifest, "image_hash"), actual = imageContentHash(exr.string());
+      const Manifest manifest = readManifest(readFileBytes(json.string()), json.string());
+      if (manifest.filters.size() != 1) throw FileError(json.string(), "a cache manifest holds one filter entry");
+      const ManifestFields& entry = manifest.filters[0];
+      const std::string stored = manifestValue(entry, "image_hash"), actual = imageContentHash(exr.string());
       if (stored != actual) {
         std::fprintf(stderr, "note: cached reference %s does not match its manifest %s (%s); rendering it again\n",
                      exr.string().c_str(), json.string().c_str(),
                      stored.empty() ? "no content hash" : "content hash differs");
         return;
       }
-      const std::string storedDiff = jsonText(manifest, "diff_hash");
+      const std::string storedDiff = manifestValue(entry, "diff_hash");
       if (!fs::exists(diff) || storedDiff != imageContentHash(diff.string())) {
         std::fprintf(stderr, "note: cached reference %s has no matching half-difference image %s (%s); rendering it again\n",
                      exr.string().c_str(), diff.string().c_str(),
@@ -76,14 +63,16 @@ ReferenceSet cachedReferences(const StudyScene& scene, const std::vector<StudyFi
       }
       r.image = readImage(exr.string());
       r.halfDiff = readImage(diff.string());
-      r.error = jsonField(manifest, "ref_error");
+      r.error = parseFiniteNumber(manifestValue(entry, "ref_error"));
       if (r.error >= 0 && r.image.width() == scene.width && r.image.height() == scene.height &&
           r.halfDiff.width() == scene.width && r.halfDiff.height() == scene.height) {
         r.filter = filters[i].spec, r.describe = describe[i], r.key = key, r.fromCache = true;
         cached[i] = 1;
       }
-    } catch (const InputError&) {
-    }  // unreadable entry: render it again (its slot is overwritten below)
+    } catch (const InputError& e) {  // an unreadable entry: rendered again (its slot is overwritten below)
+      std::fprintf(stderr, "note: cached reference %s is unreadable (%s); rendering it again\n", exr.string().c_str(),
+                   e.what());
+    }
   });
   std::vector<StudyFilter> missing;
   std::vector<std::string> missingKeys;

@@ -7,6 +7,7 @@
 
 #include "core/files.h"
 #include "core/image.h"
+#include "study/reference/manifest.h"
 
 namespace aliaslab {
 
