@@ -1,7 +1,7 @@
 // inspect: what an image file holds. Prints its size, channel names and
 // per channel min / max / mean over the finite values and the NaN and
 // infinity counts; for a cached reference (<cache>/<key>.exr beside
-// <key>.json, lib/study/reference.h) also the manifest's summary: scene,
+// <key>.json, lib/study/reference/reference.h) also the manifest's summary: scene,
 // size, spp, sampler, seed, filter, radius, reference error, git revision.
 #include <OpenImageIO/imageio.h>
 
@@ -17,7 +17,7 @@
 
 #include "common/cli.h"
 #include "common/front_end.h"
-#include "study/manifest_summary.h"
+#include "study/reference/manifest_summary.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
@@ -32,7 +32,7 @@ void printManifest(const fs::path& json, const std::string& key) {
   std::stringstream s;
   s << in.rdbuf();
   std::printf("manifest: %s\n", json.string().c_str());
-  for (const auto& [k, v] : manifestSummary(s.str(), key)) std::printf("  %s: %s\n", k.c_str(), v.c_str());
+  for (const auto& [k, v] : manifestSummary(s.str(), key, json.string())) std::printf("  %s: %s\n", k.c_str(), v.c_str());
 }
 
 }  // namespace

@@ -1,6 +1,6 @@
 // reference: high-sample ground truth of one scene for every filter x every
 // radius plus the pixel-area reference (box r = 0.5), in one streamed pass
-// (lib/study/reference.h). Writes one EXR per filter and
+// (lib/study/reference/reference.h). Writes one EXR per filter and
 // manifest.json into --out; with --cache the references are also looked up
 // in / stored into the sweep's cache. Bad input (options, scene files)
 // exits 2 before any work, like the sweep; a failure during work exits 1.
@@ -18,9 +18,9 @@
 #include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
-#include "filter/filter.h"
 #include "study/config.h"
-#include "study/reference.h"
+#include "study/reference/manifest.h"
+#include "study/reference/reference.h"
 #include "study/validate.h"
 #include "study/study_scene.h"
 
@@ -69,19 +69,18 @@ int main(int argc, char** argv) {
     if (!size.empty() && (size[0] <= 0 || size[1] <= 0))
       throw OptionError("--size", "expected two positive numbers W H, found " + std::to_string(size[0]) + " " +
                                       std::to_string(size[1]) + " (leave --size out for the scene's own size)");
-    std::vector<FilterSpec> specs{{"box", 0.5}};
+    FilterCache made;  // each (filter, radius) built once; the factory names the valid filters
+    std::vector<StudyFilter> specs{made.get(kAreaSpec)};
     for (const std::string& f : filters)
-      for (double r : radii) {
-        makeFilter(f, static_cast<float>(r));
-        if (std::find(specs.begin(), specs.end(), FilterSpec{f, r}) == specs.end()) specs.push_back({f, r});
-      }
+      for (double r : radii) addFilterOnce(specs, made.get({f, r}));
     const auto scene = loadStudyScene(scenePath, size.empty() ? 0 : size[0], size.empty() ? 0 : size[1]);
     requireMemory(referenceMemoryBytes(scene->width, scene->height, specs.size(), o), "--size",
                   scene->stem + " at " + std::to_string(scene->width) + " x " + std::to_string(scene->height) + " with " +
                       std::to_string(specs.size()) + " references");
     // No output may be an input: the images and manifest must not replace the scene file.
     std::vector<OutputFile> outputs{{"--out", (fs::path(out) / "manifest.json").string()}};
-    for (const FilterSpec& s : specs) {
+    for (const StudyFilter& f : specs) {
+      const FilterSpec& s = f.spec;
       char radius[32];
       std::snprintf(radius, sizeof radius, "%g", s.second);
       outputs.push_back({"--out", (fs::path(out) / (scene->stem + "-" + s.first + "-r" + radius + ".exr")).string()});

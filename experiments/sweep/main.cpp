@@ -1,5 +1,5 @@
 // sweep: scenes x samplers x spp x prefilter x filters x radii x reconstruction modes,
-// K seeds each, one CSV row per configuration and target (lib/study/sweep.h).
+// K seeds each, one CSV row per configuration and target (lib/study/sweep/sweep.h).
 //
 //   sweep --scenes scenes/zoneplate.txt --samplers uniform,jittered --spp 16
 //         --filters box,tent --radii 0.5,1,1.5 --seeds 8 --out results/mystudy   (one command)
@@ -24,17 +24,17 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "study/config.h"
-#include "study/contract.h"
-#include "study/merge.h"
-#include "study/motion_frame.h"
+#include "study/records/contract.h"
+#include "study/records/merge.h"
+#include "study/sweep/motion_frame.h"
 #include "study/presets.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 #include "options.h"
 
 using namespace aliaslab;
 
 namespace {
-// The samplers' bounds on the finished CSV (study/contract.h): a summary line, and every violation as a warning.
+// The samplers' bounds on the finished CSV (study/records/contract.h): a summary line, and every violation as a warning.
 void printContract(const std::vector<ContractCheck>& checks, std::FILE* summary = stdout) {
   if (checks.empty()) return;
   std::fprintf(summary, "%s\n", contractSummary(checks).c_str());

@@ -25,6 +25,10 @@ inline std::string formatNumber(double v, const char* format = "%g") {
   return buf;
 }
 
+/// A real as the library's records write it (study and spectrum CSVs, reference manifests, convergence tables):
+/// %.9g, 9 significant digits, so that a float, and every radius or motion a CSV is keyed by, reads back as written.
+inline std::string formatReal(double v) { return formatNumber(v, "%.9g"); }
+
 /// The whole of `text` read as a finite number (std::stod, nothing left over), else NaN.
 inline double parseFiniteNumber(const std::string& text) {
   try {

@@ -6,7 +6,7 @@
 
 namespace aliaslab {
 
-/// The revision built (at build time, unlike study/reference.h gitRevision at run time),
+/// The revision built (at build time, unlike study/reference/reference.h gitRevision at run time),
 /// e.g. "b40d151a2c3e" or "b40d151a2c3e-dirty"; "unknown" outside a git checkout.
 std::string buildRevision();
 /// CMAKE_BUILD_TYPE, e.g. "Release".

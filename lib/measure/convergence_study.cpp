@@ -61,7 +61,7 @@ std::string convergenceCsv(const std::vector<ConvergenceRow>& rows, int realisat
   std::ostringstream csv;
   csv << "sampler,integrand,n,rmse,realisations\n";
   for (const ConvergenceRow& r : rows)
-    csv << r.sampler << ',' << r.integrand << ',' << r.n << ',' << fmt(r.rmse, "%.9g") << ',' << realisations << '\n';
+    csv << r.sampler << ',' << r.integrand << ',' << r.n << ',' << formatReal(r.rmse) << ',' << realisations << '\n';
   return csv.str();
 }
 

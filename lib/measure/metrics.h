@@ -33,7 +33,7 @@
 
 namespace aliaslab {
 
-/// A reference estimate made of two independent halves a and b (study/reference.h): mean = (a + b) / 2,
+/// A reference estimate made of two independent halves a and b (study/reference/reference.h): mean = (a + b) / 2,
 /// halfDiff = (a - b) / 2. Per value, halfDiff^2 is an unbiased estimate of Var(mean); for two references
 /// made from the same samples (same batches in the same halves), the product of their halfDiffs is an
 /// unbiased estimate of their covariance. halfDiff == nullptr: an exact reference (variance 0).

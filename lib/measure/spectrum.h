@@ -69,7 +69,7 @@
 // plane up to rounding, tolerance in docs/spectrum.md (SpectrumDefinition, measure/spectrum_definition.h, is
 // the full-plane definition the tests hold it to).
 //
-// The study writes these spectra to per-scene CSV files: study/spectrum_files.h.
+// The study writes these spectra to per-scene CSV files: study/records/spectrum_files.h.
 #pragma once
 #include <array>
 #include <complex>

@@ -69,7 +69,7 @@ class Sampler {
   /// The variance bound the pattern's construction guarantees (docs/science.md, "What the samplers
   /// guarantee"): c such that for every square-integrable f on the pixel, Var(mean of f over the spp points)
   /// <= c sigma^2 / spp with sigma^2 = Var f(U), U uniform on the pixel (c = 1: never worse than independent
-  /// points). 0: no such theorem is claimed at this count. Every study checks it (study/contract.h).
+  /// points). 0: no such theorem is claimed at this count. Every study checks it (study/records/contract.h).
   virtual double varianceBound() const { return 0; }
   /// True when point i of a pixel is the same for every count that includes it (given seed and pixel), and
   /// every prefix is a well-spread set: the first n points of the pattern at spp are the pattern at n. The

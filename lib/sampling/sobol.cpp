@@ -19,7 +19,7 @@
 // | bound      | at spp = 2^m a scrambled (0,m,2)-net: Var <= 2 sigma^2/spp |
 // |            | for nested uniform scrambling (Owen 1997); varianceBound 2 |
 // |            | there, none at other counts. The hash approximates the     |
-// |            | scramble: every study checks the bound (study/contract.h)  |
+// |            | scramble: every study checks the bound (study/records/contract.h)  |
 // | progressive| yes: point i does not depend on spp                        |
 // | use it     | the default low-discrepancy choice: RMSE ~ N^-3/4 on edges |
 // |            | at powers of two; fast (target >= 50 M points/s/core).     |

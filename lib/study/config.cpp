@@ -91,31 +91,15 @@ void setStudyRadii(StudyConfig& config, const std::vector<std::string>& tokens) 
 
 std::vector<std::string> studyRadiusTokens(const StudyConfig& config) {
   std::vector<std::string> out;
-  for (double r : config.radii) out.push_back(formatNumber(r, "%.9g"));
+  for (double r : config.radii) out.push_back(formatReal(r));
   if (config.naturalRadii) out.push_back("natural");
   return out;
 }
 
-namespace {
-// Each (filter, radius) made once (makeFilter) and shared by every configuration that uses it.
-class FilterCache {
- public:
-  StudyFilter get(const FilterSpec& spec) {
-    auto& f = built_[spec];
-    if (!f) f = makeFilter(spec.first, static_cast<float>(spec.second));
-    return {spec, f};
-  }
-
- private:
-  std::map<FilterSpec, std::shared_ptr<const Filter>> built_;
-};
-}  // namespace
-
-std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes) {
+std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, FilterCache& cache,
+                                        std::vector<std::string>* notes) {
   std::vector<SampleSetGroup> groups;
-  FilterCache cache;
-  std::vector<StudyFilter> filters;
-  for (const FilterSpec& spec : studyFilters(config)) filters.push_back(cache.get(spec));
+  const std::vector<StudyFilter> filters = cache.get(studyFilters(config));
   std::set<std::string> noted;
   auto note = [&](const std::string& text) {
     if (notes && noted.insert(text).second) notes->push_back(text);
@@ -131,7 +115,7 @@ std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<s
           const ReconMode mode = parseReconMode(modeName);
           if (mode == ReconMode::Supersample) {
             const int k = static_cast<int>(std::lround(std::sqrt(spp)));
-            if (sampler == "uniform" && k * k == spp) g.configs.push_back({cache.get({"box", 0.5}), mode});
+            if (sampler == "uniform" && k * k == spp) g.configs.push_back({cache.get(kAreaSpec), mode});
             else note("supersample: only the uniform sampler at square spp; skipped " + sampler + " spp " +
                       std::to_string(spp));
             continue;
@@ -160,8 +144,8 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
   return out;
 }
 
-Target parseTarget(const std::string& text) {
-  if (text == "area") return {{"box", 0.5}, "box:" + formatNumber(0.5)};
+Target parseTarget(const std::string& text, FilterCache& filters) {
+  if (text == "area") return {filters.get(kAreaSpec), "box:" + formatNumber(0.5)};
   const size_t colon = text.find(':');
   const std::string usage = "expected 'area' or filter:radius (e.g. gaussian:1.5, lanczos:2), found '" + text + "'";
   if (colon == std::string::npos || colon == 0) throw OptionError("target", usage);
@@ -175,19 +159,22 @@ Target parseTarget(const std::string& text) {
     throw OptionError("target", usage);
   }
   if (!(std::isfinite(r) && r > 0)) throw OptionError("target", "the radius must be finite and > 0, found '" + text + "'");
-  rekeyOption("filter", "target", [&] { rekeyOption("radius", "target", [&] { makeFilter(name, static_cast<float>(r)); }); });
-  return {{name, r}, name + ":" + formatNumber(r)};
+  StudyFilter filter;
+  rekeyOption("filter", "target", [&] { rekeyOption("radius", "target", [&] { filter = filters.get({name, r}); }); });
+  return {filter, name + ":" + formatNumber(r)};
 }
 
-std::vector<Target> parseTargets(const std::vector<std::string>& texts) {
+std::vector<Target> parseTargets(const std::vector<std::string>& texts, FilterCache& filters) {
   if (texts.empty()) throw OptionError("target", "needs at least one target (e.g. area)");
   std::vector<Target> out;
   for (const std::string& t : texts) {
-    Target parsed = parseTarget(t);
-    for (const Target& seen : out)
-      if (seen.spec == parsed.spec || seen.label == parsed.label)  // the label is the CSV's key: one row each
+    Target parsed = parseTarget(t, filters);
+    for (const Target& seen : out) {
+      const bool same = seen.filter.spec == parsed.filter.spec;
+      if (same || seen.label == parsed.label)  // the label is the CSV's key: one row each
         throw OptionError("target", "lists the target " + parsed.label + " twice ('" + t + "' and '" + seen.label +
-                                        "'" + (seen.spec == parsed.spec ? ")" : ": the CSV labels both alike)"));
+                                        "'" + (same ? ")" : ": the CSV labels both alike)"));
+    }
     out.push_back(std::move(parsed));
   }
   return out;

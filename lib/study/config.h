@@ -8,16 +8,16 @@
 // configurations inside them come in a fixed canonical order, so a shard
 // (shard i of N: groups g with g mod N == i) is deterministic and keeps the
 // reuse of traced samples. Checking a config before any work is
-// study/validate.h; merging the shards' CSVs is study/merge.h; the bundled
+// study/validate.h; merging the shards' CSVs is study/records/merge.h; the bundled
 // studies are study/presets.h.
 //
 // Errors are InputError: OptionError keyed by the StudyConfig field it is
 // about ("samplers", "radii", "ref-spp": the field's name, dashes for
 // camelCase), FileError naming the file. Front ends map keys to their flags.
 //
-// Built once, passed down: every distinct (filter, radius) of a study is made
-// (makeFilter) once by expandStudy and shared by its configurations
-// (StudyFilter); the targets are parsed once (Target, parseTargets) with their CSV labels.
+// Built once, passed down: every distinct (filter, radius) of a study is made once by the study's FilterCache
+// (study/filter_cache.h, owned by the StudyPlan) and shared by its configurations, its targets (parsed once with
+// their CSV labels: Target, parseTargets) and its references.
 //
 // Several targets: a study measures every configuration against each target T of `targets` (each only another
 // reference from the same samples, rendered in the one reference pass); the CSV has one row per (configuration,
@@ -30,7 +30,8 @@
 #include <vector>
 
 #include "film/film.h"
-#include "study/reference.h"  // kDefaultReferenceSpp
+#include "study/filter_cache.h"
+#include "study/reference/reference.h"  // kDefaultReferenceSpp
 #include "study/study_scene.h"
 
 namespace aliaslab {
@@ -67,23 +68,16 @@ struct StudyConfig {
   int refBatch = 16;        ///< reference samples per pixel per streamed batch
   bool refsOnly = false;    ///< render and cache the references, then stop (before sharded runs)
   bool progress = true;     ///< progress bar / lines on stderr
-  /// Motion (study/sweep_motion.h): F frames of a camera moving (dx, dy) pixels per frame; F = 1 is a still study
+  /// Motion (study/sweep/sweep_motion.h): F frames of a camera moving (dx, dy) pixels per frame; F = 1 is a still study
   /// (the CSV without motion columns), F > 1 adds the motion measures to every row.
   int frames = 1;
   double motionDx = 0.25, motionDy = 0;
-  /// The fixed grid's alignment (study/alignment.h; docs/science.md "The grid and alignment"): K seeded sub-pixel
+  /// The fixed grid's alignment (study/sweep/alignment.h; docs/science.md "The grid and alignment"): K seeded sub-pixel
   /// camera offsets, each with the targets' references rendered there, measured on every row of the sampler
   /// `uniform` (0: off, the alignment columns stay empty). alignRefSpp: the offset references' samples per pixel.
   int alignOffsets = 0;
   int alignRefSpp = 1024;
   bool motionGiven = false;  ///< the motion was asked for (refused without frames: a still study has none)
-};
-
-/// A (filter, radius) of the study with its filter built once: `spec` is what the CSV's filter and radius columns
-/// and the reference cache are keyed by; `filter` is makeFilter(spec), shared (a Filter is immutable).
-struct StudyFilter {
-  FilterSpec spec;                       ///< (factory name, support radius in pixels)
-  std::shared_ptr<const Filter> filter;  ///< built once per study
 };
 
 /// One row of the CSV before it is measured.
@@ -92,10 +86,10 @@ struct Configuration {
   ReconMode mode = ReconMode::WeightedAverage;
 };
 
-/// A target T of a study, parsed once: its (filter, radius) and the CSV's `target` column.
+/// A target T of a study, parsed once: its filter (from the study's FilterCache) and the CSV's `target` column.
 struct Target {
-  FilterSpec spec;    ///< "area" is the pixel-area reference (box, r = 0.5)
-  std::string label;  ///< "filter:radius" with the radius in %g ("box:0.5" for "area")
+  StudyFilter filter;  ///< "area" is the pixel-area reference (box, r = 0.5)
+  std::string label;   ///< "filter:radius" with the radius in %g ("box:0.5" for "area")
 };
 
 /// The K sample sets of one (scene, sampler, spp, prefilter) and the rows made from them.
@@ -116,8 +110,9 @@ std::vector<std::string> expandScenePaths(const std::vector<std::string>& scenes
 /// Every group in canonical order (unsharded). Supersample rows exist only
 /// for the uniform sampler at square spp (one row, box r = 0.5); notes about
 /// skipped combinations are appended to `notes`. Each distinct (filter, radius)
-/// is built once and shared by the configurations that use it.
-std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, std::vector<std::string>* notes = nullptr);
+/// comes from `filters` (built once) and is shared by the configurations that use it.
+std::vector<SampleSetGroup> expandStudy(const StudyConfig& config, FilterCache& filters,
+                                        std::vector<std::string>* notes = nullptr);
 
 /// The groups of this shard.
 std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& groups, int index, int count);
@@ -127,7 +122,7 @@ std::vector<SampleSetGroup> shardGroups(const std::vector<SampleSetGroup>& group
 /// OptionError(key) naming the valid values.
 bool parsePrefilter(const std::string& name, const std::string& key = "prefilter");
 
-/// Every distinct (filter, radius) of the study, in canonical order (names only; expandStudy builds them): per
+/// Every distinct (filter, radius) of the study, in canonical order (names only; the FilterCache builds them): per
 /// filter the radii in order, box's classic 0.5 first (classicBox), its natural radius last (naturalRadii), each once.
 std::vector<FilterSpec> studyFilters(const StudyConfig& config);
 
@@ -140,13 +135,13 @@ void setStudyRadii(StudyConfig& config, const std::vector<std::string>& tokens);
 std::vector<std::string> studyRadiusTokens(const StudyConfig& config);
 
 /// The target T of a study: "area" is the pixel-area reference (box, r = 0.5);
-/// otherwise "filter:radius", e.g. "gaussian:1.5". Throws OptionError("target")
-/// naming the valid forms.
-Target parseTarget(const std::string& text);
+/// otherwise "filter:radius", e.g. "gaussian:1.5"; its filter comes from `filters`. Throws OptionError("target")
+/// naming the valid forms (the factory's refusals re-keyed "target").
+Target parseTarget(const std::string& text, FilterCache& filters);
 
 /// The targets of a study, in order (the first is the primary). Throws OptionError("target") for an empty list,
 /// an unusable entry (parseTarget) or one given twice ("area" and "box:0.5" are the same target).
-std::vector<Target> parseTargets(const std::vector<std::string>& texts);
+std::vector<Target> parseTargets(const std::vector<std::string>& texts, FilterCache& filters);
 
 /// Parses "i/N" (0 <= i < N). Throws OptionError("shard").
 void parseShard(const std::string& text, int& index, int& count);

@@ -14,7 +14,7 @@
 //              experiments/run_presented_study.sh).
 // Both: spp 4, 16, 64, 8 seeds, references at 4096 spp (64 x the highest spp),
 // the fixed grid over 8 camera offsets with references at 256 spp
-// (study/alignment.h), and three targets:
+// (study/sweep/alignment.h), and three targets:
 // area, gaussian:1.5 (sigma 0.5) and lanczos:3. The quick study is the
 // presented one at 48 px with fewer samplers and filters, so the two can be
 // reconciled row by row.

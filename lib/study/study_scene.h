@@ -50,7 +50,7 @@ class StudyScene {
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Tracer> tracer;
   uint64_t contentHash = 0;  ///< scene + OBJ bytes, size, tracing flags (+ the film offset when not zero)
-  /// The camera's film offset in pixels while a study shifts it (study/alignment.h FilmOffsetCamera; the reference
+  /// The camera's film offset in pixels while a study shifts it (study/sweep/alignment.h FilmOffsetCamera; the reference
   /// manifests record it); 0 0: the camera as the scene file has it.
   double filmOffset[2] = {0, 0};
 };

@@ -13,12 +13,12 @@
 #include "measure/registration.h"
 #include "render/sample_source.h"
 #include "sampling/sampler.h"
-#include "study/alignment.h"
-#include "study/csv.h"
-#include "study/lock.h"
-#include "study/spectrum_files.h"
+#include "study/sweep/alignment.h"
+#include "study/records/csv.h"
+#include "study/records/lock.h"
+#include "study/records/spectrum_files.h"
 #include "study/study_scene.h"
-#include "study/sweep_memory.h"
+#include "study/sweep/sweep_memory.h"
 
 namespace aliaslab {
 
@@ -74,7 +74,7 @@ void checkListsAndNumbers(const StudyConfig& c) {
   if (c.scenes.empty()) throw OptionError("scenes", "needs at least one scene file or folder");
   if (c.seeds < 2) throw OptionError("seeds", "needs K >= 2 (noise is a variance over seeds), found " +
                                                     std::to_string(c.seeds));
-  // The reference options: one check (study/reference.h), the same as the reference front end's.
+  // The reference options: one check (study/reference/reference.h), the same as the reference front end's.
   rekeyOption("sampler", "ref-sampler", [&] { validateReferenceOptions(referenceOptions(c)); });
   if (c.alignOffsets < 0 || c.alignOffsets > 4096)
     throw OptionError("align-offsets", "must be in 0..4096 (0: no alignment columns), found " +
@@ -113,10 +113,10 @@ void checkListEntries(const StudyConfig& c) {
   // Radii are the CSV's key in its text (%.9g): two radii written alike would be one row for two configurations.
   for (size_t i = 0; i < c.radii.size(); ++i)
     for (size_t j = i + 1; j < c.radii.size(); ++j)
-      if (formatNumber(c.radii[i], "%.9g") == formatNumber(c.radii[j], "%.9g"))
+      if (formatReal(c.radii[i]) == formatReal(c.radii[j]))
         throw OptionError("radii", "lists " + formatNumber(c.radii[i], "%.17g") + " and " +
                                        formatNumber(c.radii[j], "%.17g") + ", which the CSV writes alike (" +
-                                       formatNumber(c.radii[i], "%.9g") + ")");
+                                       formatReal(c.radii[i]) + ")");
   for (int spp : c.spp)
     if (spp < 1) throw OptionError("spp", "sample counts must be >= 1, found " + std::to_string(spp));
   for (double r : c.radii)
@@ -139,7 +139,7 @@ void checkSceneMemory(const StudyConfig& c, const std::string& path, const Scene
   const size_t referenceCount = studyFilters(c).size() + c.targets.size() + 1;
   const int maxSpp = *std::max_element(c.spp.begin(), c.spp.end());
   const double pixels = double(size.width) * size.height;
-  // with frames (study/sweep_motion.h): each row's K x F images and every later frame's reference images
+  // with frames (study/sweep/sweep_motion.h): each row's K x F images and every later frame's reference images
   const double image = double(imageBytes(size.width, size.height));
   // the fixed grid's alignment: the targets' references at every offset, held for the scene
   const double offsets = double(c.alignOffsets) * pixels * double(c.targets.size()) * 6 * sizeof(float);
@@ -172,15 +172,16 @@ void checkSceneMemory(const StudyConfig& c, const std::string& path, const Scene
 StudyPlan validateStudy(const StudyConfig& c) {
   StudyPlan plan;
   checkListsAndNumbers(c);
-  plan.targets = parseTargets(c.targets);
+  plan.targets = parseTargets(c.targets, plan.filters);
+  plan.area = plan.filters.get(kAreaSpec);
   checkListEntries(c);
   // The groups, every (filter, radius) built here once (the factory names the valid filters).
   rekeyOption("filter", "filters", [&] {
-    rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, &plan.notes); });
+    rekeyOption("radius", "radii", [&] { plan.groups = expandStudy(c, plan.filters, &plan.notes); });
   });
 
   // Scenes: present and parseable, with a known size; never the CSV this run writes.
-  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep_memory.h sweepMemoryBound),
+  // Memory is per group (the sweep holds one group's seeds in flight, study/sweep/sweep_memory.h sweepMemoryBound),
   // plus the scene's reference images and the reference pass's sums: the largest group decides.
   size_t rowsPerGroup = 0, weightedRows = 0;
   for (const SampleSetGroup& g : plan.groups) {
@@ -234,7 +235,8 @@ std::string sameStudyAdvice() {
 }
 }  // namespace
 
-void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c) {
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& c,
+                    const std::vector<Target>& targets) {
   const std::pair<const char*, const char*> studyWide[] = {{"seeds", "seeds"}, {"ref_spp", "ref-spp"}};
   const std::string wanted[] = {std::to_string(c.seeds), std::to_string(c.refSpp)};
   for (size_t i = 0; i < lines.size(); ++i) {
@@ -256,8 +258,8 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
                                              (offsets.empty() ? std::string("none") : offsets) + sameStudyAdvice());
     // Frames and motion are study-wide too (the CsvAppender refuses a still CSV for a study with frames).
     const size_t m = csvColumns().size();
-    if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatNumber(c.motionDx, "%.9g") ||
-                         f[m + 2] != formatNumber(c.motionDy, "%.9g")))
+    if (f.size() > m && (f[m] != std::to_string(c.frames) || f[m + 1] != formatReal(c.motionDx) ||
+                         f[m + 2] != formatReal(c.motionDy)))
       throw OptionError(f[m] != std::to_string(c.frames) ? "frames" : "motion",
                         csv + " holds a study made with " + f[m] + " frames and motion " + f[m + 1] + "," +
                             f[m + 2] + " (data row " + std::to_string(i + 1) + ")" + sameStudyAdvice());
@@ -265,7 +267,7 @@ void checkSameStudy(const std::string& csv, const std::vector<std::string>& line
   // The targets are study-wide too: every configuration has one row per target, so another list would add a
   // second set of rows to the same configurations (and change which target is primary).
   std::vector<std::string> held, asked;
-  for (const Target& t : parseTargets(c.targets)) asked.push_back(t.label);
+  for (const Target& t : targets) asked.push_back(t.label);
   for (const std::string& l : lines) {
     const auto f = splitCsvLine(l);
     if (isStudyRow(f) && std::find(held.begin(), held.end(), field(f, "target")) == held.end())

@@ -27,7 +27,9 @@ namespace aliaslab {
 
 /// A validated study: what validateStudy checked, ready to run.
 struct StudyPlan {
+  FilterCache filters;          ///< every filter of the study, built once: the rows', the targets' and the area's
   std::vector<Target> targets;  ///< parsed once, in order (the first is the primary)
+  StudyFilter area;             ///< the pixel-area reference's filter (kAreaSpec)
   std::vector<SampleSetGroup> groups;  ///< every group in canonical order (unsharded), filters built
   std::vector<std::string> notes;      ///< skipped combinations
   std::map<std::string, SceneSize> sceneSizes;  ///< per scene file: its size in this study (render line, overrides)
@@ -43,9 +45,11 @@ StudyPlan validateStudy(const StudyConfig& config);
 /// created before it are removed again (nothing is left behind) and OptionError(key) is thrown.
 void requireOutputFolders(const std::vector<std::pair<std::string, std::string>>& folders);
 
-/// A CSV holds one study: throws OptionError keyed "seeds", "ref-spp", "frames" or "motion" when a row of the
-/// existing CSV `lines` was made with another value than `config` asks for (a rerun would add a second copy).
-void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& config);
+/// A CSV holds one study: throws OptionError keyed "seeds", "ref-spp", "frames", "motion" or "target" when a row of
+/// the existing CSV `lines` was made with another value than `config` and its parsed `targets` ask for (a rerun
+/// would add a second copy).
+void checkSameStudy(const std::string& csv, const std::vector<std::string>& lines, const StudyConfig& config,
+                    const std::vector<Target>& targets);
 /// The same for the image size of one scene (OptionError "size").
 void checkSameSceneSize(const std::string& csv, const std::vector<std::string>& lines, const std::string& stem,
                         int width, int height);

@@ -10,7 +10,7 @@
 // recorded from the camera's calls while the method traced them (its rounds one after another, each tile by
 // tile), so the cost of that order is told from the cost of the bookkeeping. For same-run ratios run with
 // --benchmark_repetitions=N --benchmark_enable_random_interleaving=true (the machine is shared). The process keeps
-// freed medium blocks in its heap (keepMediumBlocks(), core/huge_pages.h) as the sweep does (study/sweep.cpp):
+// freed medium blocks in its heap (keepMediumBlocks(), core/huge_pages.h) as the sweep does (study/sweep/sweep.cpp):
 // otherwise glibc returns the rounds' buffers (0.1 to 2 MB) to the kernel after every trace and the next one
 // faults them in again, a cost (5 to 10 % of an adaptive trace in perf) that the study does not pay.
 #include "aliaslab_paths.h"

@@ -22,7 +22,7 @@
 
 #include "core/parallel.h"
 #include "study/config.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 
 namespace aliaslab {
 namespace {

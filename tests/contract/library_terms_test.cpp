@@ -105,14 +105,14 @@ const Allowed kNotFlags[] = {
     {"study/study_scene.cpp", "render line: missing -size W H", "a scene file's render line"},
     {"study/study_scene.cpp", "no '# render: -size W H' line and no {size} given", "a scene file's render line"},
     // File names of the contact images: <sampler>-spp<N>-<filter>-r<radius>-<mode>[-prefilter-<p>]-error.png.
-    {"study/contact.cpp", "-spp", "part of an image file name"},
-    {"study/contact.cpp", "-prefilter-", "part of an image file name"},
-    {"study/contact.cpp", "-error.png", "part of an image file name"},
-    {"study/contact.cpp", "-noise.png", "part of an image file name"},
-    {"study/contact.cpp", "-density.png", "part of an image file name"},
+    {"study/sweep/contact.cpp", "-spp", "part of an image file name"},
+    {"study/sweep/contact.cpp", "-prefilter-", "part of an image file name"},
+    {"study/sweep/contact.cpp", "-error.png", "part of an image file name"},
+    {"study/sweep/contact.cpp", "-noise.png", "part of an image file name"},
+    {"study/sweep/contact.cpp", "-density.png", "part of an image file name"},
     // The shard CSVs' file names: study.shard-<i>-of-<N>.csv.
     {"study/config.cpp", "-of-", "part of a shard CSV's file name"},
-    {"study/merge.cpp", "-of-", "part of a shard CSV's file name"},
+    {"study/records/merge.cpp", "-of-", "part of a shard CSV's file name"},
 };
 
 

@@ -1,4 +1,4 @@
-// The theory contract (study/contract.h; docs/science.md "What the samplers guarantee") and the negative
+// The theory contract (study/records/contract.h; docs/science.md "What the samplers guarantee") and the negative
 // control (scenes/controls/negative_spp*.txt): on a small real study every sampler bound holds within 3 standard
 // errors; a deliberately broken sampler (the test's own: jittered whose strata share one jitter, i.e. a grid
 // shifted by one random offset per pixel) violates its bound and the study reports it, as the sweep's warning
@@ -23,10 +23,10 @@
 #include "measure/metrics.h"
 #include "render/render.h"
 #include "study/config.h"
-#include "study/contract.h"
-#include "study/csv.h"
+#include "study/records/contract.h"
+#include "study/records/csv.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 #include "support/scratch_dir.h"
 
 namespace aliaslab {

@@ -15,7 +15,7 @@
 #include <sstream>
 #include <string>
 
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "support/run_process.h"
 #include "support/scratch_dir.h"
 

@@ -25,9 +25,9 @@
 #include "core/files.h"
 #include "core/image.h"
 #include "support/scratch_dir.h"
-#include "study/csv.h"
-#include "study/lock.h"
-#include "study/reference.h"
+#include "study/records/csv.h"
+#include "study/records/lock.h"
+#include "study/reference/reference.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;

@@ -14,7 +14,7 @@
 #include <thread>
 
 #include "support/run_process.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 
 namespace fs = std::filesystem;
 using namespace aliaslab;

@@ -19,7 +19,7 @@
 #include <fstream>
 #include <thread>
 
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "support/run_process.h"
 #include "support/scratch_dir.h"
 

@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "core/gzip.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "support/run_process.h"
 #include "support/scratch_dir.h"
 

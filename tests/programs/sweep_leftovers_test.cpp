@@ -12,7 +12,7 @@
 #include <fstream>
 #include <string>
 
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "support/run_process.h"
 #include "support/scratch_dir.h"
 

@@ -1,4 +1,4 @@
-// The sweep's scheduler (lib/study/sweep.cpp): sample sets (seeds) and the
+// The sweep's scheduler (lib/study/sweep/sweep.cpp): sample sets (seeds) and the
 // (seed, row) reconstructions run as tasks, each writing its own slot, folded
 // in seed order. So the CSV (timing and threads columns aside), the spectra
 // and every image are identical for 1, 2, 3, 5 threads and for more threads
@@ -19,10 +19,10 @@
 #include "core/stopwatch.h"
 #include "study/config.h"
 #include "study/validate.h"
-#include "study/csv.h"
-#include "study/reference.h"
+#include "study/records/csv.h"
+#include "study/reference/reference.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
@@ -184,7 +184,8 @@ TEST(ReferenceParallel, OneTwoThreeFiveAndMoreThreadsThanBatchesGiveTheSameRefer
   auto render = [&](int threads) {
     ReferenceOptions o;
     o.spp = 96, o.batchSpp = 16, o.threads = threads, o.progress = false;  // 6 batches: 3 pairs
-    return renderReferences(*scene, specs, o);
+    FilterCache filters;
+    return renderReferences(*scene, filters.get(specs), o);
   };
   const ReferenceSet base = render(1);
   for (int threads : {2, 3, 5, 64}) {

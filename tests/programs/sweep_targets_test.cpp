@@ -19,7 +19,7 @@
 
 #include "core/error.h"
 #include "study/config.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "study/presets.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
@@ -203,13 +203,15 @@ TEST(SweepTargets, AConfigurationIsDoneOnlyWhenAllItsTargetRowsArePresent) {
 
 // (the sweep refusing such lists on its command line: sweep_test.cpp AnUnusableTargetIsRefusedNamingTheOption)
 TEST(SweepTargets, TargetListsAreParsedOnceAndDuplicatesRefused) {
-  const auto t = parseTargets({"area", "gaussian:1.5", "lanczos:3"});
+  FilterCache filters;
+  const auto t = parseTargets({"area", "gaussian:1.5", "lanczos:3"}, filters);
   ASSERT_EQ(t.size(), 3u);
   EXPECT_EQ(t[0].label, "box:0.5");
-  EXPECT_EQ(t[2].spec, (FilterSpec{"lanczos", 3.0}));
-  EXPECT_THROW(parseTargets({}), OptionError);
-  EXPECT_THROW(parseTargets({"area", "box:0.5"}), OptionError);  // the same target twice
-  EXPECT_THROW(parseTargets({"gaussian:1", "gaussian:1.0"}), OptionError);
+  EXPECT_EQ(t[2].filter.spec, (FilterSpec{"lanczos", 3.0}));
+  EXPECT_EQ(t[2].filter.filter->describe(), makeFilter("lanczos", 3.f)->describe());
+  EXPECT_THROW(parseTargets({}, filters), OptionError);
+  EXPECT_THROW(parseTargets({"area", "box:0.5"}, filters), OptionError);  // the same target twice
+  EXPECT_THROW(parseTargets({"gaussian:1", "gaussian:1.0"}, filters), OptionError);
 }
 
 // The reference's own error is not aliasing: unbiased estimators (independent or stratified samples, box r = 0.5:
@@ -256,7 +258,8 @@ TEST(SweepPresets, ConvergedReferencesAndThreeTargets) {
     ASSERT_TRUE(applyStudyPreset(name, c)) << name;
     EXPECT_GE(c.refSpp, 64 * *std::max_element(c.spp.begin(), c.spp.end())) << name;
     EXPECT_EQ(c.targets, (std::vector<std::string>{"area", "gaussian:1.5", "lanczos:3"})) << name;
-    EXPECT_NO_THROW(parseTargets(c.targets)) << name;
+    FilterCache filters;
+    EXPECT_NO_THROW(parseTargets(c.targets, filters)) << name;
     EXPECT_EQ(c.radii, (std::vector<double>{0.5, 1.0, 2.0})) << name;
     EXPECT_TRUE(c.naturalRadii) << name;
     EXPECT_EQ(c.alignOffsets, 8) << name;

@@ -23,13 +23,14 @@
 #include "support/scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
-#include "study/reference.h"
+#include "study/reference/reference.h"
 #include "study/config.h"
-#include "study/merge.h"
+#include "study/records/merge.h"
 #include "study/validate.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
+#include "filter/filter.h"
 #include "measure/metrics.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
@@ -432,7 +433,8 @@ TEST(StudyPlan, EachFilterIsBuiltOnceAndSharedByItsConfigurations) {
   c.radii = {1.0, 2.0};
   c.reconstruction = {"weighted", "classic", "supersample"};
   std::map<FilterSpec, std::set<const Filter*>> made;
-  for (const SampleSetGroup& g : expandStudy(c))
+  FilterCache filters;
+  for (const SampleSetGroup& g : expandStudy(c, filters))
     for (const Configuration& cfg : g.configs) {
       ASSERT_TRUE(cfg.filter.filter);
       EXPECT_FLOAT_EQ(cfg.filter.filter->radius(), static_cast<float>(cfg.filter.spec.second));
@@ -443,12 +445,58 @@ TEST(StudyPlan, EachFilterIsBuiltOnceAndSharedByItsConfigurations) {
 }
 
 TEST(StudyPlan, TargetParsedOnceWithItsLabel) {
-  const Target area = parseTarget("area");
-  EXPECT_EQ(area.spec, (FilterSpec{"box", 0.5}));
+  FilterCache filters;
+  const Target area = parseTarget("area", filters);
+  EXPECT_EQ(area.filter.spec, (FilterSpec{"box", 0.5}));
   EXPECT_EQ(area.label, "box:0.5");
-  const Target g = parseTarget("gaussian:1.5");
-  EXPECT_EQ(g.spec, (FilterSpec{"gaussian", 1.5}));
+  const Target g = parseTarget("gaussian:1.5", filters);
+  EXPECT_EQ(g.filter.spec, (FilterSpec{"gaussian", 1.5}));
   EXPECT_EQ(g.label, "gaussian:1.5");
+  EXPECT_EQ(g.filter.filter, filters.get({"gaussian", 1.5}).filter);  // the cache's object, not a copy
+}
+
+// Issue 46: one FilterCache, owned by the plan, makes the rows', the targets' and the area's filters: a target that
+// is also a row's (filter, radius), the area target, the plan's area and the supersample rows share one object.
+TEST(StudyPlan, RowsTargetsAndTheAreaShareTheFilterObjects) {
+  StudyConfig c;
+  c.scenes = {kScene};
+  c.samplers = {"uniform"};
+  c.spp = {4};
+  c.filters = {"box", "gaussian"};
+  c.radii = {1.5};
+  c.reconstruction = {"weighted", "supersample"};
+  c.targets = {"area", "gaussian:1.5"};
+  c.maxSize = 16;
+  c.out = (workDir() / "shared").string();
+  c.cache = (workDir() / "cache").string();
+  const StudyPlan plan = validateStudy(c);
+  ASSERT_EQ(plan.targets.size(), 2u);
+  const Filter* area = plan.area.filter.get();
+  EXPECT_EQ(plan.targets[0].filter.filter.get(), area);
+  std::map<FilterSpec, std::set<const Filter*>> rows;
+  for (const SampleSetGroup& g : plan.groups)
+    for (const Configuration& cfg : g.configs) rows[cfg.filter.spec].insert(cfg.filter.filter.get());
+  EXPECT_EQ(rows.at(kAreaSpec), std::set<const Filter*>{area});  // classic box and the supersample row
+  EXPECT_EQ(rows.at(FilterSpec("gaussian", 1.5)), std::set<const Filter*>{plan.targets[1].filter.filter.get()});
+}
+
+// References take the filter objects: what they splat and describe is the object they are given, not one rebuilt
+// from its (name, radius) (here a Gaussian with another sigma under the natural Gaussian's key).
+TEST(StudyPlan, ReferencesSplatTheFilterObjectTheyAreGiven) {
+  const auto scene = loadStudyScene(kScene, 8, 6);
+  ReferenceOptions o;
+  o.spp = 8, o.batchSpp = 4, o.threads = 1, o.progress = false;
+  const StudyFilter wide{{"gaussian", 1.5}, makeFilter("gaussian", 1.5f, {{"sigma", 0.9}})};
+  FilterCache filters;
+  const StudyFilter natural = filters.get({"gaussian", 1.5});
+  const ReferenceSet a = renderReferences(*scene, {wide}, o), b = renderReferences(*scene, {natural}, o);
+  EXPECT_EQ(a.images[0].filter, b.images[0].filter);  // the same CSV key
+  EXPECT_EQ(a.images[0].describe, wide.filter->describe());
+  EXPECT_NE(a.images[0].key, b.images[0].key);
+  double diff = 0;
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 8; ++x) diff += (a.images[0].image.get(x, y) - b.images[0].image.get(x, y)).cwiseAbs().sum();
+  EXPECT_GT(diff, 0.0);
 }
 
 TEST(StudyPlan, ValidationReadsSceneSizesFromTheRenderLine) {
@@ -467,5 +515,6 @@ TEST(StudyPlan, ValidationReadsSceneSizesFromTheRenderLine) {
   EXPECT_EQ(plan.targets[0].label, "box:0.5");
   EXPECT_EQ(plan.targets[1].label, "gaussian:1.5");
   EXPECT_EQ(plan.targets[2].label, "lanczos:3");
-  EXPECT_EQ(plan.groups.size(), expandStudy(c).size());
+  FilterCache filters;
+  EXPECT_EQ(plan.groups.size(), expandStudy(c, filters).size());
 }

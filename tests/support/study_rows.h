@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "study/csv.h"
+#include "study/records/csv.h"
 
 namespace aliaslab::testing {
 

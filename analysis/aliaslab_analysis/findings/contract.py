@@ -1,5 +1,5 @@
 """The theory contract every study checks (docs/science.md, "What the samplers guarantee"; the sweep computes the
-same at its end, lib/study/contract.h, and prints violations as warnings).
+same at its end, lib/study/records/contract.h, and prints violations as warnings).
 
 With the box filter of radius 0.5 a pixel's estimate is the plain mean of its own N samples, so a sampler whose
 construction guarantees Var <= c sigma^2 / N for every square-integrable integrand has at most c times random's

@@ -1,4 +1,4 @@
-"""Reading a study CSV (the sweep's output, lib/study/csv.h) for analysis: load_study.
+"""Reading a study CSV (the sweep's output, lib/study/records/csv.h) for analysis: load_study.
 
 load_study(path) -> (DataFrame, notes) is the one entry: columns checked, numbers converted, one row per
 configuration (a repeated configuration is refused), well-named columns added (`error`, the error against
@@ -15,7 +15,7 @@ import pandas as pd
 from . import study_rows, text_file
 from .errors import InputError
 
-# The sweep CSV's columns, in order (lib/study/csv.h).
+# The sweep CSV's columns, in order (lib/study/records/csv.h).
 STUDY_COLUMNS = [
     "scene", "width", "height", "sampler", "spp", "filter", "radius", "filter_params",
     "reconstruction", "seeds", "mse", "aliasing", "noise", "mse_area", "psnr", "ref_spp",
@@ -42,7 +42,7 @@ OPTIONAL_NUMERIC = ["mse_target", "blur", "cross", "mse_se", "noise_se", "aliasi
                     # offsets (references moved with the camera), on the fixed grid's rows only
                     "natural_radius", "align_offsets", "align_mse_target", "align_mse_target_sd",
                     "align_mse_target_se"]
-# A study with frames (sweep --frames F > 1; lib/study/csv.h, docs/science.md "Motion") adds these after the
+# A study with frames (sweep --frames F > 1; lib/study/records/csv.h, docs/science.md "Motion") adds these after the
 # still columns, all of them required once `frames` is there; frames and the motion are finite and one per CSV.
 MOTION_COLUMNS = ["frames", "motion_dx", "motion_dy", "shimmer", "shimmer_se", "flicker_same", "flicker_same_se",
                   "flicker_new", "flicker_new_se", "target_shimmer"]

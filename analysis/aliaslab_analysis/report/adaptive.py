@@ -147,7 +147,7 @@ def image_paths(images, extra, c):
 
 
 def zoom(height):
-    """The density panel's zoom of an image `height` pixels high (study/contact.cpp: at least 128 px high)."""
+    """The density panel's zoom of an image `height` pixels high (study/sweep/contact.cpp: at least 128 px high)."""
     return min(max(-(-128 // max(1, height)), 1), 16)
 
 

@@ -1,5 +1,5 @@
 """The motion section of the report (definitions docs/science.md "Motion"). For a study CSV made
-with frames (sweep --frames F > 1: the motion columns of lib/study/csv.h), against the primary target:
+with frames (sweep --frames F > 1: the motion columns of lib/study/records/csv.h), against the primary target:
   - per scene a chart: shimmer (measured in the content's frame) against blur and against noise, one line per
     (sampler, spp, filter) through its radii, the target's own shimmer drawn as a level;
   - per scene and (sampler, spp) the still-image ranking (mse_target, frame 0) beside the in-motion rankings

@@ -12,7 +12,7 @@
 #include "core/hash.h"
 #include "measure/metrics.h"
 #include "measure/spectrum.h"
-#include "study/spectrum_files.h"
+#include "study/records/spectrum_files.h"
 
 using namespace aliaslab;
 

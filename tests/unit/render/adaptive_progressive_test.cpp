@@ -18,9 +18,9 @@
 #include "render/render.h"
 #include "sampling/progressive.h"
 #include "study/config.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 #include "support/scratch_dir.h"
 
 namespace aliaslab {

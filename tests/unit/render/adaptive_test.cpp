@@ -19,8 +19,8 @@
 #include "support/scratch_dir.h"
 #include "study/config.h"
 #include "study/validate.h"
-#include "study/csv.h"
-#include "study/sweep.h"
+#include "study/records/csv.h"
+#include "study/sweep/sweep.h"
 
 namespace aliaslab {
 namespace {

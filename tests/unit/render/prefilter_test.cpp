@@ -22,7 +22,7 @@
 #include "scene/prefilter.h"
 #include "scene/scene.h"
 #include "support/scratch_dir.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 
 namespace aliaslab {
 namespace {

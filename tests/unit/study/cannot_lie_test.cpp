@@ -23,10 +23,10 @@
 #include "render/render.h"
 #include "study/config.h"
 #include "study/validate.h"
-#include "study/contact.h"
-#include "study/csv.h"
+#include "study/sweep/contact.h"
+#include "study/records/csv.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 #include "support/study_rows.h"
 
 namespace fs = std::filesystem;

@@ -24,9 +24,9 @@
 
 #include "aliaslab_paths.h"
 #include "support/scratch_dir.h"
-#include "study/csv.h"
+#include "study/records/csv.h"
 #include "measure/spectrum.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;

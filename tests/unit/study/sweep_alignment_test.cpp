@@ -1,4 +1,4 @@
-// The fixed grid's alignment (study/alignment.h) through the whole sweep: its columns equal the grid rendered
+// The fixed grid's alignment (study/sweep/alignment.h) through the whole sweep: its columns equal the grid rendered
 // directly at the same camera offsets, through another path (the scene file with its orthographic camera moved by
 // the offset, rendered by the library's reconstruct, not the sweep's shared splat), against the targets' references
 // rendered for that moved camera, the mse computed here; the rows of other samplers have empty alignment columns;
@@ -19,12 +19,12 @@
 #include "film/film.h"
 #include "filter/filter.h"
 #include "render/sample_source.h"
-#include "study/alignment.h"
+#include "study/sweep/alignment.h"
 #include "study/config.h"
-#include "study/csv.h"
-#include "study/merge.h"
+#include "study/records/csv.h"
+#include "study/records/merge.h"
 #include "study/study_scene.h"
-#include "study/sweep.h"
+#include "study/sweep/sweep.h"
 #include "support/scratch_dir.h"
 #include "support/study_rows.h"
 
@@ -107,7 +107,8 @@ double mseAgainst(const Image& image, const ReferenceImage& t, double& raw) {
 TEST(SweepAlignment, ColumnsEqualTheGridRenderedAtEachOffset) {
   const StudyConfig c = study("aligned", 4, 2);
   const auto rows = sweep(c);
-  const std::vector<FilterSpec> targets{{"box", 0.5}, {"gaussian", 1.5}};
+  FilterCache filters;
+  const std::vector<StudyFilter> targets = filters.get({{"box", 0.5}, {"gaussian", 1.5}});
   ReferenceOptions o = referenceOptions(c);
   o.spp = c.alignRefSpp, o.progress = false;
   // Per offset k: the scene with its camera moved by the film offset (film position p then sees what p + o saw;

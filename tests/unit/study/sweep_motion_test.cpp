@@ -1,4 +1,4 @@
-// The sweep with frames (study/sweep_motion.h), the one motion driver, against closed forms (docs/science.md
+// The sweep with frames (study/sweep/sweep_motion.h), the one motion driver, against closed forms (docs/science.md
 // "Motion"): a point-sampled grating above Nyquist shimmers 2 a^2 sin^2(pi k v) with a = 1/2, a Gaussian or
 // box resolve of it a^2 times the filter's response at the folded frequency squared (summed over the filter's
 // weights at the integer offsets of the other samples, an independent computation); a grating below Nyquist
@@ -19,11 +19,11 @@
 
 #include "core/error.h"
 #include "study/config.h"
-#include "study/csv.h"
-#include "study/merge.h"
+#include "study/records/csv.h"
+#include "study/records/merge.h"
 #include "filter/filter.h"
-#include "study/motion_frame.h"
-#include "study/sweep.h"
+#include "study/sweep/motion_frame.h"
+#include "study/sweep/sweep.h"
 
 namespace aliaslab {
 namespace {
