@@ -77,7 +77,7 @@ TEST(FilmDefinition, NegativeLobeMakesNegativePixelKeptAndCounted) {
 
 TEST(FilmDefinition, FastWeightedAverageEqualsTheDefinition) {
   for (const auto& name : allFilterNames())
-    for (float r : {0.5f, 1.5f, 2.3f}) {
+    for (float r : {0.5f, 1.f, 1.5f, 2.f, 2.3f, 3.f}) {  // the study's radii (0.5, 1, 2, natural 1.5 and 3), and 2.3
       auto f = makeFilter(name, r);
       const SampleBuffer b = makeSamples(13, 9, 8, 7, noisy);
       const Reconstruction rec = reconstruct(b, *f, ReconMode::WeightedAverage, 2);
