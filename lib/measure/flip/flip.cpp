@@ -1,6 +1,6 @@
 // LDR-FLIP (flip.h, docs/flip.md), fast: stage 1 exact (flip_linear.cpp), stages 2 and 3 vectorised
 // (flip_fast.cpp); the scalar definition they are tested against is flip_definition.cpp.
-#include "measure/flip.h"
+#include "measure/flip/flip.h"
 
 #include <stdexcept>
 

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "measure/flip_planes.h"
+#include "measure/flip/flip_planes.h"
 
 namespace aliaslab {
 

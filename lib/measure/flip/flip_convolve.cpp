@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "core/cpu.h"
-#include "measure/flip.h"
-#include "measure/flip_planes.h"
+#include "measure/flip/flip.h"
+#include "measure/flip/flip_planes.h"
 
 // 256-bit vectors are passed only between functions inlined into one built for AVX2 (GCC's -Wpsabi note).
 #pragma GCC diagnostic ignored "-Wpsabi"

@@ -1,12 +1,12 @@
 // Stages 2 and 3 of LDR-FLIP as defined (flip_planes.h, flip_definition.h): libm in double, pixel by pixel.
-#include "measure/flip_definition.h"
+#include "measure/flip/flip_definition.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "measure/flip_colour.h"
-#include "measure/flip_planes.h"
+#include "measure/flip/flip_colour.h"
+#include "measure/flip/flip_planes.h"
 
 namespace aliaslab {
 namespace {

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "core/image.h"
-#include "measure/flip.h"
+#include "measure/flip/flip.h"
 
 namespace aliaslab {
 

@@ -3,9 +3,9 @@
 // (flip_fast_kernels.h; the same bits either way).
 
 #include "core/cpu.h"
-#include "measure/flip.h"
-#include "measure/flip_fast_kernels.h"
-#include "measure/flip_planes.h"
+#include "measure/flip/flip.h"
+#include "measure/flip/flip_fast_kernels.h"
+#include "measure/flip/flip_planes.h"
 
 namespace aliaslab {
 namespace {

@@ -2,7 +2,7 @@
 // -mavx2 (CMakeLists.txt); flip_fast.cpp calls it only where the CPU has AVX2. It includes nothing that the
 // other translation units share code with (raw pointers in, unnamed-namespace templates), so no AVX2 code can
 // stand in for theirs at link time.
-#include "measure/flip_fast_kernels.h"
+#include "measure/flip/flip_fast_kernels.h"
 
 namespace aliaslab::flipkernels {
 

@@ -7,8 +7,8 @@
 
 #include <cstddef>
 
-#include "measure/flip_colour.h"
-#include "measure/flip_fastmath.h"
+#include "measure/flip/flip_colour.h"
+#include "measure/flip/flip_fastmath.h"
 
 namespace aliaslab::flipkernels {
 

@@ -1,7 +1,7 @@
 // Cube root, base-2 logarithm and power of 2 for the fast FLIP stages (flip_planes.h), on GCC vectors of 1, 2
 // or 4 doubles with only IEEE-exact operations (add, multiply, divide, square root, conversions, bit
 // operations, selections), so each lane gives the same bits whatever the vector width. Accuracy (relative, on
-// the ranges FLIP uses; checked against libm in tests/unit/measure/flip_test):
+// the ranges FLIP uses; checked against libm in tests/unit/measure/flip/flip_test):
 //   cbrtPositive(t), t > 0 normal: a guess from the float exponent divided by 3 (a few per cent), then three
 //     Halley steps (cubic convergence: 1e-4, 1e-12, rounding): within a few ulp.
 //   log2Positive(x), x > 0 normal: x = m 2^e with m in [sqrt(1/2), sqrt 2), ln m = 2 atanh(s), s = (m-1)/(m+1),

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "measure/flip.h"
-#include "measure/flip_colour.h"
-#include "measure/flip_planes.h"
+#include "measure/flip/flip.h"
+#include "measure/flip/flip_colour.h"
+#include "measure/flip/flip_planes.h"
 
 namespace aliaslab {
 namespace {

@@ -1,6 +1,6 @@
 // Adaptive sampling: the registry of names, describe(), and the counts of a traced set; see adaptive.h.
 // The methods are in adaptive_trace.cpp and adaptive_subdiv.cpp, the tracing of their rounds in adaptive_work.cpp.
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 
 #include <algorithm>
 #include <cmath>

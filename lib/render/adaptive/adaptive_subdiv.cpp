@@ -11,7 +11,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "render/adaptive_work.h"
+#include "render/adaptive/adaptive_work.h"
 
 namespace aliaslab::adaptiveimpl {
 

@@ -14,7 +14,7 @@
 #include <cmath>
 
 #include "core/error.h"
-#include "render/adaptive_work.h"
+#include "render/adaptive/adaptive_work.h"
 
 namespace aliaslab {
 

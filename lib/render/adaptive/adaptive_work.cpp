@@ -10,7 +10,7 @@
 
 #include "core/hash.h"
 #include "core/parallel.h"
-#include "render/adaptive_work.h"
+#include "render/adaptive/adaptive_work.h"
 
 namespace aliaslab::adaptiveimpl {
 

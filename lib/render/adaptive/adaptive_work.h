@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 
 namespace aliaslab::adaptiveimpl {
 

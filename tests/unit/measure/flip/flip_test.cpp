@@ -1,4 +1,4 @@
-// The fast FLIP (measure/flip.h) against its scalar definition (measure/flip_definition.h, libm in double):
+// The fast FLIP (measure/flip/flip.h) against its scalar definition (measure/flip/flip_definition.h, libm in double):
 // the documented tolerance is 1e-6 per image mean (docs/flip.md), checked on renders of several scenes; the
 // fast cube root, logarithm and power against libm on the ranges FLIP uses; the shared-image form meanFlips
 // against one target at a time.
@@ -11,9 +11,9 @@
 #include "core/cpu.h"
 #include "film/film.h"
 #include "filter/filter.h"
-#include "measure/flip.h"
-#include "measure/flip_definition.h"
-#include "measure/flip_fastmath.h"
+#include "measure/flip/flip.h"
+#include "measure/flip/flip_definition.h"
+#include "measure/flip/flip_fastmath.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
 #include "study/study_scene.h"

@@ -1,4 +1,4 @@
-// Adaptive sampling is unbiased (render/adaptive.h, docs/adaptive.md "Bias"): on a constant-plus-edge scene, the
+// Adaptive sampling is unbiased (render/adaptive/, docs/adaptive.md "Bias"): on a constant-plus-edge scene, the
 // squared bias of every method's pixel estimates, averaged over the pixels, is zero within error, while the plain
 // mean of the very same samples (every sample counted alike, as the decision-reusing methods used to do) is
 // measurably biased for the error-driven method: the test can fail.
@@ -12,7 +12,7 @@
 #include <cmath>
 
 #include "accel/aggregate.h"
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 
 namespace aliaslab {
 namespace {

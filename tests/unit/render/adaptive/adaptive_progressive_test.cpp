@@ -1,4 +1,4 @@
-// Adaptive sampling keeps its base's stratification (render/adaptive.h, docs/adaptive.md "Bias"): with a
+// Adaptive sampling keeps its base's stratification (render/adaptive/adaptive.h, docs/adaptive.md "Bias"): with a
 // progressive base the fresh samples continue each pixel's own sequence, so a pixel that gets exactly its share is
 // the base's own spp-point set. Checked sample for sample (sobol, pmj02, halton, random), in distribution for
 // jittered (progressive jittered at 4^k points: jittered's noise within 3 se), and on the Siemens star at 16 spp,
@@ -14,7 +14,7 @@
 #include "accel/aggregate.h"
 #include "filter/filter.h"
 #include "measure/metrics.h"
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 #include "render/render.h"
 #include "sampling/progressive.h"
 #include "study/config.h"

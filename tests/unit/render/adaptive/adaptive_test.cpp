@@ -1,4 +1,4 @@
-// Adaptive sampling (render/adaptive.h): the exact budget, samples inside
+// Adaptive sampling (render/adaptive/adaptive.h): the exact budget, samples inside
 // their pixels, refinement on an edge and none on a flat image, error at
 // equal budget against the base sampler, thread-count independence, and
 // variable-count sample buffers in every reconstruction; and the contract of
@@ -14,7 +14,7 @@
 #include "aliaslab_paths.h"
 #include "core/error.h"
 #include "core/hash.h"
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 #include "render/sample_source.h"
 #include "support/scratch_dir.h"
 #include "study/config.h"

@@ -1,4 +1,4 @@
-// The adaptive methods' shared state (render/adaptive_work.h, private to render/): the rounds' layout and the
+// The adaptive methods' shared state (render/adaptive/adaptive_work.h, private to render/): the rounds' layout and the
 // 3 x 3 dilation the methods use, each against a plain computation of the same thing.
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 
 #include "accel/aggregate.h"
 #include "aliaslab_paths.h"
-#include "render/adaptive_work.h"
+#include "render/adaptive/adaptive_work.h"
 #include "scene/scene.h"
 
 namespace aliaslab::adaptiveimpl {
