@@ -21,6 +21,7 @@
 #include "core/files.h"
 #include "core/format.h"
 #include "core/image.h"
+#include "core/memory_limit.h"
 #include "film/visualize.h"
 #include "measure/flip/flip.h"
 #include "measure/image_diff.h"
