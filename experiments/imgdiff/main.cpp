@@ -22,7 +22,7 @@
 #include "core/format.h"
 #include "core/image.h"
 #include "core/memory_limit.h"
-#include "film/visualize.h"
+#include "core/picture_kit.h"
 #include "measure/flip/flip.h"
 #include "measure/image_diff.h"
 
