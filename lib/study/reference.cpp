@@ -174,7 +174,7 @@ std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
   std::ostringstream j;
   j << "{\n  \"scene\": " << jsonString(scene.stem) << ",\n  \"scene_path\": " << jsonString(manifestScenePath(scene.path))
     << ",\n  \"width\": " << scene.width << ",\n  \"height\": " << scene.height
-    << ",\n  \"tracing\": " << jsonString(describeTraceOptions(scene.line.options));
+    << ",\n  \"tracing\": " << jsonString(describeTraceOptions(scene.options));
   if (scene.filmOffset[0] != 0 || scene.filmOffset[1] != 0)  // a shifted camera (study/alignment.h)
     j << ",\n  \"film_offset\": [" << jsonNumber(scene.filmOffset[0]) << ", " << jsonNumber(scene.filmOffset[1]) << "]";
   j << ",\n  \"spp\": " << set.spp
