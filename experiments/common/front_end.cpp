@@ -5,7 +5,7 @@
 #include <new>
 
 #include "core/error.h"
-#include "core/files.h"
+#include "core/memory_limit.h"
 
 namespace aliaslab {
 

@@ -6,7 +6,7 @@
 //   psnr_db        10 log10(1 / mse) (peak 1; inf for identical images)
 //   bias, spread   the difference D = A - B split as mse = bias^2 + spread^2:
 //                  bias = mean D, spread = its standard deviation (population)
-//   flip           mean LDR-FLIP (lib/measure/flip.h), 67 pixels per degree
+//   flip           mean LDR-FLIP (lib/measure/flip/flip.h), 67 pixels per degree
 //   max_abs        largest |D|
 // With --output, a false-colour picture of the channel-mean difference
 // (red A brighter, blue darker, saturated at --scale, default max |D|)
@@ -21,8 +21,9 @@
 #include "core/files.h"
 #include "core/format.h"
 #include "core/image.h"
-#include "film/visualize.h"
-#include "measure/flip.h"
+#include "core/memory_limit.h"
+#include "core/picture_kit.h"
+#include "measure/flip/flip.h"
 #include "measure/image_diff.h"
 
 using namespace aliaslab;
@@ -53,7 +54,7 @@ int main(int argc, char** argv) {
     refuseOutputsOverInputs({{"--output", output}, {"--flip-output", flipOutput}}, {a, b});
     // Fails before reading when the images cannot fit: per pixel, each image's decoded channels and its Image,
     // the difference images of --output, the FLIP map and FLIP's working planes (about 48 floats a pixel for
-    // both images together, measure/flip.h): an upper estimate, not a measurement.
+    // both images together, measure/flip/flip.h): an upper estimate, not a measurement.
     for (const auto& [key, path] : {std::pair<std::string, std::string>{"A", a}, {"B", b}}) {
       const ImageHeader h = readImageHeader(path);
       const double perPixel = 2.0 * (h.channels * sizeof(float) + sizeof(Color)) + 3.0 * sizeof(Color) +

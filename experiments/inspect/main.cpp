@@ -20,6 +20,7 @@
 #include "study/reference/manifest_summary.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/memory_limit.h"
 #include "core/format.h"
 
 using namespace aliaslab;

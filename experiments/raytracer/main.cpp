@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/image.h"
+#include "core/memory_limit.h"
 #include "core/parallel.h"
 #include "measure/registration.h"
 #include "options.h"

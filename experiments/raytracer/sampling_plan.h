@@ -11,7 +11,7 @@
 // flag each pixel takes its first sample, as the course says (the front end
 // prints a note then). --filter without --radius uses the filter's natural
 // radius (defaultFilterRadius).
-// An adaptive sampler (--sampler adaptive-contrast:jittered, render/adaptive.h)
+// An adaptive sampler (--sampler adaptive-contrast:jittered, render/adaptive/adaptive.h)
 // spends --spp samples per pixel on average where the image needs them
 // (without a filter: the box of radius 0.5, each pixel's area-weighted mean);
 // -render_samples then shows where they went.

@@ -18,6 +18,7 @@
 #include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/memory_limit.h"
 #include "study/config.h"
 #include "study/reference/manifest.h"
 #include "study/reference/reference.h"

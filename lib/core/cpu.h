@@ -3,7 +3,7 @@
 // Every fast path that has an AVX2 (or AVX2 + FMA) twin asks cpuFeatures() which one to run: the BVH's 8-wide
 // nodes (accel/bvh_trace.cpp), FilterBatch's 8 lanes (filter/filter_simd.h), the splat's 8-sample set-up and its
 // AVX2 + FMA accumulation (film/splat_pass.cpp, film/splat_kernels.cpp) and FLIP's 4-lane convolution and
-// colour stages (measure/flip_convolve.cpp, measure/flip_fast.cpp). Each twin computes the same bits as its
+// colour stages (measure/flip/flip_convolve.cpp, measure/flip/flip_fast.cpp). Each twin computes the same bits as its
 // SSE path, so the answer changes the speed, never a result.
 //
 // The processor is asked once. A test compares the paths by running the same work under a ScopedCpuFeatures,

@@ -1,8 +1,9 @@
 // Whole-file writes that never leave a half-written file: write a temporary
-// beside the target, then rename it into place (atomic on one file system).
-//
-// Also runProgram(): a helper program (the Python charts) run with its
-// arguments passed as they are, not through a shell.
+// beside the target, then rename it into place (atomic on one file system);
+// what a path is (a regular file, a folder, a FIFO, a device) before anything
+// opens it; and the one rule that no output overwrites an input or another
+// output. The memory a process may use is core/memory_limit.h, starting
+// another program core/process.h.
 #pragma once
 #include <string>
 #include <vector>
@@ -48,19 +49,6 @@ void refuseOutputsOverInputs(const std::vector<OutputFile>& outputs, const std::
 /// sub-folders: those whose process <pid> is no longer running. Returns how many were removed.
 size_t removeStaleTemporaries(const std::string& dir);
 
-/// Fails before allocating: throws OptionError(key) when `bytes` (an estimate of what `what` needs) exceeds
-/// the memory this process may use (memoryLimit), with both figures and the limit's source in the message
-/// (instead of std::bad_alloc after a long wait).
-void requireMemory(double bytes, const std::string& key, const std::string& what);
-
-/// The memory this process may use: the least of physical memory, the address-space limit (RLIMIT_AS) and the
-/// cgroup's limit (v2 memory.max, v1 memory.limit_in_bytes), in bytes, and which of them it is.
-struct MemoryLimit {
-  double bytes = 0;    ///< 0 when nothing is known
-  std::string source;  ///< "physical memory", "the address-space limit (ulimit -v)", "the cgroup memory limit"
-};
-MemoryLimit memoryLimit();
-
 /// What `path` is when it exists and is not a regular file: "a folder", "a FIFO", "a device", "a socket";
 /// "" for a regular file (links followed) or a missing path. Never opens the file (a FIFO would block).
 std::string specialFileKind(const std::string& path);
@@ -75,9 +63,5 @@ std::string writeFully(int fd, const std::string& text);
 
 /// "<strerror(errno)>", e.g. "No space left on device", for messages after a failed system call.
 std::string lastSystemError();
-
-/// Runs argv[0] (found on PATH when it has no slash) with argv[1..] as its arguments, without a shell (so
-/// paths need no quoting), waits, and returns its exit status (-1 when it could not start or was killed).
-int runProgram(const std::vector<std::string>& argv);
 
 }  // namespace aliaslab

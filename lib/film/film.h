@@ -2,7 +2,7 @@
 //
 // A SampleBuffer holds one traced sample set: for each pixel (i, j), spp
 // samples stored contiguously at [(j * width + i) * spp, ... + spp), or, for
-// adaptive sampling (render/adaptive.h), count(i, j) samples per pixel
+// adaptive sampling (render/adaptive/adaptive.h), count(i, j) samples per pixel
 // stored pixel after pixel in the same order (every reconstruction except
 // Supersample takes either kind). Each
 // sample is a film position (continuous pixel coordinates, pixel (i, j)

@@ -6,7 +6,7 @@
 //   psnr_db  10 log10(1 / mse)         (peak 1; inf for identical images)
 //   bias     mean D, spread its standard deviation (population): mse = bias^2 + spread^2
 //   max_abs  largest |D|
-// The FLIP map and its mean are measure/flip.h.
+// The FLIP map and its mean are measure/flip/flip.h.
 #pragma once
 #include "core/image.h"
 

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 
 namespace aliaslab {
 namespace {

@@ -3,7 +3,7 @@
 // A caller asks makeSampleSource() for any name a front end accepts and
 // traces what it gets, with no test of the name: the plain and composed
 // patterns of lib/sampling (makeSampler: a pure function of seed and pixel,
-// traced by traceSamples) and the adaptive methods of render/adaptive.h
+// traced by traceSamples) and the adaptive methods of render/adaptive/adaptive.h
 // ("adaptive-METHOD:BASE", which decide where to sample from what they have
 // traced, so they need the tracer and live here, in the render layer).
 // Everything downstream (reconstruction with any filter, the study's
@@ -39,7 +39,7 @@ class SampleSource {
   /// The fixed-count pixel pattern: the sampler itself; for an adaptive method its base at 1 sample per pixel
   /// with the run's seed (its first round's pattern).
   virtual const Sampler& pixelSampler() const = 0;
-  /// True for an adaptive method (render/adaptive.h): variable counts, no filter importance sampling.
+  /// True for an adaptive method (render/adaptive/adaptive.h): variable counts, no filter importance sampling.
   virtual bool adaptive() const = 0;
   /// Traces the sample set of a width x height film (`progress` as traceSamples / traceAdaptive).
   virtual SampleBuffer trace(const Tracer& tracer, int width, int height, int threads = 0,

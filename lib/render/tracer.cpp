@@ -19,6 +19,15 @@ float maxComponent(const Color& c) { return c.maxCoeff(); }
 
 }  // namespace
 
+TraceOptions traceOptionsOf(const RenderSettings& render) {
+  TraceOptions o;
+  o.shadows = render.shadows;
+  o.bounces = render.bounces;
+  o.weight = render.weight;
+  o.shadeBack = render.shadeBack;
+  return o;
+}
+
 std::string TraceOptions::describe() const {
   std::ostringstream out;
   out << (shadows ? "shadows" : "no_shadows") << " bounces " << bounces << " weight " << weight

@@ -34,6 +34,7 @@
 #include <string>
 
 #include "accel/aggregate.h"
+#include "scene/render_settings.h"
 #include "scene/scene.h"
 
 namespace aliaslab {
@@ -43,9 +44,8 @@ namespace aliaslab {
 /// would otherwise double the work every level. samplesWithCappedRayTrees() counts the samples cut so far
 /// (the raytracer warns with the count).
 inline constexpr uint32_t kMaxSecondaryRaysPerSample = 1u << 16;
-/// The deepest ray tree (-bounces): the tracer recurses once per level, so the
-/// depth is bounded to keep every thread's stack safe (also under sanitizers).
-inline constexpr int kMaxBounces = 256;
+// The deepest ray tree, kMaxBounces (-bounces, scene/render_settings.h): the tracer recurses once per level, so
+// the depth is bounded to keep every thread's stack safe (also under sanitizers).
 uint64_t samplesWithCappedRayTrees();
 
 struct TraceOptions {
@@ -61,6 +61,9 @@ struct TraceOptions {
   /// One line, e.g. "shadows bounces 5 weight 0.01 shade_back epsilon 0.001".
   std::string describe() const;
 };
+
+/// The tracing settings of a scene's render line (shadows, bounces, weight, shade_back); the rest as defaulted.
+TraceOptions traceOptionsOf(const RenderSettings& render);
 
 /// Ray totals, as -stats and the sweep's summary report them.
 struct RayCounts {

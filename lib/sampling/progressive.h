@@ -1,5 +1,5 @@
 // Progressive pixel sequences: a sampler whose first n points are the same at every count >= n (given seed and
-// pixel), and are themselves a well-spread set. The adaptive methods (render/adaptive.h) continue a pixel's own
+// pixel), and are themselves a well-spread set. The adaptive methods (render/adaptive/) continue a pixel's own
 // sequence with them: the fresh samples are points n0 .. n0 + m - 1 of the sequence the pilot's n0 points began,
 // so a pixel that gets exactly spp samples holds the base's own spp-point set.
 //

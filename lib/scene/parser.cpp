@@ -143,6 +143,7 @@ void SceneParser::parseLights() {
 Scene parseSceneText(const std::string& text, const std::string& name, const std::string& baseDir) {
   Scene scene;
   scene.path = name;
+  scene.render = parseRenderLine(text, name);
   detail::TokenStream tokens(text, name);
   detail::SceneParser(tokens, scene, baseDir).parse();
   return scene;

@@ -8,6 +8,7 @@
 #include "scene/camera.h"
 #include "scene/light.h"
 #include "scene/material.h"
+#include "scene/render_settings.h"
 
 namespace aliaslab {
 
@@ -20,12 +21,14 @@ struct Scene {
   std::unique_ptr<Group> root;                       ///< the top-level Group
   std::string path;                                  ///< the scene file as given
   std::vector<std::string> dependencies;             ///< resolved OBJ paths, for content hashing
+  RenderSettings render;                             ///< its `# render:` line (scene/render_settings.h)
 };
 
 /// Parses a classic course scene file (scenes/README.md plus
 /// the Pattern extension). Throws FileError when it cannot be read and
 /// ParseError "<file>:<line>: <what was expected>" for malformed content,
-/// including malformed OBJ files (which name the OBJ file and its line).
+/// including malformed OBJ files (which name the OBJ file and its line) and
+/// a malformed `# render:` line (read first).
 Scene parseScene(const std::string& path);
 
 /// The same from text; `name` is used in messages and `baseDir` to resolve OBJ files.

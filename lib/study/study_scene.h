@@ -6,8 +6,8 @@
 //
 // The scenes engineer puts exactly one machine-readable line in every scene:
 //   # render: -size W H [-shadows] [-bounces n] [-weight w] [-shade_back] [-grid nx ny nz]
-// readRenderLine() parses it (ParseError "<file>:<line>: ..." for unknown or
-// malformed flags). The content hash covers the scene file's bytes, every
+// The scene parser reads it as scene data (Scene::render, scene/render_settings.h).
+// The content hash covers the scene file's bytes, every
 // OBJ dependency's bytes, the size and the tracing flags: references cached
 // under it are reused exactly when they would come out the same.
 #pragma once
@@ -20,16 +20,6 @@
 #include "scene/scene.h"
 
 namespace aliaslab {
-
-struct RenderLine {
-  int width = 0, height = 0;   ///< -size W H
-  TraceOptions options;        ///< -shadows -bounces -weight -shade_back
-  int grid[3] = {0, 0, 0};     ///< -grid nx ny nz (0: automatic)
-  bool found = false;          ///< false when the scene has no `# render:` line
-};
-
-/// Reads the `# render:` line of a scene file. Throws FileError / ParseError.
-RenderLine readRenderLine(const std::string& path);
 
 /// The tracing flags as text ("-shadows -bounces 4 ..."), for manifests and hashes.
 std::string describeTraceOptions(const TraceOptions& options);
@@ -45,8 +35,8 @@ class StudyScene {
   std::string path;       ///< the scene file as given
   std::string stem;       ///< file name without folder and extension (the CSV's scene column)
   int width = 0, height = 0;
-  RenderLine line;
-  Scene scene;
+  Scene scene;            ///< with its render line, scene.render
+  TraceOptions options;   ///< the render line's tracing flags (traceOptionsOf)
   std::unique_ptr<Aggregate> aggregate;
   std::unique_ptr<Tracer> tracer;
   uint64_t contentHash = 0;  ///< scene + OBJ bytes, size, tracing flags (+ the film offset when not zero)
@@ -65,7 +55,7 @@ struct SceneSize {
 /// scaled up or down (aspect kept, rounded, >= 1) so the larger side is
 /// exactly longSide (maxSize is then ignored). Throws FileError naming `path`
 /// when no size is known.
-SceneSize studySceneSize(const std::string& path, const RenderLine& line, int width = 0, int height = 0,
+SceneSize studySceneSize(const std::string& path, const RenderSettings& line, int width = 0, int height = 0,
                          int maxSize = 0, int longSide = 0);
 
 /// Checks a scene as loadStudyScene would, without building it: its render line, its size (studySceneSize)

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
+#include "core/memory_limit.h"
 #include "filter/filter.h"
 #include "measure/registration.h"
 #include "render/sample_source.h"

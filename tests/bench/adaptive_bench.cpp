@@ -22,7 +22,7 @@
 
 #include "accel/aggregate.h"
 #include "core/huge_pages.h"
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 #include "render/render.h"
 #include "scene/camera.h"
 #include "scene/scene.h"

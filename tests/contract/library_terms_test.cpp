@@ -85,25 +85,25 @@ struct Allowed {
 // Not flags: each entry says what the text is.
 const Allowed kNotFlags[] = {
     // The `# render:` line of a scene file is a file format whose keywords are the course's flags; it is parsed
-    // and written here (no command line involved).
+    // in lib/scene (scene/render_settings.cpp) and its tracing flags written for manifests and hashes in
+    // study/study_scene.cpp (no command line involved).
     {"study/study_scene.cpp", "-shadows ", "render-line keyword (scene file format)"},
     {"study/study_scene.cpp", " -weight ", "render-line keyword (scene file format)"},
     {"study/study_scene.cpp", "-bounces ", "render-line keyword (scene file format)"},
     {"study/study_scene.cpp", " -shade_back", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-size", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-shadows", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-shade_back", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-bounces", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-weight", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "-grid", "render-line keyword (scene file format)"},
-    {"study/study_scene.cpp", "render line: -size must be positive", "a scene file's render line"},
-    {"study/study_scene.cpp", "render line: -bounces must be in 0..", "a scene file's render line"},
-    {"study/study_scene.cpp", "render line: -grid resolutions must be >= 0 (0 = automatic)",
-     "a scene file's render line"},
-    {"study/study_scene.cpp", "' (expected -size, -shadows, -bounces, -weight, -shade_back, -grid)",
-     "a scene file's render line"},
-    {"study/study_scene.cpp", "render line: missing -size W H", "a scene file's render line"},
     {"study/study_scene.cpp", "no '# render: -size W H' line and no {size} given", "a scene file's render line"},
+    {"scene/render_settings.cpp", "-size", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-shadows", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-shade_back", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-bounces", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-weight", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-grid", "render-line keyword (scene file format)"},
+    {"scene/render_settings.cpp", "-size must be positive", "a scene file's render line"},
+    {"scene/render_settings.cpp", "-bounces must be in 0..", "a scene file's render line"},
+    {"scene/render_settings.cpp", "-grid resolutions must be >= 0 (0 = automatic)", "a scene file's render line"},
+    {"scene/render_settings.cpp", "' (expected -size, -shadows, -bounces, -weight, -shade_back, -grid)",
+     "a scene file's render line"},
+    {"scene/render_settings.cpp", "missing -size W H", "a scene file's render line"},
     // File names of the contact images: <sampler>-spp<N>-<filter>-r<radius>-<mode>[-prefilter-<p>]-error.png.
     {"study/sweep/contact.cpp", "-spp", "part of an image file name"},
     {"study/sweep/contact.cpp", "-prefilter-", "part of an image file name"},

@@ -19,7 +19,6 @@
 #include "accel/aggregate.h"
 #include "render/tracer.h"
 #include "scene/scene.h"
-#include "study/study_scene.h"
 
 namespace aliaslab {
 namespace {
@@ -62,7 +61,7 @@ std::vector<std::string> sceneNames() {
 fs::path scenePath(const std::string& name) { return kScenes / (name + ".txt"); }
 
 /// The `# render:` lines of a scene file, read here independently of
-/// readRenderLine(): each as its list of tokens after "# render:".
+/// the scene parser (Scene::render): each as its list of tokens after "# render:".
 std::vector<std::vector<std::string>> renderLines(const fs::path& path) {
   std::vector<std::vector<std::string>> lines;
   std::ifstream in(path);
@@ -121,8 +120,8 @@ TEST_P(SceneFile, OpensWithCommentsAndHasOneRenderLineWithModestSize) {
     ASSERT_LT(k + arity.at(t[k]), t.size()) << t[k] << " needs " << arity.at(t[k]) << " values";
     for (int v = 1; v <= arity.at(t[k]); ++v) EXPECT_NO_THROW((void)std::stod(t[k + v])) << t[k];
   }
-  // The study tools read the same line the same way.
-  const RenderLine r = readRenderLine(path.string());
+  // The scene parser reads the same line the same way.
+  const RenderSettings r = parseScene(path.string()).render;
   EXPECT_TRUE(r.found);
   EXPECT_EQ(r.width, w);
   EXPECT_EQ(r.height, h);
@@ -141,11 +140,11 @@ TEST_P(SceneFile, EveryReferencedMeshExists) {
 
 TEST_P(SceneFile, TinyRenderIsFiniteNonNegativeAndFramesGeometry) {
   const fs::path path = scenePath(GetParam());
-  const RenderLine line = readRenderLine(path.string());
-  const int w = 24, h = std::max(1, static_cast<int>(std::lround(24.0 * line.height / line.width)));
   Scene scene = parseScene(path.string());
+  const RenderSettings& line = scene.render;
+  const int w = 24, h = std::max(1, static_cast<int>(std::lround(24.0 * line.height / line.width)));
   const auto aggregate = makeBruteForce(*scene.root);
-  const Tracer tracer(scene, *aggregate, line.options);
+  const Tracer tracer(scene, *aggregate, traceOptionsOf(line));
   int hits = 0;
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i) {
@@ -183,11 +182,11 @@ int comparePattern(const std::string& name, const std::function<double(double, d
   EXPECT_EQ(std::count(t.begin(), t.end(), "Transform"), 0) << "texture space must be world space";
   EXPECT_EQ(numberAfter(t, "direction", 3), -1.0);  // looking down -z at the plane z = 0
   const double cx = numberAfter(t, "center", 1), cy = numberAfter(t, "center", 2), size = numberAfter(t, "size");
-  const RenderLine line = readRenderLine(path.string());
-  const int w = line.width, h = line.height, side = std::max(w, h);
   Scene scene = parseScene(path.string());
+  const RenderSettings& line = scene.render;
+  const int w = line.width, h = line.height, side = std::max(w, h);
   const auto aggregate = makeBruteForce(*scene.root);
-  const Tracer tracer(scene, *aggregate, line.options);
+  const Tracer tracer(scene, *aggregate, traceOptionsOf(line));
   int compared = 0;
   double worst = 0;
   for (int j = 0; j < h; ++j)
@@ -208,7 +207,7 @@ TEST(PatternScenes, ZonePlatePixelsAreHalfPlusHalfSinOfKRSquared) {
   const double k = numberAfter(sceneTokens("zoneplate"), "frequency");
   const int n = comparePattern("zoneplate", [k](double x, double y) { return 0.5 + 0.5 * std::sin(k * (x * x + y * y)); },
                                1e-4);
-  const RenderLine line = readRenderLine(scenePath("zoneplate").string());
+  const RenderSettings line = parseScene(scenePath("zoneplate").string()).render;
   EXPECT_EQ(n, line.width * line.height);
 }
 
@@ -217,7 +216,7 @@ TEST(PatternScenes, ZonePlatePassesNyquistInsideTheFrame) {
   // 0.5 cycles/pixel at the frame corner (r = size / sqrt 2): it aliases.
   const auto t = sceneTokens("zoneplate");
   const double k = numberAfter(t, "frequency"), size = numberAfter(t, "size");
-  const RenderLine line = readRenderLine(scenePath("zoneplate").string());
+  const RenderSettings line = parseScene(scenePath("zoneplate").string()).render;
   const double pixel = size / std::max(line.width, line.height);
   const double cornerCyclesPerPixel = k * (size / std::sqrt(2.0)) / std::numbers::pi * pixel;
   const double edgeCyclesPerPixel = k * (size / 2) / std::numbers::pi * pixel;

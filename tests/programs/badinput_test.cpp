@@ -195,12 +195,15 @@ TEST(BadInputCorpus, HasAtLeastSixtyCasesWithUniqueNames) {
   for (const Case& c : cases) EXPECT_TRUE(names.insert(c.name).second) << c.name;
 }
 
-/// The line of the last token of `text` (comments skipped), counted independently of the parser.
+/// The line of the last token of `text` (comments skipped, but a `# render:` line is scene data, Scene::render),
+/// counted independently of the parser.
 int lastTokenLine(const std::string& text) {
   int line = 1, last = 1;
   bool comment = false;
-  for (char ch : text) {
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
     if (ch == '\n') ++line, comment = false;
+    else if (ch == '#' && !comment && text.compare(i, 9, "# render:") == 0) comment = true, last = line;
     else if (ch == '#') comment = true;
     else if (!comment && !std::isspace(static_cast<unsigned char>(ch))) last = line;
   }

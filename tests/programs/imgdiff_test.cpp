@@ -1,5 +1,5 @@
 // imgdiff's numbers against numpy on constructed images, and LDR-FLIP
-// (lib/measure/flip.h) against properties from Andersson et al. 2020.
+// (lib/measure/flip/flip.h) against properties from Andersson et al. 2020.
 #include "aliaslab_paths.h"
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 
 #include "core/cpu.h"
 #include "core/image.h"
-#include "measure/flip.h"
+#include "measure/flip/flip.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;

@@ -180,7 +180,7 @@ TEST_F(RaytracerTest, RenderFilterShowsTheCutGaussianThatIsUsed) {
                        "-render_filter " + path("g.png") + " 20");
   ASSERT_EQ(r.code, 0) << r.err;
   const Image g = readImage(path("g.png"));
-  const int band = 34;  // colour bar band below the 181 x 181 picture (visualize.h kColorBarHeight)
+  const int band = 34;  // colour bar band below the 181 x 181 picture (core/picture_kit.h kColorBarHeight)
   ASSERT_EQ(g.height(), 181 + band);
   // centre (4.5, 4.5) is image pixel (90, 90): full weight, pure red
   expectColor(g, 90 + 1, band + 90 + 1, Color(1, 0, 0), 0.05f);
@@ -194,7 +194,7 @@ TEST_F(RaytracerTest, RenderFilterShowsTheCutGaussianThatIsUsed) {
 // One filter dialect (issue 44): --filter gaussian is the studies' Gaussian, sigma = radius / 3 at any radius; the
 // course's fixed-sigma Gaussian is --filter course-gaussian; the classic -gaussian_filter keeps the course's meaning.
 TEST_F(RaytracerTest, FilterGaussianIsTheStudiesAndCourseGaussianTheCourses) {
-  const int band = 34;  // colour bar band below the 181 x 181 picture (visualize.h kColorBarHeight)
+  const int band = 34;  // colour bar band below the 181 x 181 picture (core/picture_kit.h kColorBarHeight)
   // green = 1 - sqrt(w) for a positive weight w (peak 1), as in RenderFilterShowsTheCutGaussianThatIsUsed
   auto green = [](float dx, float dy, float sigma) {
     return 1 - std::sqrt(std::exp(-(dx * dx + dy * dy) / (2 * sigma * sigma)));

@@ -136,7 +136,7 @@ std::string referenceManifest(const StudyScene& scene, const ReferenceSet& set,
   Manifest m;
   m.head = {{"scene", scene.stem}, {"scene_path", manifestScenePath(scene.path)},
             number("width", std::to_string(scene.width)), number("height", std::to_string(scene.height)),
-            {"tracing", describeTraceOptions(scene.line.options)}};
+            {"tracing", describeTraceOptions(scene.options)}};
   if (scene.filmOffset[0] != 0 || scene.filmOffset[1] != 0)  // a shifted camera (study/sweep/alignment.h)
     m.head.push_back(number("film_offset", "[" + formatReal(scene.filmOffset[0]) + ", " +
                                                formatReal(scene.filmOffset[1]) + "]"));

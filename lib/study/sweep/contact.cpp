@@ -13,7 +13,7 @@
 
 #include "core/error.h"
 #include "core/format.h"
-#include "film/visualize.h"
+#include "core/picture_kit.h"
 
 namespace aliaslab {
 

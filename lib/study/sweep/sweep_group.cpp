@@ -5,7 +5,7 @@
 
 #include "core/phase_timer.h"
 #include "film/film.h"
-#include "render/adaptive.h"
+#include "render/adaptive/adaptive.h"
 #include "render/render.h"
 #include "render/sample_source.h"
 

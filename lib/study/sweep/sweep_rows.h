@@ -19,7 +19,7 @@
 #include "core/image.h"
 #include "study/config.h"
 #include "study/records/csv.h"
-#include "measure/flip.h"
+#include "measure/flip/flip.h"
 #include "measure/spectrum.h"
 #include "study/sweep/row_measure.h"
 #include "study/study_scene.h"

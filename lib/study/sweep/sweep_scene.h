@@ -14,7 +14,7 @@
 
 #include "core/stopwatch.h"
 #include "study/config.h"
-#include "measure/flip.h"
+#include "measure/flip/flip.h"
 #include "study/reference/reference.h"
 #include "study/study_scene.h"
 #include "study/sweep/sweep_rows.h"

@@ -1,5 +1,5 @@
-// Issue 31: core/files.h's checks of what a path is, whole writes with a true reason, the memory limit that
-// applies, and text written through to a pipe (/dev/stdout when stdout is a pipe).
+// Issue 31: core/files.h's checks of what a path is, whole writes with a true reason, text written through to a
+// pipe (/dev/stdout when stdout is a pipe), and the memory limit that applies (core/memory_limit.h).
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <sys/resource.h>
@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "core/files.h"
+#include "core/memory_limit.h"
 #include "support/scratch_dir.h"
 
 namespace fs = std::filesystem;

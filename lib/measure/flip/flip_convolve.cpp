@@ -1,0 +1,100 @@
+// The separable convolutions of FLIP (flip.h convolveClamped; flip_planes.h stage 1): exact textbook sums,
+// the same bits on the SSE2 and the AVX2 path.
+#include <algorithm>
+#include <stdexcept>
+#include <vector>
+
+#include "core/cpu.h"
+#include "measure/flip/flip.h"
+#include "measure/flip/flip_planes.h"
+
+// 256-bit vectors are passed only between functions inlined into one built for AVX2 (GCC's -Wpsabi note).
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace aliaslab {
+namespace {
+
+// dst[x] = sum_k c[k] src[k][x] for x in [0, n), each sum started at 0 and taken in the order of k (the
+// textbook loop's operations: a multiply, then an add, per tap). Blocks of 4 vectors of x stay in registers
+// across the taps; 2 lanes per SSE2 vector, 4 per AVX one where the CPU has AVX2 (chosen at run time, built
+// without FMA, so nothing is contracted): the same IEEE operations per element on either path, so the same
+// bits.
+using D2 = double __attribute__((vector_size(16)));
+using D4 = double __attribute__((vector_size(32)));
+template <class V>
+[[gnu::always_inline]] inline V load(const double* p) {
+  V v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+template <class V>
+[[gnu::always_inline]] inline void weightedSum(double* dst, const double* const* src, const double* c, int taps,
+                                               int n) {
+  constexpr int L = sizeof(V) / sizeof(double), B = 4 * L;
+  int x = 0;
+  for (; x + B <= n; x += B) {
+    V a0 = {}, a1 = {}, a2 = {}, a3 = {};
+    for (int k = 0; k < taps; ++k) {
+      V ck;
+      for (int l = 0; l < L; ++l) ck[l] = c[k];
+      const double* p = src[k] + x;
+      a0 += ck * load<V>(p), a1 += ck * load<V>(p + L), a2 += ck * load<V>(p + 2 * L), a3 += ck * load<V>(p + 3 * L);
+    }
+    __builtin_memcpy(dst + x, &a0, sizeof a0), __builtin_memcpy(dst + x + L, &a1, sizeof a1);
+    __builtin_memcpy(dst + x + 2 * L, &a2, sizeof a2), __builtin_memcpy(dst + x + 3 * L, &a3, sizeof a3);
+  }
+  for (; x < n; ++x) {
+    double sum = 0;
+    for (int k = 0; k < taps; ++k) sum += c[k] * src[k][x];
+    dst[x] = sum;
+  }
+}
+void weightedSumSse2(double* dst, const double* const* src, const double* c, int taps, int n) {
+  weightedSum<D2>(dst, src, c, taps, n);
+}
+[[gnu::target("avx2")]] void weightedSumAvx(double* dst, const double* const* src, const double* c, int taps, int n) {
+  weightedSum<D4>(dst, src, c, taps, n);
+}
+void weightedRows(double* dst, const double* const* src, const double* c, int taps, int n) {
+  (cpuFeatures().avx2 ? weightedSumAvx : weightedSumSse2)(dst, src, c, taps, n);
+}
+
+/// Separable convolution of a w x h plane with kernels kx (along x) and ky (along y), each of odd length,
+/// edges clamped: convolveY(convolveX(in, kx), ky). The same sums, in the same order of k, as the textbook
+/// loop with clamped indices: a row is first copied with its edge values repeated r times on either side, so
+/// every pixel (border ones too) is one weightedRows sum over k = -r .. r in order, starting from 0.
+}  // namespace
+
+std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx) {
+  const int rx = static_cast<int>(kx.size()) / 2;
+  std::vector<double> out(in.size()), padded(static_cast<size_t>(w) + 2 * rx);
+  std::vector<const double*> taps(2 * rx + 1);
+  for (int k = 0; k <= 2 * rx; ++k) taps[k] = padded.data() + k;
+  for (int y = 0; y < h; ++y) {
+    const double* row = in.data() + static_cast<size_t>(y) * w;
+    for (int i = 0; i < w + 2 * rx; ++i) padded[i] = row[std::clamp(i - rx, 0, w - 1)];
+    weightedRows(out.data() + static_cast<size_t>(y) * w, taps.data(), kx.data(), 2 * rx + 1, w);
+  }
+  return out;
+}
+
+std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky) {
+  const int ry = static_cast<int>(ky.size()) / 2;
+  std::vector<double> out(in.size());
+  std::vector<const double*> rows(2 * ry + 1);
+  for (int y = 0; y < h; ++y) {
+    for (int k = -ry; k <= ry; ++k) rows[k + ry] = in.data() + static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w;
+    weightedRows(out.data() + static_cast<size_t>(y) * w, rows.data(), ky.data(), 2 * ry + 1, w);
+  }
+  return out;
+}
+
+
+std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                                    const std::vector<double>& ky) {
+  if (kx.size() % 2 == 0 || ky.size() % 2 == 0 || in.size() != static_cast<size_t>(w) * h)
+    throw std::invalid_argument("convolveClamped: kernels of odd length and a w x h plane expected");
+  return convolveY(convolveX(in, w, h, kx), w, h, ky);
+}
+
+}  // namespace aliaslab
