@@ -6,9 +6,9 @@
 // (guarded()) and raised as a Python exception whose message names the
 // argument in Python's terms: OptionError (a bad argument) and ParseError
 // (a bad scene) as ValueError, a missing file as FileNotFoundError, other
-// file errors as OSError, std::bad_alloc as MemoryError, anything else as
-// RuntimeError. Nothing escapes as a C++ exception, so the interpreter
-// survives every bad call.
+// file errors as OSError, a Python value of the wrong type as TypeError,
+// std::bad_alloc as MemoryError, anything else as RuntimeError. Nothing
+// escapes as a C++ exception, so the interpreter survives every bad call.
 #pragma once
 #include <functional>
 #include <string>

@@ -37,6 +37,8 @@ py::object guarded(const std::function<py::object()>& body) {
     raise(PyExc_OSError, e.what());
   } catch (const InputError& e) {
     raise(PyExc_ValueError, kPython.message(e));
+  } catch (const py::cast_error& e) {
+    raise(PyExc_TypeError, std::string("an argument of the wrong type: ") + e.what());
   } catch (const std::bad_alloc&) {
     raise(PyExc_MemoryError, "out of memory: give a smaller size, fewer samples per pixel or fewer threads");
   } catch (const std::exception& e) {

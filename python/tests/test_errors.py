@@ -35,6 +35,7 @@ class BadArguments(unittest.TestCase):
         self.raises(ValueError, "size", aliaslab.render, SCENE, size=(0, 9))
         self.raises(ValueError, "spp", aliaslab.reference, SCENE, spp=3)
         self.raises(ValueError, "reconstruction", aliaslab.render, SCENE, reconstruction="nosuch")
+        self.raises(TypeError, "type", aliaslab.filter_eval, "tent", "wide", 0.0, 0.0)
 
     def test_the_interpreter_survives(self):
         script = ("import aliaslab\n"
