@@ -3,7 +3,7 @@
 Run from the repository root with Debian's /usr/bin/python3. A sentence of the page in three lines:
 
     from analysis.aliaslab_analysis import api
-    df, notes = api.load_study("results/presented/study.csv")
+    df, notes = api.load_study(api.study_path("results/presented"))  # study.csv or study.csv.gz
     api.answer(df).query("scope == 'all' and verdict == 'equivalent'")
 
 Every function here is the one the page itself calls (io, stats and findings layers; this module imports
