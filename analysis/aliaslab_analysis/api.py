@@ -4,7 +4,7 @@ Run from the repository root with Debian's /usr/bin/python3. A sentence of the p
 
     from analysis.aliaslab_analysis import api
     df, notes = api.load_study(api.study_path("results/presented"))  # study.csv or study.csv.gz
-    api.answer(df).query("scope == 'all' and verdict == 'equivalent'")
+    api.answer(df).query("scope == 'all' and verdict != 'worse'")  # the contenders at each spp
 
 Every function here is the one the page itself calls (io, stats and findings layers; this module imports
 nothing above findings, analysis/tests/test_layers.py); it adds names and docstrings, never another rule.
