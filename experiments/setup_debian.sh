@@ -6,6 +6,7 @@
 # cluster (their services stay down without /etc/slurm/slurm.conf).
 # chromium, chromium-driver and python3-selenium drive the page in a real browser
 # (tests/browser); python3-openimageio reads the images there independently.
+# python3-dev and pybind11-dev build the Python module (python/, docs/python.md).
 set -euo pipefail
 
 packages=(
@@ -16,6 +17,7 @@ packages=(
   parallel clang libclang-rt-14-dev
   munge slurmctld slurmd slurm-client
   chromium chromium-driver python3-selenium python3-openimageio python3-pil
+  python3-dev pybind11-dev
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -10,17 +10,22 @@
 //   points_<sampler>_<N>.png       the set of pixel (0, 0)
 //   periodogram_<sampler>_<N>.png  mean 2-D periodogram, DC at the centre,
 //                  grey = 0.5 + 0.25 log2 P (P = 1, white noise, is mid-grey)
+// --dump FILE also writes every point measured, as CSV sampler,n,px,py,k,x,y (the set of pixel (px, py), point
+// k at (x, y) in [0,1)^2, %.9g: the floats exactly), e.g. for the Python module's test of points().
 // The charts spectra.png and discrepancy.png are drawn from the CSVs by
 // `/usr/bin/python3 -m analysis pointsets` (the command is printed at the end).
 #include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <iostream>
+#include <sstream>
+#include <vector>
 
 #include "common/cli.h"
 #include "common/front_end.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/format.h"
 #include "measure/pointset_study.h"
 #include "sampling/sampler.h"
 #include "study/validate.h"
@@ -31,6 +36,24 @@ using namespace aliaslab;
 namespace {
 // The library's keys in this program's flags.
 const FrontEnd kPointsets{"pointsets", {{"sampler", "--samplers"}, {"spp", "--counts"}, {"out", "--out"}, {"threads", "--threads"}}};
+
+/// The --dump table: every point of every set the study measures (measurePointSets' pixels (k mod 8, k / 8)).
+std::string pointDump(const PointSetStudy& p) {
+  std::ostringstream os;
+  os << "sampler,n,px,py,k,x,y\n";
+  for (const auto& name : p.samplers)
+    for (int n : p.counts) {
+      const auto sampler = makeSampler(name, n, p.seed);
+      std::vector<Vec2> pts(n);
+      for (int set = 0; set < p.sets; ++set) {
+        sampler->generate(set % 8, set / 8, pts.data());
+        for (int k = 0; k < n; ++k)
+          os << name << ',' << n << ',' << set % 8 << ',' << set / 8 << ',' << k << ',' << formatNumber(pts[k].x(), "%.9g")
+             << ',' << formatNumber(pts[k].y(), "%.9g") << '\n';
+      }
+    }
+  return os.str();
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -49,6 +72,8 @@ int main(int argc, char** argv) {
   app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
   app.add_option("--samplers", p.samplers, "Samplers (default: all)")->delimiter(',');
   app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
+  std::string dump;
+  app.add_option("--dump", dump, "Also write every point measured to this CSV (sampler,n,px,py,k,x,y)");
   app.add_flag("--no-chart")
       ->description("Ignored, kept for old scripts: the charts are drawn by `python3 -m analysis pointsets`");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
@@ -61,11 +86,13 @@ int main(int argc, char** argv) {
         makeSampler(s, n, p.seed);
     if (p.threads < 0) throw OptionError("--threads", "must be >= 0, found " + std::to_string(p.threads));
     requireOutputFolders({{out, "out"}});
+    if (!dump.empty() && fs::is_directory(dump)) throw OptionError("--dump", "'" + dump + "' is a folder; give a CSV file name");
 
     // Every (sampler, N) measured (its pictures written), then the tables.
     const auto stats = measurePointSets(p, out);
     writeTextFile((fs::path(out) / "pointsets.csv").string(), pointSetTableCsv(stats, p.sets));
     writeTextFile((fs::path(out) / "spectra.csv").string(), pointSetSpectraCsv(stats, p.sets));
+    if (!dump.empty()) writeTextFile(dump, pointDump(p));
 
     std::cout << "wrote " << out << "/pointsets.csv, spectra.csv and images; the charts, from the repository root:\n"
               << "  /usr/bin/python3 -m analysis pointsets " << out << " --out " << out << "\n";

@@ -197,22 +197,9 @@ class RenderProgress {
 }  // namespace
 
 RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int width, int height, int threads) {
-  RenderedImage out;
-  const bool importance = plan.filter && plan.mode == ReconMode::ImportanceSampled;
   auto state = std::make_shared<RenderProgress>();
   const Progress progress = [state](int done, int total) { (*state)(done, total); };
-  out.samples = importance ? plan.source->traceImportance(tracer, *plan.filter, width, height, threads, progress)
-                           : plan.source->trace(tracer, width, height, threads, progress);
-  for (const FilmSample& s : out.samples.samples())
-    if (!std::isfinite(s.L[0]) || !std::isfinite(s.L[1]) || !std::isfinite(s.L[2])) ++out.nonFiniteSamples;
-  if (plan.filter) {
-    out.image = reconstruct(out.samples, *plan.filter, plan.mode, threads).image;
-  } else {
-    out.image = Image(width, height);
-    for (int j = 0; j < height; ++j)
-      for (int i = 0; i < width; ++i) out.image.set(i, j, out.samples.pixel(i, j)[0].L);
-  }
-  return out;
+  return aliaslab::renderImage(tracer, *plan.source, plan.filter.get(), plan.mode, width, height, threads, progress);
 }
 
 Image renderSamplesImage(const RenderedImage& rendered, const RaytracerOptions& o) {

@@ -21,6 +21,7 @@
 
 #include "film/film.h"
 #include "options.h"
+#include "render/render_image.h"
 #include "render/sample_source.h"
 #include "render/tracer.h"
 
@@ -38,13 +39,8 @@ struct SamplingPlan {
 /// Resolves and checks the sampling options; throws OptionError naming the flag.
 SamplingPlan makeSamplingPlan(const CLI::App& app, const RaytracerOptions& o);
 
-struct RenderedImage {
-  Image image;
-  SampleBuffer samples;
-  size_t nonFiniteSamples = 0;  ///< samples whose radiance is NaN or infinite (a filter leaves them out)
-};
-
-/// Traces and reconstructs the colour image (deterministic for any thread count).
+/// Traces and reconstructs the colour image (render/render_image.h, with a progress line on stderr for long
+/// renders; deterministic for any thread count).
 RenderedImage renderImage(const Tracer& tracer, const SamplingPlan& plan, int width, int height, int threads);
 
 /// The classic -render_samples picture of the traced samples.
