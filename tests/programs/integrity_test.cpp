@@ -27,6 +27,7 @@
 #include "support/scratch_dir.h"
 #include "study/records/csv.h"
 #include "study/records/lock.h"
+#include "study/records/spectrum_key.h"
 #include "study/reference/reference.h"
 
 namespace fs = std::filesystem;
@@ -190,9 +191,7 @@ TEST(Integrity, MergeRefusesEveryDamagedShardNamingFileAndLine) {
   write("s.shard-1-of-2.csv", csvHeader() + "\n");
   {  // with that row's spectra (a merge checks them: tests/programs/spectra_integrity_test.cpp)
     const auto g = splitCsvLine(good.substr(l2, good.find('\n', l2) - l2));
-    std::string prefix;
-    for (const char* c : {"scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"})
-      prefix += g[csvColumn(c)] + ',';
+    const std::string prefix = spectrumKeyOfCsvRow(g) + ',';  // its spectrum lines start with its key
     std::istringstream all(readText((d / "o" / "spectra" / "sphere_triangle.csv").string()));
     std::string text, l;
     for (bool header = true; std::getline(all, l); header = false)

@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "study/config.h"
 #include "study/records/csv.h"
+#include "study/records/spectrum_key.h"
 #include "study/presets.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
@@ -44,13 +45,8 @@ int run(const std::string& args, std::string* output = nullptr) {
 size_t col(const std::string& name) { return csvColumn(name); }
 double num(const std::vector<std::string>& f, const std::string& name) { return std::stod(f[col(name)]); }
 
-// A configuration's identity without its target.
-std::string configuration(const std::vector<std::string>& f) {
-  std::string k;
-  for (const char* c : {"scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"})
-    k += f[col(c)] + "|";
-  return k;
-}
+// A configuration's identity without its target: the key of its spectra.
+std::string configuration(const std::vector<std::string>& f) { return spectrumKeyOfCsvRow(f); }
 
 // The CSV's rows (fields) with the timing columns blanked.
 std::vector<std::vector<std::string>> rows(const std::string& path) {
@@ -106,7 +102,7 @@ TEST(SweepTargets, OneRowPerConfigurationAndTargetWithTheTargetFreeColumnsRepeat
 
 TEST(SweepTargets, TheTermsOfEachTargetAndItsOwnColumns) {
   for (const auto& f : rows(targetCsv())) {
-    const std::string row = configuration(f) + f[col("target")];
+    const std::string row = configuration(f) + " target " + f[col("target")];
     // mse_area is the corrected mse against the area: the mse_target of the box:0.5 row.
     if (f[col("target")] == "box:0.5") {
       EXPECT_EQ(f[col("mse_target")], f[col("mse_area")]) << row;

@@ -28,6 +28,7 @@
 #include "study/records/merge.h"
 #include "study/validate.h"
 #include "study/records/csv.h"
+#include "study/records/spectrum_key.h"
 #include "filter/filter.h"
 #include "measure/metrics.h"
 #include "study/sweep/sweep.h"
@@ -238,6 +239,40 @@ TEST(SweepOutput, ReferenceManifestsPointAtTheCachedImages) {
     ++images;
   }
   EXPECT_EQ(images, 3);  // box 0.5, box 1, tent 1
+}
+
+// The Python reader (analysis/aliaslab_analysis/charts/spectra.py) names a configuration's spectra by the same key
+// as the library (study/records/spectrum_key.h): its KEY columns are spectrumKeyColumns(), and the configurations it
+// reads from the uninterrupted run's spectra, written as the library writes keys, are the study CSV rows' keys.
+TEST(SweepOutput, PythonReadsTheSpectrumKeyTheLibraryWrites) {
+  const fs::path dir = workDir() / "python_key";
+  fs::create_directories(dir / "spectra");
+  const std::string stem = fs::path(kScene).stem().string();
+  fs::copy_file(fullCsv(), dir / "study.csv", fs::copy_options::overwrite_existing);
+  fs::copy_file(workDir() / "spectra" / (stem + ".full.csv"), dir / "spectra" / (stem + ".csv"),
+                fs::copy_options::overwrite_existing);
+  const std::string code =
+      "import sys\n"
+      "from analysis.aliaslab_analysis.charts import spectra\n"
+      "print(','.join(spectra.KEY))\n"
+      "s = spectra.load(sys.argv[1])\n"
+      "for t in s[spectra.KEY].drop_duplicates().itertuples(index=False):\n"
+      "    print(','.join('%.9g' % v if k == 'radius' else str(v) for k, v in zip(spectra.KEY, t)))\n";
+  fs::create_directories(dir / "logs");
+  const auto r = aliaslab::testing::runProcess({"/usr/bin/python3", "-c", code, (dir / "study.csv").string()},
+                                               ALIASLAB_SOURCE_DIR, (dir / "logs").string());
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string columns, line;
+  std::getline(lines, columns);
+  std::string expected;
+  for (const std::string& c : spectrumKeyColumns()) expected += (expected.empty() ? "" : ",") + c;
+  EXPECT_EQ(columns, expected);
+  std::set<std::string> python, library;
+  while (std::getline(lines, line)) python.insert(line);
+  for (const std::string& l : readCsvLines(fullCsv())) library.insert(spectrumKeyOfCsvRow(splitCsvLine(l)));
+  EXPECT_EQ(library.size(), 12u);  // 4 groups x (box 0.5, box 1, tent 1)
+  EXPECT_EQ(python, library);
 }
 
 TEST(SweepReuse, TracerRunsOncePerSampleSetWhateverTheNumberOfFilters) {

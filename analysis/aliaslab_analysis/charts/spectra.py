@@ -18,8 +18,11 @@ from .figures import plt
 
 CUTOFF = 0.125  # cycles per pixel: lib/measure/spectrum.h kLowFrequencyCutoff
 NYQUIST = 0.5
-COLUMNS = ["scene", "sampler", "spp", "filter", "radius", "reconstruction", "kind", "bin", "frequency",
-           "power", "energy"]
+# The spectrum key: the columns that name a configuration's spectra, as lib/study/records/spectrum_key.h spells them
+# (the first columns of a spectrum line; tests/programs/sweep_test.cpp checks the two agree on a real sweep).
+KEY = ["scene", "sampler", "spp", "filter", "radius", "reconstruction", "prefilter"]
+# The columns a spectrum file must have (prefilter is absent from files older than the pre-filtering study).
+COLUMNS = [c for c in KEY if c != "prefilter"] + ["kind", "bin", "frequency", "power", "energy"]
 INDEPENDENT = ["random", "jittered", "stratified", "sobol", "halton"]  # preferred independent samplers
 
 
@@ -48,8 +51,7 @@ def load(study_csv):
         df["prefilter"] = "none"
     df["prefilter"] = df["prefilter"].fillna("none").astype(str)
     df["scene"] = df["scene"].astype(str)
-    return df.drop_duplicates(subset=["scene", "sampler", "spp", "filter", "radius", "reconstruction",
-                                      "prefilter", "kind", "bin"]).reset_index(drop=True)
+    return df.drop_duplicates(subset=KEY + ["kind", "bin"]).reset_index(drop=True)
 
 
 def common_method(spec):

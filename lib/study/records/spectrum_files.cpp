@@ -17,12 +17,17 @@
 #include "core/format.h"
 #include "core/gzip.h"
 #include "study/records/csv.h"
+#include "study/records/spectrum_key.h"
 #include "study/study_scene.h"  // readFileBytes
 
 namespace aliaslab {
 
 const std::string& spectrumCsvHeader() {
-  static const std::string h = "scene,sampler,spp,filter,radius,reconstruction,prefilter,kind,bin,frequency,power,energy";
+  static const std::string h = [] {
+    std::string columns;
+    for (const std::string& c : spectrumKeyColumns()) columns += c + ',';
+    return columns + "kind,bin,frequency,power,energy";
+  }();
   return h;
 }
 
@@ -143,15 +148,6 @@ std::string spectrumCsvPath(const std::string& studyCsv, const std::string& scen
   return (csv.parent_path() / "spectra" / (scene + stem + ".csv")).string();
 }
 
-std::string spectrumKeyOfCsvRow(const std::vector<std::string>& f) {
-  static const size_t cols[] = {csvColumn("scene"),  csvColumn("sampler"),        csvColumn("spp"),
-                                csvColumn("filter"), csvColumn("radius"),         csvColumn("reconstruction"),
-                                csvColumn("prefilter")};
-  std::string key;
-  for (size_t c : cols) key += (key.empty() ? "" : ",") + f[c];
-  return key;
-}
-
 namespace {
 const std::string kDamaged = ": the spectra are damaged or were never finished; rerun the sweep command that made "
                              "them (it measures the missing spectra again)";
@@ -176,12 +172,12 @@ std::map<std::string, std::map<std::string, std::string>> spectrumBlocks(const s
       if (comma == std::string::npos) break;
       a = comma + 1;
     }
-    if (f.size() != 12 || (f[7] != "error" && f[7] != "noise"))
+    const size_t kind = spectrumKeyColumns().size();  // the fields after the key: kind,bin,frequency,power,energy
+    if (f.size() != kind + 5 || (f[kind] != "error" && f[kind] != "noise"))
       throw FileError(path, "line " + std::to_string(lineNo) + ": not a spectrum line (" + std::to_string(f.size()) +
-                                " fields, expected 12 with kind error or noise)" + kDamaged);
-    std::string key = f[0];
-    for (int i = 1; i < 7; ++i) key += ',' + f[i];
-    bins[key][f[7]] += f[8] + ';';
+                                " fields, expected " + std::to_string(kind + 5) + " with kind error or noise)" +
+                                kDamaged);
+    bins[spectrumKeyOfLine(f)][f[kind]] += f[kind + 1] + ';';
   }
   return bins;
 }

@@ -45,9 +45,6 @@ std::vector<std::string> mergeSpectrumFiles(const std::string& out, const std::v
 /// Checks the spectra of every shard CSV of `inputs` (checkSpectrumFile for each scene of its rows). FileError.
 void checkShardSpectra(const std::vector<std::string>& inputs);
 
-/// The spectrum key fields of a configuration as its study CSV row gives them:
-/// "scene,sampler,spp,filter,radius,reconstruction,prefilter" (the first fields of its spectrum lines).
-std::string spectrumKeyOfCsvRow(const std::vector<std::string>& csvFields);
 
 /// Checks that the spectrum CSV `path` is whole and holds every configuration of `configurations` (spectrum key
 /// fields, spectrumKeyOfCsvRow): present, a regular file, not empty, the spectrum header, no cut last line,

@@ -19,6 +19,7 @@
 #include "study/sweep/group_writer.h"
 #include "study/records/lock.h"
 #include "study/records/spectrum_files.h"
+#include "study/records/spectrum_key.h"
 #include "study/sweep/sweep_group.h"
 #include "study/sweep/sweep_motion.h"
 #include "study/sweep/sweep_rows.h"

@@ -5,11 +5,11 @@
 #include <map>
 #include <utility>
 
-#include "core/format.h"
 #include "core/parallel.h"
 #include "filter/filter.h"
 #include "study/sweep/contact.h"
 #include "study/records/spectrum_files.h"
+#include "study/records/spectrum_key.h"
 
 namespace aliaslab {
 
@@ -126,10 +126,7 @@ void writeRows(const StudyConfig& config, const std::vector<std::vector<CsvRow>>
   for (size_t i = 0; i < rows.size(); ++i) {
     if (rows[i].empty()) continue;
     const CsvRow& r = rows[i].front();
-    byFile[spectrumCsvPath(csvPath(config), r.scene)].emplace_back(
-        r.scene + ',' + r.sampler + ',' + std::to_string(r.spp) + ',' + r.filter + ',' +
-            formatReal(r.radius) + ',' + r.reconstruction + ',' + r.prefilter,
-        &spectra[i]);
+    byFile[spectrumCsvPath(csvPath(config), r.scene)].emplace_back(spectrumKeyOfRow(r), &spectra[i]);
     all.insert(all.end(), rows[i].begin(), rows[i].end());
   }
   for (const auto& [path, lines] : byFile) {
