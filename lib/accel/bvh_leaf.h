@@ -84,11 +84,12 @@ struct PreparedRay {
 }
 
 /// watertightHit() for the triangles of a pack at once, as a lane mask: the
-/// same float operations in the same order per lane (so the same answers);
-/// a lane with an edge function exactly zero is decided by the scalar test
-/// (its double recomputation).
+/// same float operations in the same order per lane up to the edge functions u, v, w (so the same values);
+/// then, per lane: all three nonzero and not NaN (their product neither zero nor NaN, a test that may also
+/// flag a lane whose product underflows) -> the scalar test's answer is "inside" exactly when the three share
+/// a sign (their sum is then nonzero: same-signed floats cannot add to zero), read from the sign bits
+/// ((u ^ v) | (u ^ w)); a flagged lane is decided by the scalar test (its double recomputation), as before.
 [[gnu::always_inline]] inline int watertightHits(const PreparedRay& r, const TriPack& p, const Item* items) {
-  const __m128 zero = _mm_setzero_ps();
   auto shear = [&](const float (*v)[4], __m128& x, __m128& y) {
     const __m128 vz = _mm_sub_ps(_mm_load_ps(v[r.kz]), r.okz);
     x = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(v[r.kx]), r.okx), _mm_mul_ps(r.vsx, vz));
@@ -99,17 +100,15 @@ struct PreparedRay {
   const __m128 u = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
   const __m128 v = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
   const __m128 w = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
-  const __m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
-  const __m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
-  const __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(_mm_add_ps(_mm_add_ps(u, v), w), zero));
-  const __m128 edge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
+  const __m128 product = _mm_andnot_ps(_mm_set1_ps(-0.f), _mm_mul_ps(_mm_mul_ps(u, v), w));
   const int valid = (1 << p.n) - 1;
-  int mask = _mm_movemask_ps(ok) & valid;
-  int exact = _mm_movemask_ps(edge) & valid;
+  int exact = _mm_movemask_ps(_mm_cmpngt_ps(product, _mm_setzero_ps())) & valid;  // zero or NaN
+  const int mixed = _mm_movemask_ps(_mm_or_ps(_mm_xor_ps(u, v), _mm_xor_ps(u, w)));
+  int mask = ~mixed & ~exact & valid;
   while (exact) {
     const int l = __builtin_ctz(exact);
     exact &= exact - 1;
-    mask = watertightHit(r, items[p.item[l]]) ? (mask | (1 << l)) : (mask & ~(1 << l));
+    if (watertightHit(r, items[p.item[l]])) mask |= 1 << l;
   }
   return mask;
 }
