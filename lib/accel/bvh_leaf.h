@@ -42,7 +42,7 @@ struct PreparedRay {
   __m128 okx, oky, okz, vsx, vsy;  ///< origin along kx, ky, kz and the shears, broadcast (pack test)
   /// Vectorised (one division for the three reciprocals, one for both shears), the same bits per lane as
   /// the scalar 1 / d and d[kx] / d[kz]; directions below 1e-30 in magnitude are clamped to +-1e-30.
-  explicit PreparedRay(const Ray& r) : ray(&r) {
+  [[gnu::always_inline]] explicit PreparedRay(const Ray& r) : ray(&r) {
     const Vec3& d = r.direction;
     const __m128 dv = _mm_setr_ps(d[0], d[1], d[2], 1.f), ov = _mm_setr_ps(r.origin[0], r.origin[1], r.origin[2], 0.f);
     const __m128 signBit = _mm_set1_ps(-0.f), tiny = _mm_set1_ps(1e-30f);
@@ -56,8 +56,9 @@ struct PreparedRay {
     for (int a = 0; a < 3; ++a) negative[a] = (neg >> a) & 1;
     const Vec3 ad = d.cwiseAbs();
     kz = ad.x() > ad.y() ? (ad.x() > ad.z() ? 0 : 2) : (ad.y() > ad.z() ? 1 : 2);
-    kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0.f) std::swap(kx, ky);  // keep the winding
+    const int next = kz == 2 ? 0 : kz + 1, after = next == 2 ? 0 : next + 1;
+    const bool flip = d[kz] < 0.f;  // keep the winding: swap kx and ky (selects, not a branch)
+    kx = flip ? after : next, ky = flip ? next : after;
     const __m128 s = _mm_div_ps(_mm_setr_ps(d[kx], d[ky], 0.f, 0.f), _mm_set1_ps(d[kz]));
     sx = _mm_cvtss_f32(s), sy = _mm_cvtss_f32(_mm_shuffle_ps(s, s, 0x55));
     okx = _mm_set1_ps(r.origin[kx]), oky = _mm_set1_ps(r.origin[ky]), okz = _mm_set1_ps(r.origin[kz]);
