@@ -42,7 +42,7 @@ struct PreparedRay {
   __m128 okx, oky, okz, vsx, vsy;  ///< origin along kx, ky, kz and the shears, broadcast (pack test)
   /// Vectorised (one division for the three reciprocals, one for both shears), the same bits per lane as
   /// the scalar 1 / d and d[kx] / d[kz]; directions below 1e-30 in magnitude are clamped to +-1e-30.
-  explicit PreparedRay(const Ray& r) : ray(&r) {
+  [[gnu::always_inline]] explicit PreparedRay(const Ray& r) : ray(&r) {
     const Vec3& d = r.direction;
     const __m128 dv = _mm_setr_ps(d[0], d[1], d[2], 1.f), ov = _mm_setr_ps(r.origin[0], r.origin[1], r.origin[2], 0.f);
     const __m128 signBit = _mm_set1_ps(-0.f), tiny = _mm_set1_ps(1e-30f);
@@ -56,8 +56,9 @@ struct PreparedRay {
     for (int a = 0; a < 3; ++a) negative[a] = (neg >> a) & 1;
     const Vec3 ad = d.cwiseAbs();
     kz = ad.x() > ad.y() ? (ad.x() > ad.z() ? 0 : 2) : (ad.y() > ad.z() ? 1 : 2);
-    kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    if (d[kz] < 0.f) std::swap(kx, ky);  // keep the winding
+    const int next = kz == 2 ? 0 : kz + 1, after = next == 2 ? 0 : next + 1;
+    const bool flip = d[kz] < 0.f;  // keep the winding: swap kx and ky (selects, not a branch)
+    kx = flip ? after : next, ky = flip ? next : after;
     const __m128 s = _mm_div_ps(_mm_setr_ps(d[kx], d[ky], 0.f, 0.f), _mm_set1_ps(d[kz]));
     sx = _mm_cvtss_f32(s), sy = _mm_cvtss_f32(_mm_shuffle_ps(s, s, 0x55));
     okx = _mm_set1_ps(r.origin[kx]), oky = _mm_set1_ps(r.origin[ky]), okz = _mm_set1_ps(r.origin[kz]);
@@ -84,11 +85,12 @@ struct PreparedRay {
 }
 
 /// watertightHit() for the triangles of a pack at once, as a lane mask: the
-/// same float operations in the same order per lane (so the same answers);
-/// a lane with an edge function exactly zero is decided by the scalar test
-/// (its double recomputation).
+/// same float operations in the same order per lane up to the edge functions u, v, w (so the same values);
+/// then, per lane: all three nonzero and not NaN (their product neither zero nor NaN, a test that may also
+/// flag a lane whose product underflows) -> the scalar test's answer is "inside" exactly when the three share
+/// a sign (their sum is then nonzero: same-signed floats cannot add to zero), read from the sign bits
+/// ((u ^ v) | (u ^ w)); a flagged lane is decided by the scalar test (its double recomputation), as before.
 [[gnu::always_inline]] inline int watertightHits(const PreparedRay& r, const TriPack& p, const Item* items) {
-  const __m128 zero = _mm_setzero_ps();
   auto shear = [&](const float (*v)[4], __m128& x, __m128& y) {
     const __m128 vz = _mm_sub_ps(_mm_load_ps(v[r.kz]), r.okz);
     x = _mm_sub_ps(_mm_sub_ps(_mm_load_ps(v[r.kx]), r.okx), _mm_mul_ps(r.vsx, vz));
@@ -99,17 +101,15 @@ struct PreparedRay {
   const __m128 u = _mm_sub_ps(_mm_mul_ps(cx, by), _mm_mul_ps(cy, bx));
   const __m128 v = _mm_sub_ps(_mm_mul_ps(ax, cy), _mm_mul_ps(ay, cx));
   const __m128 w = _mm_sub_ps(_mm_mul_ps(bx, ay), _mm_mul_ps(by, ax));
-  const __m128 neg = _mm_or_ps(_mm_or_ps(_mm_cmplt_ps(u, zero), _mm_cmplt_ps(v, zero)), _mm_cmplt_ps(w, zero));
-  const __m128 pos = _mm_or_ps(_mm_or_ps(_mm_cmpgt_ps(u, zero), _mm_cmpgt_ps(v, zero)), _mm_cmpgt_ps(w, zero));
-  const __m128 ok = _mm_andnot_ps(_mm_and_ps(neg, pos), _mm_cmpneq_ps(_mm_add_ps(_mm_add_ps(u, v), w), zero));
-  const __m128 edge = _mm_or_ps(_mm_or_ps(_mm_cmpeq_ps(u, zero), _mm_cmpeq_ps(v, zero)), _mm_cmpeq_ps(w, zero));
+  const __m128 product = _mm_andnot_ps(_mm_set1_ps(-0.f), _mm_mul_ps(_mm_mul_ps(u, v), w));
   const int valid = (1 << p.n) - 1;
-  int mask = _mm_movemask_ps(ok) & valid;
-  int exact = _mm_movemask_ps(edge) & valid;
+  int exact = _mm_movemask_ps(_mm_cmpngt_ps(product, _mm_setzero_ps())) & valid;  // zero or NaN
+  const int mixed = _mm_movemask_ps(_mm_or_ps(_mm_xor_ps(u, v), _mm_xor_ps(u, w)));
+  int mask = ~mixed & ~exact & valid;
   while (exact) {
     const int l = __builtin_ctz(exact);
     exact &= exact - 1;
-    mask = watertightHit(r, items[p.item[l]]) ? (mask | (1 << l)) : (mask & ~(1 << l));
+    if (watertightHit(r, items[p.item[l]])) mask |= 1 << l;
   }
   return mask;
 }

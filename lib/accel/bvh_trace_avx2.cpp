@@ -44,10 +44,14 @@ struct Ray8 {
   return _mm256_movemask_ps(_mm256_cmp_ps(lo, hi, _CMP_LE_OQ));
 }
 
+/// The prepared ray out of line (bvh_leaf.h inlines its constructor, which the 4-wide traversals gain from):
+/// inlined into the 8-wide closest hit it made the fence's and reflective_refractive's queries 6-8 % slower.
+[[gnu::noinline]] PreparedRay prepare(const Ray& ray) { return PreparedRay(ray); }
+
 }  // namespace
 
 void closestHit8(const Bvh8View& bvh, const Ray& ray, float tmin, Hit& hit, int& best) {
-  const PreparedRay r(ray);
+  const PreparedRay r = prepare(ray);
   const Ray8 r8(r);
   const __m256 vtmin = _mm256_set1_ps(tmin);
   int tri = -1;
@@ -97,7 +101,7 @@ void closestHit8(const Bvh8View& bvh, const Ray& ray, float tmin, Hit& hit, int&
 }
 
 bool anyHit8(const Bvh8View& bvh, const Ray& ray, float tmin, float tmax) {
-  const PreparedRay r(ray);
+  const PreparedRay r = prepare(ray);
   const Ray8 r8(r);
   const __m256 vtmin = _mm256_set1_ps(tmin), vtmax = _mm256_set1_ps(tmax);
   int stack[kStack8];
