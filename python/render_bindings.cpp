@@ -11,9 +11,11 @@
 #include "bindings.h"
 #include "core/error.h"
 #include "core/files.h"
+#include "core/memory_limit.h"
 #include "filter/filter.h"
 #include "render/render_image.h"
-#include "study/reference.h"
+#include "study/filter_cache.h"
+#include "study/reference/reference.h"
 #include "study/study_scene.h"
 
 namespace aliaslab::python {
@@ -66,7 +68,7 @@ py::object render(const std::string& sceneFile, const std::string& sampler, int 
   requireMemory(double(w) * h * (double(pixelSpp) * sizeof(FilmSample) + 5 * 3 * sizeof(float)), "size",
                 "a " + std::to_string(w) + " x " + std::to_string(h) + " image at " + std::to_string(spp) +
                     " samples per pixel");
-  TraceOptions options = scene->line.options;  // the raytracer's tracer for these flags (experiments/raytracer)
+  TraceOptions options = scene->options;  // the raytracer's tracer for these flags (experiments/raytracer)
   options.footprintPixels = 1.f / std::sqrt(static_cast<float>(pixelSpp));
   const Tracer tracer(scene->scene, *scene->aggregate, options);
   RenderedImage r;
@@ -89,7 +91,8 @@ py::object reference(const std::string& sceneFile, const std::string& filterName
   if (threads < 0) throw OptionError("threads", "must be >= 0 (0: all cores), found " + std::to_string(threads));
   const double r = radius ? *radius : defaultFilterRadius(filterName);
   if (!std::isfinite(r)) throw OptionError("radius", "must be a finite number of pixels, found " + std::to_string(r));
-  makeFilter(filterName, static_cast<float>(r));  // "filter" / "radius", before any work
+  FilterCache filters;
+  const StudyFilter filter = filters.get({filterName, r});  // "filter" / "radius", before any work
   const std::unique_ptr<StudyScene> scene = sceneAt(sceneFile, size);
   requireMemory(referenceMemoryBytes(scene->width, scene->height, 1, o), "size",
                 "a reference of " + scene->stem + " at " + std::to_string(scene->width) + " x " +
@@ -97,7 +100,7 @@ py::object reference(const std::string& sceneFile, const std::string& filterName
   ReferenceSet set;
   {
     py::gil_scoped_release free;
-    set = renderReferences(*scene, {{filterName, r}}, o);
+    set = renderReferences(*scene, {filter}, o);
   }
   const ReferenceImage& image = set.images.at(0);
   py::dict out;
