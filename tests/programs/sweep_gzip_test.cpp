@@ -11,30 +11,22 @@
 
 #include "core/gzip.h"
 #include "study/records/csv.h"
-#include "support/run_process.h"
+#include "support/sweep_program.h"
 #include "support/scratch_dir.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
-const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
+const std::string kBin = aliaslab::testing::kSweepBin;
+const std::string kScene = aliaslab::testing::kZonePlate;
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_gzip_test"); }
 
-// 1 scene x 2 samplers x 2 spp = 4 groups of 3 rows; one thread, so shards and whole runs print the same threads.
-std::string tinyArgs() {
-  return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
-         "--radii 1 --seeds 4 --ref-spp 256 --target area --threads 1 --quiet --no-images --cache " +
-         (workDir() / "cache").string();
-}
-
-aliaslab::testing::ProcessResult run(const std::string& args) {
-  return aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
-}
-
-std::string slurp(const fs::path& p) { return aliaslab::testing::readText(p.string()); }
+// The tiny study on one thread, so shards and whole runs print the same threads.
+std::string tinyArgs() { return aliaslab::testing::tinySweepArgs(workDir(), 1); }
+aliaslab::testing::ProcessResult run(const std::string& args) { return aliaslab::testing::runSweep(args, workDir()); }
+std::string slurp(const fs::path& p) { return aliaslab::testing::fileBytes(p); }
 
 // What gzip(1) makes of a file (an independent decoder).
 std::string gunzip(const fs::path& p) {
