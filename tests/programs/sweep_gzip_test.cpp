@@ -18,9 +18,6 @@ using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kBin = aliaslab::testing::kSweepBin;
-const std::string kScene = aliaslab::testing::kZonePlate;
-
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_gzip_test"); }
 
 // The tiny study on one thread, so shards and whole runs print the same threads.
@@ -81,7 +78,7 @@ TEST(SweepGzip, AGzipCsvHoldsTheBytesOfThePlainOne) {
   EXPECT_EQ(text.substr(0, text.find('\n')), plain.substr(0, plain.find('\n')));
   EXPECT_EQ(withoutTiming(text), withoutTiming(plain));
   // The spectra of study.csv.gz are study.csv's: spectra/<scene>.csv, equal to the plain run's.
-  const std::string stem = fs::path(kScene).stem().string();
+  const std::string stem = fs::path(aliaslab::testing::kZonePlate).stem().string();
   EXPECT_EQ(slurp(workDir() / "gz" / "spectra" / (stem + ".csv")), slurp(workDir() / "plain" / "spectra" / (stem + ".csv")));
   // Writing a given CSV's rows to a .gz name (a merge of one file) gives exactly its bytes once gunzipped.
   const fs::path merged = workDir() / "one.csv.gz";
@@ -131,7 +128,8 @@ TEST(SweepGzip, KilledRunsResumeToTheSameRows) {
   const fs::path p = workDir() / "killed" / "study.csv.gz";
   const std::string args = tinyArgs() + " --out " + (workDir() / "killed").string() + " --csv " + p.string();
   for (const char* after : {"0.05", "0.1", "0.2"}) {
-    std::system(("timeout -s KILL " + std::string(after) + " " + kBin + " " + args + " > /dev/null 2>&1").c_str());
+    const std::string killed = "timeout -s KILL " + std::string(after) + " " + aliaslab::testing::kSweepBin;
+    std::system((killed + " " + args + " > /dev/null 2>&1").c_str());
     if (fs::exists(p)) EXPECT_NO_THROW(readCsvLines(p.string())) << "killed after " << after << " s";
   }
   ASSERT_EQ(run(args).exitCode, 0);
