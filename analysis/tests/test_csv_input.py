@@ -55,12 +55,16 @@ class CsvInput(unittest.TestCase):
         rows[3] = ",".join(rows[3].split(",")[:-4])
         self.refused(self.write("\r\n".join(rows)), "line 4", "fields")
 
-    def test_an_empty_required_value_is_refused(self):
+    def with_field(self, line, column, value):
+        """The synthetic study written with field `column` of line index `line` (0: the header) set to `value`."""
         rows = self.text.split("\r\n")
-        f = rows[2].split(",")
-        f[10] = ""  # mse
-        rows[2] = ",".join(f)
-        self.refused(self.write("\r\n".join(rows)), "line 3", "column mse is empty")
+        f = rows[line].split(",")
+        f[column] = value
+        rows[line] = ",".join(f)
+        return self.write("\r\n".join(rows))
+
+    def test_an_empty_required_value_is_refused(self):
+        self.refused(self.with_field(2, 10, ""), "line 3", "column mse is empty")  # column 10: mse
 
     def motion_csv(self, change=None, drop=None):
         """The synthetic study with the motion columns of a study with frames; `change(i, row)` edits data row i."""
@@ -94,11 +98,7 @@ class CsvInput(unittest.TestCase):
         self.assertTrue(df["shimmer"].isna().all())
 
     def test_a_non_finite_size_is_refused(self):
-        rows = self.text.split("\r\n")
-        f = rows[1].split(",")
-        f[4] = "inf"  # spp
-        rows[1] = ",".join(f)
-        self.refused(self.write("\r\n".join(rows)), "line 2", "column spp")
+        self.refused(self.with_field(1, 4, "inf"), "line 2", "column spp")  # column 4: spp
 
     def test_huge_finite_errors_are_noted_and_drawn_without_overflow(self):
         def huge(r):

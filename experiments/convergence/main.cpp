@@ -14,6 +14,7 @@
 
 #include "common/cli.h"
 #include "common/front_end.h"
+#include "common/sampler_study_options.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
@@ -33,19 +34,13 @@ int main(int argc, char** argv) {
   ConvergenceStudy p;
   std::string out = "results/convergence";  // output folder
   CLI::App app{"convergence: RMSE against N of every sampler on the analytic integrands, with fitted slopes (aliaslab)"};
-  setupCommandLine(app, "convergence");
-  app.add_option("--out", out, "Output folder")->capture_default_str();
+  addSamplerStudyOptions(app, "convergence", out, p);
   app.add_option("--realisations", p.realisations, "Independent sets per (sampler, N)")->capture_default_str()
       ->check(CLI::Range(2, 1 << 20));
   app.add_option("--max-n", p.maxN, "Largest N")->capture_default_str()->check(CLI::Range(16, 1 << 16));
   auto* fitMinOpt = app.add_option("--fit-min", p.fitMin, "Smallest N in the slope fit (at most --max-n / 2 by default)")
                         ->capture_default_str();
   app.add_option("--fit-max", p.fitMax, "Largest N in the slope fit")->capture_default_str();
-  app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
-  app.add_option("--samplers", p.samplers, "Samplers to run (default: all)")->delimiter(',');
-  app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
-  app.add_flag("--no-chart")
-      ->description("Ignored, kept for old scripts: the chart is drawn by `python3 -m analysis convergence`");
   if (const int rc = parseCommandLine(app, argc, argv, "convergence"); rc >= 0) return rc;
 
   return runFrontEnd(kConvergence, [&] {

@@ -23,6 +23,7 @@
 
 #include "common/cli.h"
 #include "common/front_end.h"
+#include "common/sampler_study_options.h"
 #include "core/error.h"
 #include "core/files.h"
 #include "core/format.h"
@@ -60,8 +61,7 @@ int main(int argc, char** argv) {
   PointSetStudy p;
   std::string out = "results/pointsets";  // output folder
   CLI::App app{"pointsets: discrepancy, minimum distance and power spectra of every sampler (aliaslab)"};
-  setupCommandLine(app, "pointsets");
-  app.add_option("--out", out, "Output folder")->capture_default_str();
+  addSamplerStudyOptions(app, "pointsets", out, p);
   app.add_option("--counts", p.counts, "Point counts")->delimiter(',')->capture_default_str()->check(CLI::Range(2, 1 << 16));
   app.add_option("--sets", p.sets, "Independent sets per (sampler, N)")
       ->capture_default_str()
@@ -69,13 +69,8 @@ int main(int argc, char** argv) {
   app.add_option("--extent", p.extent, "Periodogram half-width in units of sqrt(N)")
       ->capture_default_str()
       ->check(CLI::Range(0.5, 16.0));
-  app.add_option("--seed", p.seed, "Sampler seed")->check(kSeed)->capture_default_str();
-  app.add_option("--samplers", p.samplers, "Samplers (default: all)")->delimiter(',');
-  app.add_option("--threads", p.threads, "Threads (0 = all cores)")->capture_default_str();
   std::string dump;
   app.add_option("--dump", dump, "Also write every point measured to this CSV (sampler,n,px,py,k,x,y)");
-  app.add_flag("--no-chart")
-      ->description("Ignored, kept for old scripts: the charts are drawn by `python3 -m analysis pointsets`");
   if (const int rc = parseCommandLine(app, argc, argv, "pointsets"); rc >= 0) return rc;
 
   return runFrontEnd(kPointsets, [&] {

@@ -11,24 +11,19 @@
 #include "core/hash.h"
 #include "film/film.h"
 
+#include "bench_samples.h"
+
 namespace aliaslab {
 namespace {
 
 constexpr int kSize = 256, kSpp = 64;
 
+/// Hashed positions in each pixel.
 const SampleBuffer& samples() {
-  static const SampleBuffer b = [] {
-    SampleBuffer s(kSize, kSize, kSpp);
-    for (int j = 0; j < kSize; ++j)
-      for (int i = 0; i < kSize; ++i)
-        for (int k = 0; k < kSpp; ++k) {
-          FilmSample& f = s.pixel(i, j)[k];
-          f.x = i + toUnitFloat(hashWords(1, i, j, k, 0));
-          f.y = j + toUnitFloat(hashWords(1, i, j, k, 1));
-          f.L = Color(toUnitFloat(hashWords(1, i, j, k, 2)), toUnitFloat(hashWords(1, i, j, k, 3)), 0.5f);
-        }
-    return s;
-  }();
+  static const SampleBuffer b = benchSamples(kSize, kSpp, [](int i, int j, Vec2* u) {
+    for (int k = 0; k < kSpp; ++k)
+      u[k] = Vec2(toUnitFloat(hashWords(1, i, j, k, 0)), toUnitFloat(hashWords(1, i, j, k, 1)));
+  });
   return b;
 }
 

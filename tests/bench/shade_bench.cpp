@@ -36,6 +36,7 @@
 #include "geometry/primitives.h"
 #include "render/render.h"
 #include "sampling/sampler.h"
+#include "study/config.h"
 #include "study/study_scene.h"
 #ifdef ALIASLAB_HAVE_EMBREE
 #include <embree3/rtcore.h>
@@ -303,13 +304,8 @@ void shade(benchmark::State& state, const std::string& path) {
 }
 
 const bool registered = [] {
-  const std::filesystem::path dir = std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".txt") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files)
-    benchmark::RegisterBenchmark(("Shade/" + f.stem().string()).c_str(), shade, f.string())
+  for (const std::string& path : expandScenePaths({ALIASLAB_SOURCE_DIR "/scenes"}))  // sorted scenes/*.txt
+    benchmark::RegisterBenchmark(("Shade/" + std::filesystem::path(path).stem().string()).c_str(), shade, path)
         ->Unit(benchmark::kMillisecond)
         ->MeasureProcessCPUTime();
   return true;

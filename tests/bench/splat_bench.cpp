@@ -13,26 +13,18 @@
 #include "film/film_impl.h"
 #include "sampling/sampler.h"
 
+#include "bench_samples.h"
+
 namespace aliaslab {
 namespace {
 
 constexpr int kSize = 256, kSpp = 16;
 
+/// Sobol positions in each pixel.
 const SampleBuffer& samples() {
   static const SampleBuffer b = [] {
-    SampleBuffer s(kSize, kSize, kSpp);
     const auto sampler = makeSampler("sobol", kSpp, 7);
-    std::vector<Vec2> u(kSpp);
-    for (int j = 0; j < kSize; ++j)
-      for (int i = 0; i < kSize; ++i) {
-        sampler->generate(i, j, u.data());
-        for (int k = 0; k < kSpp; ++k) {
-          FilmSample& f = s.pixel(i, j)[k];
-          f.x = i + u[k].x(), f.y = j + u[k].y();
-          f.L = Color(toUnitFloat(hashWords(1, i, j, k, 2)), toUnitFloat(hashWords(1, i, j, k, 3)), 0.5f);
-        }
-      }
-    return s;
+    return benchSamples(kSize, kSpp, [&](int i, int j, Vec2* u) { sampler->generate(i, j, u); });
   }();
   return b;
 }

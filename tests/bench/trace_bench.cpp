@@ -30,6 +30,7 @@
 #include "geometry/primitives.h"
 #include "scene/light.h"
 #include "scene/scene.h"
+#include "study/config.h"
 #ifdef ALIASLAB_HAVE_EMBREE
 #include <embree3/rtcore.h>
 #endif
@@ -178,6 +179,7 @@ struct EmbreeScene {
   size_t triangles = 0;
   bool usable = false;
   Vec3 lo, hi;
+  RTCIntersectContext context;  ///< the default context (one thread)
 };
 
 EmbreeScene& embreeScene(const std::string& path) {
@@ -200,6 +202,7 @@ EmbreeScene& embreeScene(const std::string& path) {
     }
   }
   e.usable = true;
+  rtcInitIntersectContext(&e.context);
   e.device = rtcNewDevice("threads=1");
   e.scene = rtcNewScene(e.device);
   RTCGeometry geom = rtcNewGeometry(e.device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -221,16 +224,19 @@ EmbreeScene& embreeScene(const std::string& path) {
   return e;
 }
 
+/// The scene's Embree copy, or nullptr (the benchmark skipped) when it has non-triangle bounded primitives.
+EmbreeScene* usableEmbree(benchmark::State& state, const std::string& path) {
+  EmbreeScene& e = embreeScene(path);
+  if (!e.usable) state.SkipWithError("scene has non-triangle bounded primitives");
+  return e.usable ? &e : nullptr;
+}
+
 /// Closest hit with rtcIntersect1 when the scene's bounded primitives are all triangles.
 void traceEmbree(benchmark::State& state, const std::string& path) {
   Workload& w = workload(path);
-  EmbreeScene& e = embreeScene(path);
-  if (!e.usable) {
-    state.SkipWithError("scene has non-triangle bounded primitives");
-    return;
-  }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  EmbreeScene* found = usableEmbree(state, path);
+  if (!found) return;
+  EmbreeScene& e = *found;
   const size_t nt = e.triangles;
   // Whole-line rays (tmin = -inf) start far behind the scene instead
   size_t hits = 0, n = 0;
@@ -249,7 +255,7 @@ void traceEmbree(benchmark::State& state, const std::string& path) {
       rh.ray = {r.origin.x(), r.origin.y(), r.origin.z(), std::max(tmin, 0.f), r.direction.x(), r.direction.y(), r.direction.z(),
                 0.f, std::min(h.t, std::numeric_limits<float>::max()), 0xffffffffu, 0, 0};
       rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-      if (nt > 0) rtcIntersect1(e.scene, &context, &rh);
+      if (nt > 0) rtcIntersect1(e.scene, &e.context, &rh);
       hits += (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID || h.found());
       ++n;
     }
@@ -262,13 +268,9 @@ void traceEmbree(benchmark::State& state, const std::string& path) {
 /// Any hit with rtcOccluded1 on the same shadow rays (planes first, analytically).
 void occludedEmbree(benchmark::State& state, const std::string& path) {
   Workload& w = workload(path);
-  EmbreeScene& e = embreeScene(path);
-  if (!e.usable) {
-    state.SkipWithError("scene has non-triangle bounded primitives");
-    return;
-  }
-  RTCIntersectContext context;
-  rtcInitIntersectContext(&context);
+  EmbreeScene* found = usableEmbree(state, path);
+  if (!found) return;
+  EmbreeScene& e = *found;
   size_t blocked = 0, n = 0;
   for (auto _ : state)
     for (const ShadowRay& s : w.shadowRays) {
@@ -286,7 +288,7 @@ void occludedEmbree(benchmark::State& state, const std::string& path) {
         const Ray& r = s.ray;
         RTCRay ray{r.origin.x(), r.origin.y(), r.origin.z(), 0.f, r.direction.x(), r.direction.y(), r.direction.z(),
                    0.f, std::min(s.tmax, std::numeric_limits<float>::max()), 0xffffffffu, 0, 0};
-        rtcOccluded1(e.scene, &context, &ray);
+        rtcOccluded1(e.scene, &e.context, &ray);
         hit = ray.tfar < 0.f;
       }
       blocked += hit;
@@ -298,13 +300,8 @@ void occludedEmbree(benchmark::State& state, const std::string& path) {
 
 /// One benchmark per scene and method, named Trace/<method>/<scene>.
 const bool registered = [] {
-  const std::filesystem::path dir = std::filesystem::path(ALIASLAB_SOURCE_DIR) / "scenes";
-  std::vector<std::filesystem::path> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".txt") files.push_back(e.path());
-  std::sort(files.begin(), files.end());
-  for (const auto& f : files) {
-    const std::string name = f.stem().string(), path = f.string();
+  for (const std::string& path : expandScenePaths({ALIASLAB_SOURCE_DIR "/scenes"})) {  // sorted scenes/*.txt
+    const std::string name = std::filesystem::path(path).stem().string();
     auto add = [&](const std::string& what, auto fn, auto arg) {
       benchmark::RegisterBenchmark((what + "/" + name).c_str(), fn, path, arg)->Unit(benchmark::kMillisecond);
     };

@@ -149,9 +149,4 @@ void fuzzCli(const uint8_t* data, size_t size) {
 
 }  // namespace aliaslab::fuzz
 
-#ifndef ALIASLAB_FUZZ_NO_MAIN
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  aliaslab::fuzz::fuzzCli(data, size);
-  return 0;
-}
-#endif
+ALIASLAB_FUZZ_TARGET(aliaslab::fuzz::fuzzCli)

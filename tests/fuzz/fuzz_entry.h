@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -25,6 +26,26 @@ namespace aliaslab::fuzz {
 #endif
 }
 #define ALIASLAB_FUZZ_CHECK(cond) ((cond) ? void(0) : ::aliaslab::fuzz::fuzzCheckFailed(#cond))
+
+/// A target's libFuzzer entry point, calling `fn` on each input (none under ALIASLAB_FUZZ_NO_MAIN).
+#ifdef ALIASLAB_FUZZ_NO_MAIN
+#define ALIASLAB_FUZZ_TARGET(fn)
+#else
+#define ALIASLAB_FUZZ_TARGET(fn)                                            \
+  extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) { \
+    fn(data, size);                                                         \
+    return 0;                                                               \
+  }
+#endif
+
+/// A per-process file or folder under /dev/shm (a target's static), removed when the process ends.
+struct ScratchPath {
+  std::string path;
+  ~ScratchPath() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+};
 
 void fuzzScene(const uint8_t* data, size_t size);  ///< parseSceneText; meshes resolve in scenes/
 void fuzzObj(const uint8_t* data, size_t size);    ///< loadObj on the bytes as a file in /dev/shm

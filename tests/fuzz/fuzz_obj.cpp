@@ -11,14 +11,8 @@
 
 namespace aliaslab::fuzz {
 namespace {
-/// The per-process file, removed when the process ends.
-struct ScratchFile {
-  std::string path;
-  ~ScratchFile() { std::remove(path.c_str()); }
-};
-
 const std::string& objPath() {
-  static const ScratchFile file{"/dev/shm/aliaslab_fuzz_obj_" + std::to_string(::getpid()) + ".obj"};
+  static const ScratchPath file{"/dev/shm/aliaslab_fuzz_obj_" + std::to_string(::getpid()) + ".obj"};
   return file.path;
 }
 }  // namespace
@@ -41,9 +35,4 @@ void fuzzObj(const uint8_t* data, size_t size) {
 
 }  // namespace aliaslab::fuzz
 
-#ifndef ALIASLAB_FUZZ_NO_MAIN
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  aliaslab::fuzz::fuzzObj(data, size);
-  return 0;
-}
-#endif
+ALIASLAB_FUZZ_TARGET(aliaslab::fuzz::fuzzObj)

@@ -18,23 +18,14 @@
 
 namespace aliaslab::fuzz {
 namespace {
-/// A folder removed when the process ends.
-struct ScratchDir {
-  std::string path;
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
-
 const std::string& sceneBaseDir() {
   namespace fs = std::filesystem;
-  static const ScratchDir dir = [] {
+  static const ScratchPath dir = [] {
     const fs::path d = "/dev/shm/aliaslab_fuzz_scene_" + std::to_string(::getpid());
     fs::create_directories(d / "meshes");
     for (const auto& e : fs::directory_iterator(ALIASLAB_SOURCE_DIR "/scenes/meshes"))
       std::ofstream(d / "meshes" / e.path().filename()) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    return ScratchDir{d.string()};
+    return ScratchPath{d.string()};
   }();
   return dir.path;
 }
@@ -51,9 +42,4 @@ void fuzzScene(const uint8_t* data, size_t size) {
 
 }  // namespace aliaslab::fuzz
 
-#ifndef ALIASLAB_FUZZ_NO_MAIN
-extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-  aliaslab::fuzz::fuzzScene(data, size);
-  return 0;
-}
-#endif
+ALIASLAB_FUZZ_TARGET(aliaslab::fuzz::fuzzScene)

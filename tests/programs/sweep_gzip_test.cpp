@@ -11,30 +11,19 @@
 
 #include "core/gzip.h"
 #include "study/records/csv.h"
-#include "support/run_process.h"
+#include "support/sweep_program.h"
 #include "support/scratch_dir.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
-const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
-
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_gzip_test"); }
 
-// 1 scene x 2 samplers x 2 spp = 4 groups of 3 rows; one thread, so shards and whole runs print the same threads.
-std::string tinyArgs() {
-  return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
-         "--radii 1 --seeds 4 --ref-spp 256 --target area --threads 1 --quiet --no-images --cache " +
-         (workDir() / "cache").string();
-}
-
-aliaslab::testing::ProcessResult run(const std::string& args) {
-  return aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
-}
-
-std::string slurp(const fs::path& p) { return aliaslab::testing::readText(p.string()); }
+// The tiny study on one thread, so shards and whole runs print the same threads.
+std::string tinyArgs() { return aliaslab::testing::tinySweepArgs(workDir(), 1); }
+aliaslab::testing::ProcessResult run(const std::string& args) { return aliaslab::testing::runSweep(args, workDir()); }
+std::string slurp(const fs::path& p) { return aliaslab::testing::fileBytes(p); }
 
 // What gzip(1) makes of a file (an independent decoder).
 std::string gunzip(const fs::path& p) {
@@ -89,7 +78,7 @@ TEST(SweepGzip, AGzipCsvHoldsTheBytesOfThePlainOne) {
   EXPECT_EQ(text.substr(0, text.find('\n')), plain.substr(0, plain.find('\n')));
   EXPECT_EQ(withoutTiming(text), withoutTiming(plain));
   // The spectra of study.csv.gz are study.csv's: spectra/<scene>.csv, equal to the plain run's.
-  const std::string stem = fs::path(kScene).stem().string();
+  const std::string stem = fs::path(aliaslab::testing::kZonePlate).stem().string();
   EXPECT_EQ(slurp(workDir() / "gz" / "spectra" / (stem + ".csv")), slurp(workDir() / "plain" / "spectra" / (stem + ".csv")));
   // Writing a given CSV's rows to a .gz name (a merge of one file) gives exactly its bytes once gunzipped.
   const fs::path merged = workDir() / "one.csv.gz";
@@ -139,7 +128,8 @@ TEST(SweepGzip, KilledRunsResumeToTheSameRows) {
   const fs::path p = workDir() / "killed" / "study.csv.gz";
   const std::string args = tinyArgs() + " --out " + (workDir() / "killed").string() + " --csv " + p.string();
   for (const char* after : {"0.05", "0.1", "0.2"}) {
-    std::system(("timeout -s KILL " + std::string(after) + " " + kBin + " " + args + " > /dev/null 2>&1").c_str());
+    const std::string killed = "timeout -s KILL " + std::string(after) + " " + aliaslab::testing::kSweepBin;
+    std::system((killed + " " + args + " > /dev/null 2>&1").c_str());
     if (fs::exists(p)) EXPECT_NO_THROW(readCsvLines(p.string())) << "killed after " << after << " s";
   }
   ASSERT_EQ(run(args).exitCode, 0);

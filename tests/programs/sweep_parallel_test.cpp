@@ -15,6 +15,7 @@
 #include <sstream>
 
 #include "support/scratch_dir.h"
+#include "support/sweep_program.h"
 #include "core/parallel.h"
 #include "core/stopwatch.h"
 #include "study/config.h"
@@ -28,7 +29,7 @@ using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
+const std::string kScene = aliaslab::testing::kZonePlate;
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_parallel_test"); }
 
@@ -55,12 +56,7 @@ StudyConfig tinyStudy(int threads, const std::string& name) {
   return c;
 }
 
-std::string readBytes(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string readBytes(const fs::path& p) { return aliaslab::testing::fileBytes(p); }
 
 // Everything a run wrote, file by file (relative path -> content), with the CSV's timing and threads
 // columns blanked.

@@ -24,20 +24,19 @@
 #include "study/presets.h"
 #include "filter/filter.h"
 #include "sampling/sampler.h"
-#include "support/run_process.h"
+#include "support/sweep_program.h"
 #include "support/scratch_dir.h"
 
 using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
-const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
+const std::string kScene = aliaslab::testing::kZonePlate;
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_targets_test"); }
 
 int run(const std::string& args, std::string* output = nullptr) {
-  const auto r = aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
+  const auto r = aliaslab::testing::runSweep(args, workDir());
   if (output) *output = r.out;
   return r.exitCode;
 }

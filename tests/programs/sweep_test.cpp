@@ -19,7 +19,7 @@
 #include <set>
 #include <sstream>
 
-#include "support/run_process.h"
+#include "support/sweep_program.h"
 #include "support/scratch_dir.h"
 #include "core/error.h"
 #include "core/image.h"
@@ -37,22 +37,16 @@ using namespace aliaslab;
 namespace fs = std::filesystem;
 
 namespace {
-const std::string kBin = std::string(ALIASLAB_BIN_DIR) + "/sweep";
-const std::string kScene = std::string(ALIASLAB_SOURCE_DIR) + "/scenes/zoneplate.txt";
+const std::string kBin = aliaslab::testing::kSweepBin;
+const std::string kScene = aliaslab::testing::kZonePlate;
 
 const fs::path& workDir() { return aliaslab::testing::scratchDir("aliaslab_sweep_test"); }
 
-// The common tiny study: 1 scene x 2 samplers x 2 spp = 4 groups, 3 filter/radius pairs each, one target
-// (several targets: sweep_targets_test.cpp).
-std::string tinyArgs(int threads = 2) {
-  return "--scenes " + kScene + " --size 24 24 --samplers uniform,jittered --spp 4,16 --filters box,tent " +
-         "--radii 1 --seeds 4 --ref-spp 256 --target area --threads " + std::to_string(threads) +
-         " --quiet --no-images --cache " +
-         (workDir() / "cache").string();
-}
+// The common tiny study (several targets: sweep_targets_test.cpp).
+std::string tinyArgs(int threads = 2) { return aliaslab::testing::tinySweepArgs(workDir(), threads); }
 
 int run(const std::string& args, std::string* output = nullptr) {
-  const auto r = aliaslab::testing::runShell(kBin + " " + args, (workDir() / "last_run.log").string());
+  const auto r = aliaslab::testing::runSweep(args, workDir());
   if (output) *output = r.out;
   return r.exitCode;
 }
@@ -83,14 +77,9 @@ std::vector<std::string> withoutThreads(std::vector<std::string> rows) {
   return rows;
 }
 
-// One uninterrupted run, shared by the tests.
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string slurp(const fs::path& p) { return aliaslab::testing::fileBytes(p); }
 
+// One uninterrupted run, shared by the tests.
 const std::string& fullCsv() {
   static const std::string path = [] {
     const std::string p = (workDir() / "full.csv").string();

@@ -3,18 +3,16 @@ import argparse
 import os
 import sys
 
-from ..io import errors, text_file
+from ..io import errors
 from ..charts import figures
 from .page import build_report, shown_path
+from .studies import csv_of
 from .tables import tables
 
 
 def default_study(results):
-    for p in (os.path.join(results, "study", "study.csv"), os.path.join(results, "study.csv")):
-        p = text_file.existing(p)  # or study.csv.gz
-        if os.path.isfile(p):
-            return p
-    return None
+    """The results folder's study CSV: study/study.csv or study.csv (or either .csv.gz), else None."""
+    return csv_of(results)
 
 
 def findings_markdown(study, margin=None):

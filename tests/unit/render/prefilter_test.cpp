@@ -38,15 +38,20 @@ struct Pair {
 double second(const Material& m, const SurfacePoint& s) { return m.diffuse(s)[0]; }
 
 /// Mean of the point-sampled material over the parallelogram p + a dx + b dy,
-/// |a|, |b| <= 1/2: an n x n midpoint grid, summed in double.
-double bruteForce(const Material& m, const Vec3& p, const Vec3& dx, const Vec3& dy, int n) {
+/// |a|, |b| <= 1/2: an nx x ny midpoint grid, summed in double.
+double bruteForce(const Material& m, const Vec3& p, const Vec3& dx, const Vec3& dy, int nx, int ny) {
   double sum = 0;
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const float a = (i + 0.5f) / n - 0.5f, b = (j + 0.5f) / n - 0.5f;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const float a = (i + 0.5f) / nx - 0.5f, b = (j + 0.5f) / ny - 0.5f;
       sum += second(m, Vec3(p + a * dx + b * dy));
     }
-  return sum / (static_cast<double>(n) * n);
+  return sum / (static_cast<double>(nx) * ny);
+}
+
+/// The same on an n x n grid.
+double bruteForce(const Material& m, const Vec3& p, const Vec3& dx, const Vec3& dy, int n) {
+  return bruteForce(m, p, dx, dy, n, n);
 }
 
 Mat4 scaleTranslate(float s, const Vec3& t) {
@@ -57,17 +62,6 @@ Mat4 scaleTranslate(float s, const Vec3& t) {
 }
 
 // Box-filtered checker ----------------------------------------------------------
-
-/// The same on an nx x ny grid.
-double bruteForce(const Material& m, const Vec3& p, const Vec3& dx, const Vec3& dy, int nx, int ny) {
-  double sum = 0;
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) {
-      const float a = (i + 0.5f) / nx - 0.5f, b = (j + 0.5f) / ny - 0.5f;
-      sum += second(m, Vec3(p + a * dx + b * dy));
-    }
-  return sum / (static_cast<double>(nx) * ny);
-}
 
 // Axis-aligned footprints (the parallelogram is its own bounding box) whose
 // corners and the checker's cell edges all lie on multiples of 1/16 in

@@ -196,13 +196,7 @@ TEST(SweepAlignment, OtherColumnsUnchangedThreadsShardsAndResume) {
       else EXPECT_EQ(plain[r][i], "") << "row " << r << " " << csvColumns()[i];
     }
   // Shards merge into the whole.
-  std::vector<std::string> shards;
-  for (int i = 0; i < 2; ++i) {
-    StudyConfig c = study("sharded", 4, 1);
-    c.shardIndex = i, c.shardCount = 2;
-    runSweep(c);
-    shards.push_back(csvPath(c));
-  }
+  const std::vector<std::string> shards = aliaslab::testing::runShards(study("sharded", 4, 1), 2);
   const std::string merged = (scratch() / "sharded" / "merged.csv").string();
   mergeStudy(merged, shards, "test");
   const auto m = readRows(merged);

@@ -24,6 +24,7 @@
 #include "filter/filter.h"
 #include "study/sweep/motion_frame.h"
 #include "study/sweep/sweep.h"
+#include "support/study_rows.h"
 
 namespace aliaslab {
 namespace {
@@ -195,13 +196,7 @@ TEST(SweepMotion, StillColumnsAreTheStillStudysAndThreadsChangeNothing) {
 
 TEST(SweepMotion, ShardsMergeIntoTheWholeStudy) {
   const auto whole = framesStudy(1, "whole");
-  std::vector<std::string> shards;
-  for (int i = 0; i < 2; ++i) {
-    StudyConfig c = study("sharded", 3, 1);
-    c.shardIndex = i, c.shardCount = 2;
-    runSweep(c);
-    shards.push_back(csvPath(c));
-  }
+  const std::vector<std::string> shards = aliaslab::testing::runShards(study("sharded", 3, 1), 2);
   StudyConfig merged = study("sharded", 3, 1);
   merged.csv = (scratch() / "sharded" / "merged.csv").string();
   mergeStudy(merged.csv, shards, "test");
