@@ -20,9 +20,19 @@ Color heatColorOf(float t) {
   return Color(std::min(1.f, 3 * t), std::clamp(3 * t - 1, 0.f, 1.f), std::clamp(3 * t - 2, 0.f, 1.f));
 }
 
+namespace {
+// OIIO's text box, or an undefined ROI when there is nothing to draw (no font, or empty text: text_size then
+// returns a box with begin > end, whose width() would overflow).
+OIIO::ROI textBox(const std::string& text, int size) {
+  if (text.empty()) return OIIO::ROI();
+  const OIIO::ROI box = OIIO::ImageBufAlgo::text_size(text, size, "DejaVuSans");
+  return box.defined() && box.xend > box.xbegin && box.yend > box.ybegin ? box : OIIO::ROI();
+}
+}  // namespace
+
 bool drawText(Image& img, int x, int yTop, const std::string& text, int size) {
   namespace IBA = OIIO::ImageBufAlgo;
-  const OIIO::ROI box = IBA::text_size(text, size, "DejaVuSans");
+  const OIIO::ROI box = textBox(text, size);
   if (!box.defined()) return false;
   // render white on black into a buffer the size of the text's box, then use it as coverage
   OIIO::ImageBuf buf(OIIO::ImageSpec(box.width(), box.height(), 1, OIIO::TypeDesc::FLOAT));
@@ -54,7 +64,7 @@ Image withColorBar(const Image& picture, Color (*map)(float), const std::string&
   const int textTop = top + 14;
   const int size = 10;
   auto width = [&](const std::string& t) {
-    const OIIO::ROI b = OIIO::ImageBufAlgo::text_size(t, size, "DejaVuSans");
+    const OIIO::ROI b = textBox(t, size);
     return b.defined() ? b.width() : 0;
   };
   drawText(out, x0, textTop, low, size);
