@@ -1,7 +1,6 @@
 #include "study/validate.h"
 
 #include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
