@@ -13,7 +13,12 @@
 // order, for any thread count. Filters of one radius share the pass (one
 // footprint per sample, one batch, then each filter's weights and
 // accumulation into its own band buffer), which is what makes one more
-// filter cheap in a sweep or a reference. Where the CPU has AVX2, the
+// filter cheap in a sweep or a reference. With AVX2 + FMA, two weighted
+// filters of the pass accumulate together, sample by sample (the pair
+// kernels): each sum's additions and their order are unchanged, but the
+// update of a sum by the next sample, which waits for this sample's store,
+// now alternates with the other filter's independent one (the kernels are
+// bound by that wait, not by their arithmetic). Where the CPU has AVX2, the
 // set-up (finiteness, range, footprint, batch entry) takes 8 samples at a
 // time (setup8), the scalar loop's operations lane by lane; a group with
 // any sample it does not handle (near the image's first rows and columns,

@@ -1,7 +1,11 @@
 // The splat's accumulation kernels: a batch's (r, g, b, 1) x w added over n x n blocks of a band buffer, in
-// runs for n <= 2, unrolled for n <= 6, in SSE and in AVX2 + FMA builds (the same sums bit for bit), and the
-// choice among them (pickKernel). Called through a pointer from the pass in splat_pass.cpp.
+// runs for n <= 2, unrolled for n <= 6, in SSE and in AVX2 + FMA builds (the same sums bit for bit), the AVX2
+// kernels for two filters at once (pairAvx2), and the choice among them (pickKernel, pickPairKernel). Called
+// through pointers from the pass in splat_pass.cpp.
+#include <cstddef>
 #include <utility>
+
+#include <immintrin.h>
 
 #include "core/cpu.h"
 #include "film/splat_impl.h"
@@ -94,6 +98,33 @@ void accumulateSse(const Batch& b, int count, const float* w, BandBuffer band) {
   w ? accumulate<N>(b, count, w, band) : accumulateUnit<N>(b, count, band);
 }
 
+/// Two filters' accumulate<N> at once (AVX2 + FMA, 2 <= N <= 6): sample by sample, w0 into band0 then w1 into
+/// band1. Each sum takes the same additions in the same order as accumulate<N> gives it; what changes is that
+/// consecutive samples' updates of one sum (a load that waits for the previous sample's store, then the
+/// multiply-add) alternate with the other filter's, independent ones. The product of a float weight and a float
+/// radiance is exact in double, so the fused multiply-add rounds as the SSE build's multiply then add.
+template <int N>
+__attribute__((target("avx2,fma"))) void pairAvx2(const Batch& batch, int count, const float* w0, const float* w1,
+                                                  BandBuffer band0, BandBuffer band1) {
+  double* const base0 = reinterpret_cast<double*>(band0.sums);
+  double* const base1 = reinterpret_cast<double*>(band1.sums);
+  const ptrdiff_t rowStep = 4 * static_cast<ptrdiff_t>(band0.width);
+  for (int s = 0; s < count; ++s) {
+    const ptrdiff_t at = 4 * static_cast<ptrdiff_t>(batch.at[s]);
+    double *row0 = base0 + at, *row1 = base1 + at;
+    const __m256d L = _mm256_cvtps_pd(_mm_load_ps(reinterpret_cast<const float*>(&batch.L[s])));
+#pragma GCC unroll 8
+    for (int b = 0; b < N; ++b, row0 += rowStep, row1 += rowStep)
+#pragma GCC unroll 8
+      for (int a = 0; a < N; ++a) {
+        const size_t k = static_cast<size_t>(b * N + a) * kBatch + s;
+        const __m256d v0 = _mm256_set1_pd(static_cast<double>(w0[k])), v1 = _mm256_set1_pd(static_cast<double>(w1[k]));
+        _mm256_store_pd(row0 + 4 * a, _mm256_fmadd_pd(v0, L, _mm256_load_pd(row0 + 4 * a)));
+        _mm256_store_pd(row1 + 4 * a, _mm256_fmadd_pd(v1, L, _mm256_load_pd(row1 + 4 * a)));
+      }
+  }
+}
+
 /// pickKernel for n among Ns + 1 (unrolled), else the kernel for any n.
 template <int... Ns>
 Kernel pickKernelOf(int n, std::integer_sequence<int, Ns...>) {
@@ -107,5 +138,18 @@ Kernel pickKernelOf(int n, std::integer_sequence<int, Ns...>) {
 }  // namespace
 
 Kernel pickKernel(int n) { return pickKernelOf(n, std::make_integer_sequence<int, 6>()); }
+
+PairKernel pickPairKernel(int n) {
+  const CpuFeatures cpu = cpuFeatures();
+  if (!cpu.avx2 || !cpu.fma) return nullptr;
+  switch (n) {
+    case 2: return pairAvx2<2>;
+    case 3: return pairAvx2<3>;
+    case 4: return pairAvx2<4>;
+    case 5: return pairAvx2<5>;
+    case 6: return pairAvx2<6>;
+    default: return nullptr;
+  }
+}
 
 }  // namespace aliaslab::filmimpl

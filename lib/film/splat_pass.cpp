@@ -135,6 +135,7 @@ struct RadiusPass {
   int pad, width;      ///< band buffer's padding (n, or 0) and width W + pad
   size_t bandSize;     ///< Sums per filter's band buffer
   Kernel kernel;
+  PairKernel pair;     ///< two weighted filters at once (null: kernel twice)
   bool vectorSetup;    ///< setup8 where the CPU has AVX2 (r <= 8: centresWithin's bounds fit)
 };
 
@@ -144,7 +145,7 @@ RadiusPass makePass(const SampleBuffer& samples, const RowSpans& spans, const Sp
   const int n = static_cast<int>(std::clamp(std::ceil(2 * r), 1.f, kMaxBlock + 1.f));
   const int pad = n <= kMaxBlock ? n : 0;
   RadiusPass pass{samples, targets, {}, std::vector<int>(H), std::vector<int>(H), r, n, pad, W + pad,
-                  static_cast<size_t>(kBand + pad) * (W + pad), pickKernel(n),
+                  static_cast<size_t>(kBand + pad) * (W + pad), pickKernel(n), pickPairKernel(n),
                   cpuFeatures().avx2 && n <= kMaxBlock};
   for (const Filter* f : targets.filters) pass.weights.emplace_back(*f);
   for (int sj = 0; sj < H; ++sj) {
@@ -186,6 +187,7 @@ void splatBand(const RadiusPass& pass, int band, Workspace& space, double* own) 
   const int W = samples.width(), H = samples.height(), K = static_cast<int>(filters.size());
   const int n = pass.n, width = pass.width;
   const Kernel kernel = pass.kernel;
+  const PairKernel pair = pass.pair;
   const bool vectorSetup = pass.vectorSetup;
   const int j0 = band * kBand, j1 = std::min(H, j0 + kBand);
   auto buffer = [&](int f) { return space.buffer.data() + f * pass.bandSize; };
@@ -197,14 +199,25 @@ void splatBand(const RadiusPass& pass, int band, Workspace& space, double* own) 
     if (!count) return;
     for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
     auto t0 = own ? Clock::now() : Clock::time_point();
+    auto lap = [&](int f, double share) {  // the time since the last lap, `share` of it to filter f
+      if (!own) return;
+      const auto t1 = Clock::now();
+      own[f] += share * std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
+    };
+    float* const w1 = w.data() + w.size() / 2;  // the second filter's weights of a pair
     for (int f = 0; f < K; ++f) {
       const bool unit = pass.weights[f].unitWeights();
+      if (pair && !unit && f + 1 < K && !pass.weights[f + 1].unitWeights()) {  // two filters at once
+        pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data()), lap(f, 1);
+        pass.weights[f + 1].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w1), lap(f + 1, 1);
+        pair(b, count, w.data(), w1, BandBuffer{buffer(f), width, n}, BandBuffer{buffer(f + 1), width, n});
+        if (own) own[f + 1] += 0.5 * std::chrono::duration<double>(Clock::now() - t0).count();
+        lap(f, 0.5), ++f;
+        continue;
+      }
       if (!unit) pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
       kernel(b, count, unit ? nullptr : w.data(), BandBuffer{buffer(f), width, n});
-      if (own) {
-        const auto t1 = Clock::now();
-        own[f] += std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
-      }
+      lap(f, 1);
     }
     count = 0;
   };
@@ -265,7 +278,7 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const S
   const int K = static_cast<int>(targets.filters.size()), bands = (samples.height() + kBand - 1) / kBand;
   double* ownSeconds = targets.ownSeconds;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  WorkspacePool pool(K * pass.bandSize, static_cast<size_t>(pass.pad) * pass.pad * kBatch);
+  WorkspacePool pool(K * pass.bandSize, 2 * static_cast<size_t>(pass.pad) * pass.pad * kBatch);  // w: a pair's
   parallelFor(bands, threads, [&](int band) {
     std::unique_ptr<Workspace> space = pool.take();
     splatBand(pass, band, *space, ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr);

@@ -139,12 +139,14 @@ TEST(Film, AccumulatorOverBatchesEqualsReconstructionOfUnion) {
 TEST(Film, OneAccumulatorPassEqualsEachReconstructionBitForBit) {
   // filters of equal radius share one pass (footprints once, then each filter's weights): the result must be
   // exactly each filter's own reconstruct(), including a unit-weight box, a radius wider than a block
-  // (sample by sample) and a radius no other filter has
+  // (sample by sample) and a radius no other filter has; every filter at each radius the study uses, so
+  // that weighted filters go two at a time through the pair kernels (n = 2 .. 6) where the CPU has them
   const SampleBuffer b = makeSamples(37, 29, 6, 21, noisy);
   std::vector<std::unique_ptr<Filter>> owned;
-  for (const auto& name : allFilterNames()) owned.push_back(makeFilter(name, 1.5f));
+  for (float r : {1.f, 1.5f, 2.f, 2.3f, 3.f})
+    for (const auto& name : allFilterNames()) owned.push_back(makeFilter(name, r));
   owned.push_back(makeFilter("box", 0.5f)), owned.push_back(makeFilter("tent", 9.f)), owned.push_back(makeFilter("lanczos", 9.f));
-  owned.push_back(makeFilter("mitchell", 2.3f));
+  owned.push_back(makeFilter("mitchell", 2.7f));
   std::vector<const Filter*> filters;
   for (const auto& f : owned) filters.push_back(f.get());
   for (int threads : {1, 3}) {
@@ -197,6 +199,26 @@ TEST(Film, Avx2AndSseKernelsSumBitForBitAlike) {
       filmimpl::splatWeighted(b, *f, sse.data(), 1);
       EXPECT_TRUE(fast == sse) << f->describe();
     }
+}
+
+TEST(Film, PairKernelsSumBitForBitLikeTheSseKernels) {
+  // with AVX2 + FMA, weighted filters of one radius accumulate two at a time (film/splat_kernels.cpp, pairAvx2);
+  // without, one at a time in SSE: the same sums, for every block size the study uses (n = 1 .. 6) and an odd
+  // number of weighted filters (the last one alone), in two bands and with two threads
+  const SampleBuffer b = makeSamples(31, 45, 7, 5, noisy);
+  std::vector<std::unique_ptr<Filter>> owned;
+  for (float r : {0.5f, 1.f, 1.5f, 2.f, 2.3f, 3.f})
+    for (const auto& name : filterNames()) owned.push_back(makeFilter(name, r));
+  std::vector<const Filter*> filters;
+  for (const auto& f : owned) filters.push_back(f.get());
+  Accumulator fast(31, 45, filters), sse(31, 45, filters);
+  fast.add(b, 2);
+  {
+    const ScopedCpuFeatures sseOnly(CpuFeatures{});
+    sse.add(b, 2);
+  }
+  for (size_t k = 0; k < filters.size(); ++k)
+    EXPECT_EQ(maxDiff(fast.resolve(k).image, sse.resolve(k).image), 0.0) << filters[k]->describe();
 }
 
 TEST(Film, EightSampleSetUpMatchesOneByOneOnAwkwardSamples) {
