@@ -38,8 +38,8 @@ using Kernel = void (*)(const Batch&, int, const float*, BandBuffer);
 /// unrolled for n <= 6, AVX2 + FMA when the CPU has them (core/cpu.h; splat_kernels.cpp).
 Kernel pickKernel(int n);
 /// pair(batch, count, w0, w1, band0, band1): kernel(batch, count, w0, band0) then kernel(batch, count, w1, band1)
-/// to the bit, sample by sample in both (two weighted filters of one radius; written-out unit weights made
-/// the pair slower than the unit kernel alone: splat_bench AllFilters 226-231 ms against 212-220).
+/// to the bit, sample by sample in both (two weighted filters of one radius; a unit-weight box keeps its own
+/// kernel: with its weights written out the pair was slower, results/study_speed.md).
 using PairKernel = void (*)(const Batch&, int, const float*, const float*, BandBuffer, BandBuffer);
 /// The pair kernel for n (AVX2 + FMA, 2 <= n <= 6), else null: the caller runs kernel twice.
 PairKernel pickPairKernel(int n);

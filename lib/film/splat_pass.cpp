@@ -199,25 +199,27 @@ void splatBand(const RadiusPass& pass, int band, Workspace& space, double* own) 
     if (!count) return;
     for (int s = count; s < kBatch; ++s) b.x[s] = b.y[s] = b.cx[s] = b.cy[s] = 0;
     auto t0 = own ? Clock::now() : Clock::time_point();
-    auto lap = [&](int f, double share) {  // the time since the last lap, `share` of it to filter f
+    auto lap = [&](int f, int g = -1) {  // the time since the last lap: to filter f, or half each to f and g
       if (!own) return;
       const auto t1 = Clock::now();
-      own[f] += share * std::chrono::duration<double>(t1 - t0).count(), t0 = t1;
+      const double seconds = std::chrono::duration<double>(t1 - t0).count();
+      if (g < 0) own[f] += seconds;
+      else own[f] += seconds / 2, own[g] += seconds / 2;
+      t0 = t1;
     };
     float* const w1 = w.data() + w.size() / 2;  // the second filter's weights of a pair
     for (int f = 0; f < K; ++f) {
       const bool unit = pass.weights[f].unitWeights();
       if (pair && !unit && f + 1 < K && !pass.weights[f + 1].unitWeights()) {  // two filters at once
-        pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data()), lap(f, 1);
-        pass.weights[f + 1].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w1), lap(f + 1, 1);
+        pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data()), lap(f);
+        pass.weights[f + 1].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w1), lap(f + 1);
         pair(b, count, w.data(), w1, BandBuffer{buffer(f), width, n}, BandBuffer{buffer(f + 1), width, n});
-        if (own) own[f + 1] += 0.5 * std::chrono::duration<double>(Clock::now() - t0).count();
-        lap(f, 0.5), ++f;
+        lap(f, f + 1), ++f;
         continue;
       }
       if (!unit) pass.weights[f].eval(kBatch, b.x, b.y, b.cx, b.cy, n, w.data());
       kernel(b, count, unit ? nullptr : w.data(), BandBuffer{buffer(f), width, n});
-      lap(f, 1);
+      lap(f);
     }
     count = 0;
   };
@@ -278,7 +280,8 @@ void splatSameRadius(const SampleBuffer& samples, const RowSpans& spans, const S
   const int K = static_cast<int>(targets.filters.size()), bands = (samples.height() + kBand - 1) / kBand;
   double* ownSeconds = targets.ownSeconds;
   std::vector<double> ownBand(ownSeconds ? static_cast<size_t>(bands) * K : 0, 0.0);  // per band: no races
-  WorkspacePool pool(K * pass.bandSize, 2 * static_cast<size_t>(pass.pad) * pass.pad * kBatch);  // w: a pair's
+  const size_t weights = (pass.pair ? 2 : 1) * static_cast<size_t>(pass.pad) * pass.pad * kBatch;  // a pair: two
+  WorkspacePool pool(K * pass.bandSize, weights);
   parallelFor(bands, threads, [&](int band) {
     std::unique_ptr<Workspace> space = pool.take();
     splatBand(pass, band, *space, ownSeconds ? &ownBand[static_cast<size_t>(band) * K] : nullptr);
