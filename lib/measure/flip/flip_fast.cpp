@@ -33,7 +33,7 @@ FlipPlanes flipPlanesFast(const FlipLinear& in) {
 void flipCombineFast(const FlipPlanes& t, const FlipPlanes& r, float* out) {
   const double cmax = flipColourMax();
   if (useAvx2()) combineAvx2(view(t), view(r), out, t.L.size(), cmax);
-  else combineRange<2>(view(t), view(r), out, t.L.size(), cmax);
+  else combineRange<4>(view(t), view(r), out, t.L.size(), cmax);
 }
 
 }  // namespace aliaslab

@@ -9,7 +9,7 @@ namespace aliaslab::flipkernels {
 void planesAvx2(const LinearIn& in, const Planes& out, size_t n) { planesRange<4>(in, out, n); }
 
 void combineAvx2(const PlanesIn& t, const PlanesIn& r, float* out, size_t n, double cmax) {
-  combineRange<4>(t, r, out, n, cmax);
+  combineRange<8>(t, r, out, n, cmax);
 }
 
 }  // namespace aliaslab::flipkernels

@@ -8,9 +8,18 @@
 //     |s| <= 0.172, series to s^15 (next term < 3e-14): within 1e-13 absolute.
 //   exp2Of(z), z <= 1000: 2^round(z) from the exponent bits, 2^f for |f| <= 1/2 by Taylor to degree 12 (next
 //     term < 4e-16); z < -1022 gives 2^-1022 (not 0): within 1e-14 relative, 1e-307 absolute.
+// And in single precision, on GCC vectors of 1, 4 or 8 floats, for stage 3 (flip_fast_kernels.h):
+//   log2PositiveF(x), x > 0 normal: the same atanh series to s^9 (next term < 7e-9): within 2e-7 absolute
+//     plus 2 ulp of the result.
+//   exp2OfF(z), z <= 127: Taylor to degree 7 (next term < 5e-9); z < -126 gives 2^-126: within 3e-7 relative.
 #pragma once
 #include <cstdint>
 #include <cstring>
+
+// The vectors may be wider than the translation unit's registers (8 doubles where AVX2 is on, 4 or 8 floats
+// where it is not); they pass only between always-inlined functions of an unnamed namespace, so no call takes
+// them across the ABI that GCC's -Wpsabi note is about.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 // (An unnamed namespace: each translation unit has its own copy, so the one built for AVX2 never lends its
 // code to the others.)
@@ -25,10 +34,12 @@ template <int L> struct Lanes;
     using U = uint64_t __attribute__((vector_size(8 * L)));       \
     using F = float __attribute__((vector_size(4 * L)));          \
     using I = int32_t __attribute__((vector_size(4 * L)));        \
+    using UF = uint32_t __attribute__((vector_size(4 * L)));      \
   };
 ALIASLAB_FLIP_LANES(1)
 ALIASLAB_FLIP_LANES(2)
 ALIASLAB_FLIP_LANES(4)
+ALIASLAB_FLIP_LANES(8)
 #undef ALIASLAB_FLIP_LANES
 template <int L> using Dv = typename Lanes<L>::D;
 template <int L> using Uv = typename Lanes<L>::U;
@@ -86,6 +97,38 @@ template <int L>
   constexpr double kInvFact[12] = {1.0 / 39916800, 1.0 / 3628800, 1.0 / 362880, 1.0 / 40320, 1.0 / 5040, 1.0 / 720,
                                    1.0 / 120,      1.0 / 24,      1.0 / 6,      1.0 / 2,     1.0,          1.0};
   for (double c : kInvFact) p = p * w + c;
+  return p * scale;
+}
+
+template <int L> using Uf = typename Lanes<L>::UF;
+
+template <int L>
+[[gnu::always_inline]] inline Fv<L> splatF(float v) {
+  return Fv<L>{} + v;
+}
+
+template <int L>
+[[gnu::always_inline]] inline Fv<L> log2PositiveF(Fv<L> x) {
+  const Iv<L> u = bits<Iv<L>>(x);
+  Fv<L> e = __builtin_convertvector(((u >> 23) & 0xff) - 127, Fv<L>);
+  Fv<L> m = bits<Fv<L>>((u & 0x007fffff) | 0x3f800000);  // in [1, 2)
+  const auto big = m > 1.41421356f;
+  m = big ? m * 0.5f : m;
+  e = big ? e + 1.0f : e;
+  const Fv<L> s = (m - 1.0f) / (m + 1.0f), s2 = s * s;
+  const Fv<L> series = 1.0f + s2 * (1.0f / 3 + s2 * (1.0f / 5 + s2 * (1.0f / 7 + s2 * (1.0f / 9))));
+  return e + (2.0f * 1.44269504f) * s * series;
+}
+
+template <int L>
+[[gnu::always_inline]] inline Fv<L> exp2OfF(Fv<L> z) {
+  z = z < -126.0f ? splatF<L>(-126.0f) : z;
+  constexpr float kRound = 12582912.0f;  // 1.5 * 2^23
+  const Fv<L> t = z + kRound, n = t - kRound, w = (z - n) * 0.693147181f;
+  const Fv<L> scale = bits<Fv<L>>((bits<Uf<L>>(t) + 127u) << 23);  // 2^n, n in [-126, 127]
+  Fv<L> p = splatF<L>(1.0f / 5040);  // 1/7!
+  constexpr float kInvFact[7] = {1.0f / 720, 1.0f / 120, 1.0f / 24, 1.0f / 6, 1.0f / 2, 1.0f, 1.0f};
+  for (float c : kInvFact) p = p * w + c;
   return p * scale;
 }
 
