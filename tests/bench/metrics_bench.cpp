@@ -7,9 +7,7 @@
 // Run with --benchmark_enable_random_interleaving=true --benchmark_repetitions=N on a shared machine.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-
-#include "core/hash.h"
+#include "bench_images.h"
 #include "measure/metrics.h"
 
 namespace aliaslab {
@@ -17,18 +15,7 @@ namespace {
 
 constexpr int kSize = 256, kSeeds = 8, kTargets = 3;
 
-/// A smooth pattern plus hashed noise of amplitude `noise` (distinct per seed).
-Image noisyPattern(uint64_t seed, double noise) {
-  Image im(kSize, kSize);
-  HashRng rng(seed);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const double s = 0.5 + 0.3 * std::cos(0.003 * x * y + 0.0005 * x * x);
-      auto v = [&](double k) { return static_cast<float>(k * s + noise * (rng.nextDouble() - 0.5)); };
-      im.set(x, y, Color(v(1.0), v(0.7), v(0.5)));
-    }
-  return im;
-}
+Image noisyPattern(uint64_t seed, double noise) { return benchPattern(seed, noise, kSize); }
 
 struct MetricWork {
   Image g = noisyPattern(1, 0.01), gHalf = noisyPattern(2, 0.003);
