@@ -5,10 +5,18 @@
 #include <cstring>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
+#include "measure/metric_sums.h"
 #include "measure/standard_errors.h"
 
 namespace aliaslab {
+
+using metricimpl::productSums;
+using metricimpl::scratch;
+using metricimpl::TargetSums;
+using metricimpl::targetSums;
+using metricimpl::Terms;
 
 namespace {
 using F4 = float __attribute__((vector_size(16)));
@@ -77,22 +85,17 @@ void MetricAccumulator::add(const Image& image) {
   }
   for (; i < n; ++i) update(static_cast<double>(v[i]), mean[i], m2[i]);
   // The squared errors against each target, and the products of this image's error against G with every
-  // earlier image's (row count_-1 of the Gram matrix C), summed in channel order.
-  for (size_t j = 0; j < targets_.size(); ++j) {
-    const float* t = targets_[j].mean->data();
-    double sse = 0;
-    for (size_t i = 0; i < n; ++i) sse += (static_cast<double>(v[i]) - t[i]) * (static_cast<double>(v[i]) - t[i]);
-    sseTarget_[j].push_back(sse);
-  }
+  // earlier image's (row count_-1 of the Gram matrix C), summed in channel order: one pass over the image for
+  // up to four of these sums at a time, each still its own sum in channel order (the same bits).
+  std::vector<Terms> terms;
+  for (const RefEstimate& t : targets_) terms.push_back({t.mean->data(), v});
   if (!images_.empty()) identical_ = identical_ && std::memcmp(v, images_[0].data(), n * sizeof(float)) == 0;
   images_.push_back(image);
-  std::vector<double> row(images_.size(), 0.0);
-  for (size_t l = 0; l < images_.size(); ++l) {
-    const float* u = images_[l].data();
-    double dot = 0;
-    for (size_t i = 0; i < n; ++i) dot += (static_cast<double>(v[i]) - g[i]) * (static_cast<double>(u[i]) - g[i]);
-    row[l] = dot;
-  }
+  for (const Image& earlier : images_) terms.push_back({g, earlier.data()});
+  std::vector<double> sums(terms.size());
+  productSums(v, terms, n, sums.data());
+  for (size_t j = 0; j < targets_.size(); ++j) sseTarget_[j].push_back(sums[j]);
+  std::vector<double> row(sums.begin() + static_cast<std::ptrdiff_t>(targets_.size()), sums.end());
   gram_.push_back(std::move(row));
 }
 
@@ -107,20 +110,12 @@ TargetMetrics MetricAccumulator::targetMetrics(size_t j) const {
   const float* t = T.data();
   const float* dt = targets_[j].halfDiff ? targets_[j].halfDiff->data() : nullptr;
   const bool halves = dg || dt;
-  double blur = 0, cross = 0, varT = 0, varDelta = 0, covariance = 0;
-  std::vector<double> xt, xb;  // 2 (m - T) D_T and 2 (G - T)(D_G - D_T): reference parts of mse_target, blur
-  if (dt) xt.resize(N);
-  if (halves) xb.resize(N);
-  for (size_t i = 0; i < N; ++i) {
-    const double gt = static_cast<double>(g[i]) - t[i];
-    blur += gt * gt;
-    cross += (mean_[i] - g[i]) * gt;
-    if (!halves) continue;
-    const double a = half(dg, i), b = half(dt, i);
-    varT += b * b, varDelta += (a - b) * (a - b), covariance += a * (a - b);
-    xb[i] = 2 * gt * (a - b);
-    if (dt) xt[i] = 2 * (mean_[i] - t[i]) * b;
-  }
+  // 2 (m - T) D_T and 2 (G - T)(D_G - D_T): reference parts of mse_target, blur (every value written below)
+  std::vector<double>& xt = scratch(0, dt ? N : 0);
+  std::vector<double>& xb = scratch(1, halves ? N : 0);
+  const TargetSums sums = targetSums(mean_.data(), g, t, dg, dt, N, xb.data(), xt.data());
+  const double blur = sums.blur, cross = sums.cross, varT = sums.varT, varDelta = sums.varDelta,
+               covariance = sums.covariance;
   TargetMetrics tm;
   tm.refVar = varT / n;
   const std::vector<double>& sse = sseTarget_[j];
@@ -149,14 +144,24 @@ Metrics MetricAccumulator::result() const {
   const float* g = G.data();
   const float* dg = reference_.halfDiff ? reference_.halfDiff->data() : nullptr;
   double variance = 0, bias2 = 0, varG = 0;
-  std::vector<double> x;  // 2 (m - G) D_G: the reference part of aliasing and mse
-  if (dg) x.resize(N);
-  for (size_t i = 0; i < N; ++i) {
-    variance += m2_[i] / (count_ - 1);
-    const double d = mean_[i] - g[i];
-    bias2 += d * d;
-    if (dg) varG += half(dg, i) * half(dg, i), x[i] = 2 * d * dg[i];
-  }
+  std::vector<double>& x = scratch(0, dg ? N : 0);  // 2 (m - G) D_G: the reference part of aliasing and mse
+  // (locals for the buffers and one loop per case: as members the sums were kept in memory, see metric_sums.h)
+  const double* mean = mean_.data();
+  const double* m2 = m2_.data();
+  double* xs = x.data();
+  const double divisor = count_ - 1;
+  auto sums = [&](auto withHalves) {
+    double s2 = 0, b2 = 0, vg = 0;
+    for (size_t i = 0; i < N; ++i) {
+      s2 += m2[i] / divisor;
+      const double d = mean[i] - g[i];
+      b2 += d * d;
+      if constexpr (decltype(withHalves)::value) vg += half(dg, i) * half(dg, i), xs[i] = 2 * d * dg[i];
+    }
+    variance = s2, bias2 = b2, varG = vg;
+  };
+  if (dg) sums(std::true_type{});
+  else sums(std::false_type{});
   const double refG = dg ? referencePart(x, G, n, reference_.radius) : 0.0;
   double trace = 0;
   for (int a = 0; a < K; ++a) trace += gram_[a][a];

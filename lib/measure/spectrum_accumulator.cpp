@@ -24,6 +24,28 @@ inline void addPower(double p, const SpectrumReference::Weights& w, SpectrumRefe
   for (size_t s = 0; s < kBlurCurve.size(); ++s) e.curve[s] += p * w.curve[s];
 }
 
+/// One channel's coefficients e (unnormalised) into the sums of SpectrumAccumulator::add: per frequency z = e /
+/// (W H) into the channel's sum of z (set by the first image: SetSum) and P = |z|^2 / 3 into the sum of P (set
+/// by the first image's first channel: SetSquares), and P with the frequency's weights into `own`'s total, low
+/// and blurred energies. The operations of std::complex written out on the parts (z = (e_re inv, e_im inv),
+/// |z|^2 = z_re^2 + z_im^2, sums part by part), the three energies in locals: as std::complex values and
+/// members the compiler kept them in memory, a store and a load on every addition.
+template <bool SetSum, bool SetSquares>
+void ownChannel(const Complex* e, size_t nh, double inv, const SpectrumReference::Weights* w, Complex* channelSum,
+                double* squares, SpectrumReference::Energies& own) {
+  double total = own.total, low = own.low, blurred = own.blurred;
+  double* sum = reinterpret_cast<double*>(channelSum);  // (re, im) pairs, as std::complex is laid out
+  for (size_t i = 0; i < nh; ++i) {
+    const double zr = e[i].real() * inv, zi = e[i].imag() * inv;
+    const double p = (zr * zr + zi * zi) / 3.0;
+    sum[2 * i] = SetSum ? zr : sum[2 * i] + zr;
+    sum[2 * i + 1] = SetSum ? zi : sum[2 * i + 1] + zi;
+    squares[i] = SetSquares ? p : squares[i] + p;
+    total += p * w[i].total, low += p * w[i].low, blurred += p * w[i].blurred;
+  }
+  own.total = total, own.low = low, own.blurred = blurred;
+}
+
 double share(double low, double total, const SpectrumReference::Energies& ref) {
   const double t = total - ref.total;
   return t > 0 ? std::clamp((low - ref.low) / t, 0.0, 1.0) : 0.0;
@@ -111,13 +133,9 @@ void SpectrumAccumulator::add(const Image& image) {
   for (int c = 0; c < 3; ++c) {
     halfDft2(image, &ref.image(), c, e);
     Complex* channelSum = sum + c * nh;
-    for (size_t i = 0; i < nh; ++i) {
-      const Complex z = e[i] * inv;  // P = |z|^2 / 3 for this channel
-      const double p = std::norm(z) / 3.0;
-      channelSum[i] = first ? z : channelSum[i] + z;
-      squares[i] = first && c == 0 ? p : squares[i] + p;
-      own.total += p * w[i].total, own.low += p * w[i].low, own.blurred += p * w[i].blurred;
-    }
+    if (!first) ownChannel<false, false>(e.data(), nh, inv, w, channelSum, squares, own);
+    else if (c == 0) ownChannel<true, true>(e.data(), nh, inv, w, channelSum, squares, own);
+    else ownChannel<true, false>(e.data(), nh, inv, w, channelSum, squares, own);
     for (size_t j = 0; j < T; ++j) {  // I_k - T = e_k + (G - T)
       const Complex* shift = ref.targets()[j].shift.data() + c * nh;
       SpectrumReference::Energies t;

@@ -71,10 +71,17 @@ void halfDft2(const Image& image, const Image* subtract, int c, std::vector<Comp
     // Z = A + i B with A, B the real rows' DFTs: A(u) = (Z(u) + conj Z(-u)) / 2, B(u) = (Z(u) - conj Z(-u)) / 2i
     Complex* first = out.data() + static_cast<size_t>(y) * hw;
     Complex* second = pair ? first + hw : nullptr;
+    // Written out on the parts: the same operations as 0.5 (zu + zm) and Complex(0, -0.5) (zu - zm) in
+    // std::complex (a full product, 0 x d_re - (-0.5) x d_im and 0 x d_im + (-0.5) x d_re, with its recovery
+    // when both parts come out NaN), without the round trip through memory the compiler made of them.
     for (int u = 0; u < hw; ++u) {
-      const Complex zu = z[u], zm = std::conj(z[(w - u) % w]);
-      first[u] = 0.5 * (zu + zm);
-      if (pair) second[u] = Complex(0, -0.5) * (zu - zm);
+      const Complex zu = z[u], zn = z[u == 0 ? 0 : w - u];  // z(-u): -u mod w without an integer division
+      const double ar = zu.real(), ai = zu.imag(), br = zn.real(), bi = -zn.imag();  // zm = conj z(-u)
+      first[u] = Complex(0.5 * (ar + br), 0.5 * (ai + bi));
+      if (!pair) continue;
+      const double dr = ar - br, di = ai - bi;
+      const double re = 0.0 * dr - (-0.5) * di, im = 0.0 * di + (-0.5) * dr;
+      second[u] = std::isnan(re) && std::isnan(im) ? Complex(0, -0.5) * Complex(dr, di) : Complex(re, im);
     }
   }
   columnFfts(out, hw, hw, h);

@@ -53,7 +53,12 @@ int correlationLag(double radius) { return std::max(0, static_cast<int>(std::cei
 double windowSumVariance(const std::vector<double>& x, int width, int height, int lag) {
   // per-pixel sums s_p, then a summed-area table of s for the window sums
   const size_t w1 = static_cast<size_t>(width) + 1;
-  std::vector<double> s(static_cast<size_t>(width) * height), table(w1 * (height + 1), 0.0);
+  // (this thread's buffers, reused call after call: every value of s and every inner value of the table is
+  // written before it is read; the table's first row and column, which are read and never written, are zeroed)
+  thread_local std::vector<double> s, table;
+  s.resize(static_cast<size_t>(width) * height), table.resize(w1 * (height + 1));
+  std::fill(table.begin(), table.begin() + static_cast<std::ptrdiff_t>(w1), 0.0);
+  for (int y = 1; y <= height; ++y) table[y * w1] = 0.0;
   for (size_t p = 0; p < s.size(); ++p) s[p] = x[3 * p] + x[3 * p + 1] + x[3 * p + 2];
   for (int y = 0; y < height; ++y)
     for (int px = 0; px < width; ++px)

@@ -11,7 +11,7 @@
 #include <cmath>
 #include <memory>
 
-#include "core/hash.h"
+#include "bench_images.h"
 #include "measure/spectrum.h"
 #include "measure/spectrum_definition.h"
 
@@ -20,17 +20,7 @@ namespace {
 
 constexpr int kSize = 256, kSeeds = 8;
 
-Image pattern(uint64_t seed, double noise) {
-  Image im(kSize, kSize);
-  HashRng rng(seed);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const double s = 0.5 + 0.3 * std::sin(0.002 * x * x + 0.001 * y * y);
-      auto v = [&](double k) { return static_cast<float>(k * s + noise * (rng.nextDouble() - 0.5)); };
-      im.set(x, y, Color(v(1.0), v(0.8), v(0.6)));
-    }
-  return im;
-}
+Image pattern(uint64_t seed, double noise) { return benchPattern(seed, noise, kSize); }
 
 struct Work {
   Image g = pattern(1, 0.01), gHalf = pattern(2, 0.003);
