@@ -59,6 +59,20 @@ void weightedRows(double* dst, const double* const* src, const double* c, int ta
   (cpuFeatures().avx2 ? weightedSumAvx : weightedSumSse2)(dst, src, c, taps, n);
 }
 
+// The taps of a kernel that are not zero, in order. A sum started at +0 is never -0 (round to nearest), and
+// adding c * x = +-0 to it for finite x changes nothing, so leaving the zero taps out keeps every bit of the
+// textbook sum: FLIP's second-derivative kernels are zero on most of their support (d2n is non-zero only for
+// |k| <= sd, d2p only beyond), the first derivative at k = 0.
+struct NonZeroTaps {
+  std::vector<int> offset;  ///< k + r of each tap kept
+  std::vector<double> c;
+  explicit NonZeroTaps(const std::vector<double>& kernel) {
+    for (size_t k = 0; k < kernel.size(); ++k)
+      if (kernel[k] != 0) offset.push_back(static_cast<int>(k)), c.push_back(kernel[k]);
+  }
+  int size() const { return static_cast<int>(c.size()); }
+};
+
 /// Separable convolution of a w x h plane with kernels kx (along x) and ky (along y), each of odd length,
 /// edges clamped: convolveY(convolveX(in, kx), ky). The same sums, in the same order of k, as the textbook
 /// loop with clamped indices: a row is first copied with its edge values repeated r times on either side, so
@@ -67,28 +81,32 @@ void weightedRows(double* dst, const double* const* src, const double* c, int ta
 
 std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx) {
   const int rx = static_cast<int>(kx.size()) / 2;
+  const NonZeroTaps nz(kx);
   std::vector<double> out(in.size()), padded(static_cast<size_t>(w) + 2 * rx);
-  std::vector<const double*> taps(2 * rx + 1);
-  for (int k = 0; k <= 2 * rx; ++k) taps[k] = padded.data() + k;
+  std::vector<const double*> taps(nz.size());
+  for (int j = 0; j < nz.size(); ++j) taps[j] = padded.data() + nz.offset[j];
   for (int y = 0; y < h; ++y) {
     const double* row = in.data() + static_cast<size_t>(y) * w;
-    for (int i = 0; i < w + 2 * rx; ++i) padded[i] = row[std::clamp(i - rx, 0, w - 1)];
-    weightedRows(out.data() + static_cast<size_t>(y) * w, taps.data(), kx.data(), 2 * rx + 1, w);
+    std::fill(padded.begin(), padded.begin() + rx, row[0]);
+    std::copy(row, row + w, padded.begin() + rx);
+    std::fill(padded.begin() + rx + w, padded.end(), row[w - 1]);
+    weightedRows(out.data() + static_cast<size_t>(y) * w, taps.data(), nz.c.data(), nz.size(), w);
   }
   return out;
 }
 
 std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky) {
   const int ry = static_cast<int>(ky.size()) / 2;
+  const NonZeroTaps nz(ky);
   std::vector<double> out(in.size());
-  std::vector<const double*> rows(2 * ry + 1);
+  std::vector<const double*> rows(nz.size());
   for (int y = 0; y < h; ++y) {
-    for (int k = -ry; k <= ry; ++k) rows[k + ry] = in.data() + static_cast<size_t>(std::clamp(y + k, 0, h - 1)) * w;
-    weightedRows(out.data() + static_cast<size_t>(y) * w, rows.data(), ky.data(), 2 * ry + 1, w);
+    for (int j = 0; j < nz.size(); ++j)
+      rows[j] = in.data() + static_cast<size_t>(std::clamp(y + nz.offset[j] - ry, 0, h - 1)) * w;
+    weightedRows(out.data() + static_cast<size_t>(y) * w, rows.data(), nz.c.data(), nz.size(), w);
   }
   return out;
 }
-
 
 std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                                     const std::vector<double>& ky) {

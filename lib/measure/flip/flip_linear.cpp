@@ -1,37 +1,140 @@
 // Stage 1 of LDR-FLIP (flip_planes.h): the contrast sensitivity filters of the opponent channels and the
 // Gaussian-derivative responses of the luminance, as exact separable sums (flip_convolve.cpp).
+//
+// The per-pixel passes around the sums (colour in, colour out, the normalisations) run on GCC vectors of 2
+// doubles (SSE2) or 4 (AVX2, chosen at run time; built without FMA, so nothing is contracted): per lane the
+// very operations of the scalar formulas, in the same order (a division stays a division, std::clamp's
+// comparisons keep NaN and -0 as it does), so the same bits on either path as one pixel at a time
+// (tests/unit/measure/flip/flip_linear_test.cpp checks them against the textbook).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
+#include "core/cpu.h"
 #include "measure/flip/flip.h"
 #include "measure/flip/flip_colour.h"
 #include "measure/flip/flip_planes.h"
+
+// 256-bit vectors are passed only between functions inlined into one built for AVX2 (GCC's -Wpsabi note).
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace aliaslab {
 namespace {
 
 using namespace flipcolour;
+using D2 = double __attribute__((vector_size(16)));
+using D4 = double __attribute__((vector_size(32)));
+template <class V>
+constexpr int kLanes = sizeof(V) / sizeof(double);
 
 constexpr double kFeatureWidth = 0.082;
 
-/// The three opponent channels of an image (clamped to [0, 1]) after the contrast sensitivity filters, back in
-/// linear RGB clamped to [0, 1].
-void filteredRgb(const Image& img, double ppd, std::array<std::vector<double>, 3>& rgbOut) {
-  const int w = img.width(), h = img.height();
-  const size_t n = static_cast<size_t>(w) * h;
-  std::array<std::vector<double>, 3> ycc;
-  for (auto& p : ycc) p.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const float* c = img.data() + 3 * i;
-    const V3 v = xyzToYcc(rgbToXyz(V3{std::clamp<double>(c[0], 0, 1), std::clamp<double>(c[1], 0, 1),
-                                      std::clamp<double>(c[2], 0, 1)}));
-    for (int k = 0; k < 3; ++k) ycc[k][i] = std::isfinite(v[k]) ? v[k] : 0.0;
+// m <= L lanes of a plane (the rest 0: a vector tail computes on zeros and stores nothing of them).
+template <class V>
+[[gnu::always_inline]] inline V load(const double* p, int m) {
+  V v = {};
+  if (m == kLanes<V>) __builtin_memcpy(&v, p, sizeof v);
+  else for (int l = 0; l < m; ++l) v[l] = p[l];
+  return v;
+}
+template <class V>
+[[gnu::always_inline]] inline void store(double* p, const V& v, int m) {
+  if (m == kLanes<V>) __builtin_memcpy(p, &v, sizeof v);
+  else for (int l = 0; l < m; ++l) p[l] = v[l];
+}
+// std::clamp(v, 0, 1): v < 0 ? 0 : (1 < v ? 1 : v), so NaN and -0 pass through.
+template <class V>
+[[gnu::always_inline]] inline V clamp01(const V& v) {
+  const V zero = {}, one = zero + 1.0;
+  return v < zero ? zero : (one < v ? one : v);
+}
+// std::isfinite(v) ? v : 0 (v - v is 0 exactly when v is finite).
+template <class V>
+[[gnu::always_inline]] inline V finiteOr0(const V& v) {
+  const V zero = {};
+  return v - v == zero ? v : zero;
+}
+
+/// The opponent channels of the image clamped to [0, 1] (ycc) and its luminance Y (lum), each 0 where not finite.
+template <class V>
+[[gnu::always_inline]] inline void inputPlanes(const float* rgb, size_t n, double* const* ycc, double* lum) {
+  constexpr int L = kLanes<V>;
+  for (size_t i = 0; i < n; i += L) {
+    const int m = static_cast<int>(std::min<size_t>(L, n - i));
+    V c[3] = {};
+    for (int l = 0; l < m; ++l)
+      for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
+    const auto xyz = rgbToXyz(clamp01(c[0]), clamp01(c[1]), clamp01(c[2]));
+    const auto v = xyzToYcc(xyz[0], xyz[1], xyz[2]);
+    for (int k = 0; k < 3; ++k) store(ycc[k] + i, finiteOr0(v[k]), m);
+    store(lum + i, finiteOr0(xyz[1]), m);
   }
+}
+
+/// One opponent channel after its CSF: (A1 first + A2 second) / total, or A1 first / total with one Gaussian.
+struct CsfSums {
+  std::vector<double> first, second;
+  double A1 = 0, A2 = 0, total = 1;
+};
+/// The filtered channels back in linear RGB, clamped to [0, 1].
+template <class V>
+[[gnu::always_inline]] inline void filteredToRgb(const CsfSums* ch, size_t n, double* const* rgb) {
+  constexpr int L = kLanes<V>;
+  for (size_t i = 0; i < n; i += L) {
+    const int m = static_cast<int>(std::min<size_t>(L, n - i));
+    V f[3];
+    for (int k = 0; k < 3; ++k) {
+      f[k] = ch[k].A1 * load<V>(ch[k].first.data() + i, m);
+      if (!ch[k].second.empty()) f[k] = f[k] + ch[k].A2 * load<V>(ch[k].second.data() + i, m);
+      f[k] = f[k] / ch[k].total;
+    }
+    const auto xyz = yccToXyz(f[0], f[1], f[2]);
+    const auto c = xyzToRgb(xyz[0], xyz[1], xyz[2]);
+    for (int k = 0; k < 3; ++k) store(rgb[k] + i, clamp01(c[k]), m);
+  }
+}
+
+/// The feature planes from the six sums (ex, ey, pxp, pxn, pyp, pyn) and their normalisers.
+struct FeatureSums {
+  std::vector<double> ex, ey, pxp, pxn, pyp, pyn;
+  double edge = 1, pos = 1, neg = 1;  ///< pos1 sg, pos2 sg, -neg2 sg
+};
+template <class V>
+[[gnu::always_inline]] inline void featurePlanes(const FeatureSums& s, size_t n, FlipLinear& out) {
+  constexpr int L = kLanes<V>;
+  for (size_t i = 0; i < n; i += L) {
+    const int m = static_cast<int>(std::min<size_t>(L, n - i));
+    store(out.gx.data() + i, load<V>(s.ex.data() + i, m) / s.edge, m);
+    store(out.gy.data() + i, load<V>(s.ey.data() + i, m) / s.edge, m);
+    store(out.px.data() + i, load<V>(s.pxp.data() + i, m) / s.pos + load<V>(s.pxn.data() + i, m) / s.neg, m);
+    store(out.py.data() + i, load<V>(s.pyp.data() + i, m) / s.pos + load<V>(s.pyn.data() + i, m) / s.neg, m);
+  }
+}
+
+void inputPlanesSse2(const float* rgb, size_t n, double* const* ycc, double* lum) { inputPlanes<D2>(rgb, n, ycc, lum); }
+[[gnu::target("avx2")]] void inputPlanesAvx(const float* rgb, size_t n, double* const* ycc, double* lum) {
+  inputPlanes<D4>(rgb, n, ycc, lum);
+}
+void filteredToRgbSse2(const CsfSums* ch, size_t n, double* const* rgb) { filteredToRgb<D2>(ch, n, rgb); }
+[[gnu::target("avx2")]] void filteredToRgbAvx(const CsfSums* ch, size_t n, double* const* rgb) {
+  filteredToRgb<D4>(ch, n, rgb);
+}
+void featurePlanesSse2(const FeatureSums& s, size_t n, FlipLinear& out) { featurePlanes<D2>(s, n, out); }
+[[gnu::target("avx2")]] void featurePlanesAvx(const FeatureSums& s, size_t n, FlipLinear& out) {
+  featurePlanes<D4>(s, n, out);
+}
+
+/// The three opponent channels (ycc, from inputPlanes) after the contrast sensitivity filters, back in linear
+/// RGB clamped to [0, 1].
+void filteredRgb(const std::array<std::vector<double>, 3>& ycc, int w, int h, double ppd,
+                 std::array<std::vector<double>, 3>& rgbOut) {
+  const size_t n = static_cast<size_t>(w) * h;
   // CSF of each channel as a sum of two Gaussians a sqrt(pi / b) exp(-pi^2 x^2 / b), x in degrees
   struct Csf { double a1, b1, a2, b2; };
   const Csf csf[3] = {{1, 0.0047, 0, 1e-5}, {1, 0.0053, 0, 1e-5}, {34.1, 0.04, 13.5, 0.025}};
   const double bMax = 0.04;
   const int r = static_cast<int>(std::ceil(3 * std::sqrt(bMax / (2 * M_PI * M_PI)) * ppd));
+  CsfSums ch[3];
   for (int c = 0; c < 3; ++c) {
     std::vector<double> e1(2 * r + 1), e2(2 * r + 1);
     double s1 = 0, s2 = 0;
@@ -41,37 +144,20 @@ void filteredRgb(const Image& img, double ppd, std::array<std::vector<double>, 3
       e2[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b2), s2 += e2[k + r];
     }
     // kernel = A1 e1(x) e1(y) + A2 e2(x) e2(y), normalised to sum 1
-    const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
-    const double total = A1 * s1 * s1 + A2 * s2 * s2;
-    std::vector<double> out = convolveClamped(ycc[c], w, h, e1, e1);
-    if (A2 > 0) {
-      const std::vector<double> second = convolveClamped(ycc[c], w, h, e2, e2);
-      for (size_t i = 0; i < n; ++i) out[i] = A1 * out[i] + A2 * second[i];
-    } else {
-      for (double& v : out) v *= A1;
-    }
-    for (double& v : out) v /= total;
-    ycc[c] = std::move(out);
+    ch[c].A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), ch[c].A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
+    ch[c].total = ch[c].A1 * s1 * s1 + ch[c].A2 * s2 * s2;
+    ch[c].first = convolveClamped(ycc[c], w, h, e1, e1);
+    if (ch[c].A2 > 0) ch[c].second = convolveClamped(ycc[c], w, h, e2, e2);
   }
   for (auto& p : rgbOut) p.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    const V3 rgb = xyzToRgb(yccToXyz({ycc[0][i], ycc[1][i], ycc[2][i]}));
-    for (int k = 0; k < 3; ++k) rgbOut[k][i] = std::clamp(rgb[k], 0.0, 1.0);
-  }
+  double* const rgb[3] = {rgbOut[0].data(), rgbOut[1].data(), rgbOut[2].data()};
+  (cpuFeatures().avx2 ? filteredToRgbAvx : filteredToRgbSse2)(ch, n, rgb);
 }
 
-/// Edge and point responses of the luminance ((Y' + 16) / 116 = Y) with the first and second derivatives of a
+/// Edge and point responses of the luminance y ((Y' + 16) / 116 = Y) with the first and second derivatives of a
 /// Gaussian of sd = 0.5 * 0.082 deg * ppd; each kernel's positive weights sum to 1 and its negative ones to -1.
-void features(const Image& img, double ppd, FlipLinear& out) {
-  const int w = img.width(), h = img.height();
+void features(const std::vector<double>& y, int w, int h, double ppd, FlipLinear& out) {
   const size_t n = static_cast<size_t>(w) * h;
-  std::vector<double> y(n);
-  for (size_t i = 0; i < n; ++i) {
-    const float* c = img.data() + 3 * i;
-    y[i] = rgbToXyz(V3{std::clamp<double>(c[0], 0, 1), std::clamp<double>(c[1], 0, 1),
-                       std::clamp<double>(c[2], 0, 1)})[1];
-    if (!std::isfinite(y[i])) y[i] = 0;
-  }
   const double sd = 0.5 * kFeatureWidth * ppd;
   const int r = static_cast<int>(std::ceil(3 * sd));
   std::vector<double> g(2 * r + 1), d1(2 * r + 1), d2p(2 * r + 1), d2n(2 * r + 1);
@@ -86,15 +172,14 @@ void features(const Image& img, double ppd, FlipLinear& out) {
     pos2 += d2p[k + r], neg2 += d2n[k + r];
   }
   // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other)
+  FeatureSums s;
   const std::vector<double> smoothX = convolveX(y, w, h, g);  // shared by the three y-derivative planes
-  const std::vector<double> ex = convolveClamped(y, w, h, d1, g), ey = convolveY(smoothX, w, h, d1);
-  const std::vector<double> pxp = convolveClamped(y, w, h, d2p, g), pxn = convolveClamped(y, w, h, d2n, g);
-  const std::vector<double> pyp = convolveY(smoothX, w, h, d2p), pyn = convolveY(smoothX, w, h, d2n);
+  s.ex = convolveClamped(y, w, h, d1, g), s.ey = convolveY(smoothX, w, h, d1);
+  s.pxp = convolveClamped(y, w, h, d2p, g), s.pxn = convolveClamped(y, w, h, d2n, g);
+  s.pyp = convolveY(smoothX, w, h, d2p), s.pyn = convolveY(smoothX, w, h, d2n);
+  s.edge = pos1 * sg, s.pos = pos2 * sg, s.neg = -neg2 * sg;
   out.gx.resize(n), out.gy.resize(n), out.px.resize(n), out.py.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    out.gx[i] = ex[i] / (pos1 * sg), out.gy[i] = ey[i] / (pos1 * sg);
-    out.px[i] = pxp[i] / (pos2 * sg) + pxn[i] / (-neg2 * sg), out.py[i] = pyp[i] / (pos2 * sg) + pyn[i] / (-neg2 * sg);
-  }
+  (cpuFeatures().avx2 ? featurePlanesAvx : featurePlanesSse2)(s, n, out);
 }
 
 }  // namespace
@@ -102,8 +187,14 @@ void features(const Image& img, double ppd, FlipLinear& out) {
 FlipLinear flipLinear(const Image& img, double ppd) {
   FlipLinear out;
   out.width = img.width(), out.height = img.height();
-  filteredRgb(img, ppd, out.rgb);
-  features(img, ppd, out);
+  const size_t n = static_cast<size_t>(img.width()) * img.height();
+  std::array<std::vector<double>, 3> ycc;
+  for (auto& p : ycc) p.resize(n);
+  std::vector<double> lum(n);
+  double* const yccData[3] = {ycc[0].data(), ycc[1].data(), ycc[2].data()};
+  (cpuFeatures().avx2 ? inputPlanesAvx : inputPlanesSse2)(img.data(), n, yccData, lum.data());
+  filteredRgb(ycc, img.width(), img.height(), ppd, out.rgb);
+  features(lum, img.width(), img.height(), ppd, out);
   return out;
 }
 
