@@ -73,46 +73,75 @@ struct NonZeroTaps {
   int size() const { return static_cast<int>(c.size()); }
 };
 
-/// Separable convolution of a w x h plane with kernels kx (along x) and ky (along y), each of odd length,
-/// edges clamped: convolveY(convolveX(in, kx), ky). The same sums, in the same order of k, as the textbook
-/// loop with clamped indices: a row is first copied with its edge values repeated r times on either side, so
-/// every pixel (border ones too) is one weightedRows sum over k = -r .. r in order, starting from 0.
+/// One row's x pass: the row copied with its edge values repeated rx times on either side, so every pixel
+/// (border ones too) is one weightedRows sum over the kernel's taps in order, starting from 0.
+class XPass {
+ public:
+  XPass(const std::vector<double>& kx, int w)
+      : nz_(kx), rx_(static_cast<int>(kx.size()) / 2), w_(w), padded_(static_cast<size_t>(w) + 2 * rx_),
+        taps_(nz_.size()) {
+    for (int j = 0; j < nz_.size(); ++j) taps_[j] = padded_.data() + nz_.offset[j];
+  }
+  void row(const double* in, double* out) {
+    std::fill(padded_.begin(), padded_.begin() + rx_, in[0]);
+    std::copy(in, in + w_, padded_.begin() + rx_);
+    std::fill(padded_.begin() + rx_ + w_, padded_.end(), in[w_ - 1]);
+    weightedRows(out, taps_.data(), nz_.c.data(), nz_.size(), w_);
+  }
+
+ private:
+  NonZeroTaps nz_;
+  int rx_, w_;
+  std::vector<double> padded_;
+  std::vector<const double*> taps_;
+};
+
+/// The y pass of output row y from the rows rowOf(j) of its input, j = 0 .. h - 1 (clamped at the edges).
+template <class RowOf>
+void yRow(const NonZeroTaps& nz, int ry, int y, int w, int h, RowOf rowOf, std::vector<const double*>& rows,
+          double* out) {
+  for (int j = 0; j < nz.size(); ++j) rows[j] = rowOf(std::clamp(y + nz.offset[j] - ry, 0, h - 1));
+  weightedRows(out, rows.data(), nz.c.data(), nz.size(), w);
+}
 }  // namespace
 
 std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx) {
-  const int rx = static_cast<int>(kx.size()) / 2;
-  const NonZeroTaps nz(kx);
-  std::vector<double> out(in.size()), padded(static_cast<size_t>(w) + 2 * rx);
-  std::vector<const double*> taps(nz.size());
-  for (int j = 0; j < nz.size(); ++j) taps[j] = padded.data() + nz.offset[j];
-  for (int y = 0; y < h; ++y) {
-    const double* row = in.data() + static_cast<size_t>(y) * w;
-    std::fill(padded.begin(), padded.begin() + rx, row[0]);
-    std::copy(row, row + w, padded.begin() + rx);
-    std::fill(padded.begin() + rx + w, padded.end(), row[w - 1]);
-    weightedRows(out.data() + static_cast<size_t>(y) * w, taps.data(), nz.c.data(), nz.size(), w);
-  }
+  std::vector<double> out(in.size());
+  XPass pass(kx, w);
+  for (int y = 0; y < h; ++y) pass.row(in.data() + static_cast<size_t>(y) * w, out.data() + static_cast<size_t>(y) * w);
   return out;
 }
 
 std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky) {
-  const int ry = static_cast<int>(ky.size()) / 2;
   const NonZeroTaps nz(ky);
   std::vector<double> out(in.size());
   std::vector<const double*> rows(nz.size());
-  for (int y = 0; y < h; ++y) {
-    for (int j = 0; j < nz.size(); ++j)
-      rows[j] = in.data() + static_cast<size_t>(std::clamp(y + nz.offset[j] - ry, 0, h - 1)) * w;
-    weightedRows(out.data() + static_cast<size_t>(y) * w, rows.data(), nz.c.data(), nz.size(), w);
-  }
+  const auto rowOf = [&](int j) { return in.data() + static_cast<size_t>(j) * w; };
+  for (int y = 0; y < h; ++y)
+    yRow(nz, static_cast<int>(ky.size()) / 2, y, w, h, rowOf, rows, out.data() + static_cast<size_t>(y) * w);
   return out;
 }
 
+/// convolveY(convolveX(in, kx), ky) with the x pass's rows made as the y pass first needs them, into a ring of
+/// min(2 ry + 1, h) rows (the clamped window of any output row spans no more): the intermediate plane is never
+/// allocated and stays in cache, and every sum is the one the two passes take.
 std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                                     const std::vector<double>& ky) {
   if (kx.size() % 2 == 0 || ky.size() % 2 == 0 || in.size() != static_cast<size_t>(w) * h)
     throw std::invalid_argument("convolveClamped: kernels of odd length and a w x h plane expected");
-  return convolveY(convolveX(in, w, h, kx), w, h, ky);
+  const int ry = static_cast<int>(ky.size()) / 2, slots = std::min(2 * ry + 1, h);
+  const NonZeroTaps nz(ky);
+  XPass pass(kx, w);
+  std::vector<double> out(in.size()), ring(static_cast<size_t>(slots) * w);
+  std::vector<const double*> rows(nz.size());
+  const auto rowOf = [&](int j) { return ring.data() + static_cast<size_t>(j % slots) * w; };
+  int made = 0;  // rows of the x pass made so far
+  for (int y = 0; y < h; ++y) {
+    for (; made <= std::min(h - 1, y + ry); ++made)
+      pass.row(in.data() + static_cast<size_t>(made) * w, ring.data() + static_cast<size_t>(made % slots) * w);
+    yRow(nz, ry, y, w, h, rowOf, rows, out.data() + static_cast<size_t>(y) * w);
+  }
+  return out;
 }
 
 }  // namespace aliaslab

@@ -62,8 +62,13 @@ template <class V>
   for (size_t i = 0; i < n; i += L) {
     const int m = static_cast<int>(std::min<size_t>(L, n - i));
     V c[3] = {};
-    for (int l = 0; l < m; ++l)
-      for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
+    if (m == L) {  // a fixed count, unrolled
+      for (int l = 0; l < L; ++l)
+        for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
+    } else {
+      for (int l = 0; l < m; ++l)
+        for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
+    }
     const auto xyz = rgbToXyz(clamp01(c[0]), clamp01(c[1]), clamp01(c[2]));
     const auto v = xyzToYcc(xyz[0], xyz[1], xyz[2]);
     for (int k = 0; k < 3; ++k) store(ycc[k] + i, finiteOr0(v[k]), m);
