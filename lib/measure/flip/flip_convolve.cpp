@@ -1,6 +1,7 @@
 // The separable convolutions of FLIP (flip.h convolveClamped; flip_planes.h stage 1): exact textbook sums,
 // the same bits on the SSE2 and the AVX2 path.
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -122,25 +123,45 @@ std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const
   return out;
 }
 
-/// convolveY(convolveX(in, kx), ky) with the x pass's rows made as the y pass first needs them, into a ring of
-/// min(2 ry + 1, h) rows (the clamped window of any output row spans no more): the intermediate plane is never
-/// allocated and stays in cache, and every sum is the one the two passes take.
-std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
-                                    const std::vector<double>& ky) {
-  if (kx.size() % 2 == 0 || ky.size() % 2 == 0 || in.size() != static_cast<size_t>(w) * h)
+/// The rows of convolveY(convolveX(in, kx), ky[j]) for every j, made one output row at a time: the x pass's rows
+/// are made as the y passes first need them, into a ring of min(2 ry + 1, h) rows (the clamped window of any
+/// output row spans no more), so no intermediate plane is allocated and the ring stays in cache; every sum is
+/// the one the two passes take.
+void convolveClampedRows(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                         const std::vector<const std::vector<double>*>& ky,
+                         const std::function<void(int y, const double* const* rows)>& sink) {
+  bool odd = kx.size() % 2 == 1;
+  size_t ryMax = 0;
+  for (const auto* k : ky) odd = odd && k->size() % 2 == 1, ryMax = std::max(ryMax, k->size() / 2);
+  if (!odd || in.size() != static_cast<size_t>(w) * h)
     throw std::invalid_argument("convolveClamped: kernels of odd length and a w x h plane expected");
-  const int ry = static_cast<int>(ky.size()) / 2, slots = std::min(2 * ry + 1, h);
-  const NonZeroTaps nz(ky);
+  const int slots = std::min(2 * static_cast<int>(ryMax) + 1, h);
+  std::vector<NonZeroTaps> nz;
+  for (const auto* k : ky) nz.emplace_back(*k);
   XPass pass(kx, w);
-  std::vector<double> out(in.size()), ring(static_cast<size_t>(slots) * w);
-  std::vector<const double*> rows(nz.size());
+  std::vector<double> ring(static_cast<size_t>(slots) * w), outRows(ky.size() * static_cast<size_t>(w));
+  std::vector<double*> outs(ky.size());
+  for (size_t j = 0; j < ky.size(); ++j) outs[j] = outRows.data() + j * w;
+  std::vector<const double*> rows;
   const auto rowOf = [&](int j) { return ring.data() + static_cast<size_t>(j % slots) * w; };
   int made = 0;  // rows of the x pass made so far
   for (int y = 0; y < h; ++y) {
-    for (; made <= std::min(h - 1, y + ry); ++made)
+    for (; made <= std::min<int>(h - 1, y + ryMax); ++made)
       pass.row(in.data() + static_cast<size_t>(made) * w, ring.data() + static_cast<size_t>(made % slots) * w);
-    yRow(nz, ry, y, w, h, rowOf, rows, out.data() + static_cast<size_t>(y) * w);
+    for (size_t j = 0; j < ky.size(); ++j) {
+      rows.resize(nz[j].size());
+      yRow(nz[j], static_cast<int>(ky[j]->size()) / 2, y, w, h, rowOf, rows, outs[j]);
+    }
+    sink(y, outs.data());
   }
+}
+
+std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                                    const std::vector<double>& ky) {
+  std::vector<double> out(in.size());
+  convolveClampedRows(in, w, h, kx, {&ky}, [&](int y, const double* const* rows) {
+    std::copy(rows[0], rows[0] + w, out.begin() + static_cast<size_t>(y) * w);
+  });
   return out;
 }
 

@@ -76,43 +76,43 @@ template <class V>
   }
 }
 
-/// One opponent channel after its CSF: (A1 first + A2 second) / total, or A1 first / total with one Gaussian.
-struct CsfSums {
-  std::vector<double> first, second;
-  double A1 = 0, A2 = 0, total = 1;
+/// One row of a CSF-filtered channel: dst = [dst +] a src [/ total] (the channel is (A1 s1 + A2 s2) / total,
+/// or A1 s1 / total with one Gaussian: the first sum stored, the second added to it, then the division).
+struct RowScale {
+  double a = 1, total = 1;
+  bool accumulate = false, divide = true;
 };
-/// The filtered channels back in linear RGB, clamped to [0, 1].
 template <class V>
-[[gnu::always_inline]] inline void filteredToRgb(const CsfSums* ch, size_t n, double* const* rgb) {
+[[gnu::always_inline]] inline void csfRow(double* dst, const double* src, const RowScale& s, int n) {
   constexpr int L = kLanes<V>;
-  for (size_t i = 0; i < n; i += L) {
-    const int m = static_cast<int>(std::min<size_t>(L, n - i));
-    V f[3];
-    for (int k = 0; k < 3; ++k) {
-      f[k] = ch[k].A1 * load<V>(ch[k].first.data() + i, m);
-      if (!ch[k].second.empty()) f[k] = f[k] + ch[k].A2 * load<V>(ch[k].second.data() + i, m);
-      f[k] = f[k] / ch[k].total;
-    }
-    const auto xyz = yccToXyz(f[0], f[1], f[2]);
-    const auto c = xyzToRgb(xyz[0], xyz[1], xyz[2]);
-    for (int k = 0; k < 3; ++k) store(rgb[k] + i, clamp01(c[k]), m);
+  for (int i = 0; i < n; i += L) {
+    const int m = std::min(L, n - i);
+    V v = s.a * load<V>(src + i, m);
+    if (s.accumulate) v = load<V>(dst + i, m) + v;
+    if (s.divide) v = v / s.total;
+    store(dst + i, v, m);
   }
 }
-
-/// The feature planes from the six sums (ex, ey, pxp, pxn, pyp, pyn) and their normalisers.
-struct FeatureSums {
-  std::vector<double> ex, ey, pxp, pxn, pyp, pyn;
-  double edge = 1, pos = 1, neg = 1;  ///< pos1 sg, pos2 sg, -neg2 sg
-};
+/// The filtered channels (YCxCz) to linear RGB clamped to [0, 1], in place.
 template <class V>
-[[gnu::always_inline]] inline void featurePlanes(const FeatureSums& s, size_t n, FlipLinear& out) {
+[[gnu::always_inline]] inline void yccToRgbInPlace(double* const* p, size_t n) {
   constexpr int L = kLanes<V>;
   for (size_t i = 0; i < n; i += L) {
     const int m = static_cast<int>(std::min<size_t>(L, n - i));
-    store(out.gx.data() + i, load<V>(s.ex.data() + i, m) / s.edge, m);
-    store(out.gy.data() + i, load<V>(s.ey.data() + i, m) / s.edge, m);
-    store(out.px.data() + i, load<V>(s.pxp.data() + i, m) / s.pos + load<V>(s.pxn.data() + i, m) / s.neg, m);
-    store(out.py.data() + i, load<V>(s.pyp.data() + i, m) / s.pos + load<V>(s.pyn.data() + i, m) / s.neg, m);
+    const auto xyz = yccToXyz(load<V>(p[0] + i, m), load<V>(p[1] + i, m), load<V>(p[2] + i, m));
+    const auto c = xyzToRgb(xyz[0], xyz[1], xyz[2]);
+    for (int k = 0; k < 3; ++k) store(p[k] + i, clamp01(c[k]), m);
+  }
+}
+/// One row of a feature plane: dst = [dst +] src / d (a point plane is pos / pos2 sg + neg / (-neg2 sg)).
+template <class V>
+[[gnu::always_inline]] inline void ratioRow(double* dst, const double* src, double d, bool accumulate, int n) {
+  constexpr int L = kLanes<V>;
+  for (int i = 0; i < n; i += L) {
+    const int m = std::min(L, n - i);
+    V v = load<V>(src + i, m) / d;
+    if (accumulate) v = load<V>(dst + i, m) + v;
+    store(dst + i, v, m);
   }
 }
 
@@ -120,26 +120,32 @@ void inputPlanesSse2(const float* rgb, size_t n, double* const* ycc, double* lum
 [[gnu::target("avx2")]] void inputPlanesAvx(const float* rgb, size_t n, double* const* ycc, double* lum) {
   inputPlanes<D4>(rgb, n, ycc, lum);
 }
-void filteredToRgbSse2(const CsfSums* ch, size_t n, double* const* rgb) { filteredToRgb<D2>(ch, n, rgb); }
-[[gnu::target("avx2")]] void filteredToRgbAvx(const CsfSums* ch, size_t n, double* const* rgb) {
-  filteredToRgb<D4>(ch, n, rgb);
+void csfRowSse2(double* dst, const double* src, const RowScale& s, int n) { csfRow<D2>(dst, src, s, n); }
+[[gnu::target("avx2")]] void csfRowAvx(double* dst, const double* src, const RowScale& s, int n) {
+  csfRow<D4>(dst, src, s, n);
 }
-void featurePlanesSse2(const FeatureSums& s, size_t n, FlipLinear& out) { featurePlanes<D2>(s, n, out); }
-[[gnu::target("avx2")]] void featurePlanesAvx(const FeatureSums& s, size_t n, FlipLinear& out) {
-  featurePlanes<D4>(s, n, out);
+void yccToRgbSse2(double* const* p, size_t n) { yccToRgbInPlace<D2>(p, n); }
+[[gnu::target("avx2")]] void yccToRgbAvx(double* const* p, size_t n) { yccToRgbInPlace<D4>(p, n); }
+void ratioRowSse2(double* dst, const double* src, double d, bool accumulate, int n) {
+  ratioRow<D2>(dst, src, d, accumulate, n);
+}
+[[gnu::target("avx2")]] void ratioRowAvx(double* dst, const double* src, double d, bool accumulate, int n) {
+  ratioRow<D4>(dst, src, d, accumulate, n);
 }
 
 /// The three opponent channels (ycc, from inputPlanes) after the contrast sensitivity filters, back in linear
-/// RGB clamped to [0, 1].
+/// RGB clamped to [0, 1]. Each filtered row goes straight into rgbOut (the sums of channel 2 one after the
+/// other), which is then turned into RGB in place: no plane of sums is kept.
 void filteredRgb(const std::array<std::vector<double>, 3>& ycc, int w, int h, double ppd,
                  std::array<std::vector<double>, 3>& rgbOut) {
   const size_t n = static_cast<size_t>(w) * h;
+  for (auto& p : rgbOut) p.resize(n);
+  const auto csfRows = cpuFeatures().avx2 ? csfRowAvx : csfRowSse2;
   // CSF of each channel as a sum of two Gaussians a sqrt(pi / b) exp(-pi^2 x^2 / b), x in degrees
   struct Csf { double a1, b1, a2, b2; };
   const Csf csf[3] = {{1, 0.0047, 0, 1e-5}, {1, 0.0053, 0, 1e-5}, {34.1, 0.04, 13.5, 0.025}};
   const double bMax = 0.04;
   const int r = static_cast<int>(std::ceil(3 * std::sqrt(bMax / (2 * M_PI * M_PI)) * ppd));
-  CsfSums ch[3];
   for (int c = 0; c < 3; ++c) {
     std::vector<double> e1(2 * r + 1), e2(2 * r + 1);
     double s1 = 0, s2 = 0;
@@ -149,14 +155,18 @@ void filteredRgb(const std::array<std::vector<double>, 3>& ycc, int w, int h, do
       e2[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b2), s2 += e2[k + r];
     }
     // kernel = A1 e1(x) e1(y) + A2 e2(x) e2(y), normalised to sum 1
-    ch[c].A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), ch[c].A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
-    ch[c].total = ch[c].A1 * s1 * s1 + ch[c].A2 * s2 * s2;
-    ch[c].first = convolveClamped(ycc[c], w, h, e1, e1);
-    if (ch[c].A2 > 0) ch[c].second = convolveClamped(ycc[c], w, h, e2, e2);
+    const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
+    const double total = A1 * s1 * s1 + A2 * s2 * s2;
+    const auto into = [&](const RowScale& scale) {
+      return [&, scale](int y, const double* const* rows) {
+        csfRows(rgbOut[c].data() + static_cast<size_t>(y) * w, rows[0], scale, w);
+      };
+    };
+    convolveClampedRows(ycc[c], w, h, e1, {&e1}, into({A1, total, false, !(A2 > 0)}));
+    if (A2 > 0) convolveClampedRows(ycc[c], w, h, e2, {&e2}, into({A2, total, true, true}));
   }
-  for (auto& p : rgbOut) p.resize(n);
   double* const rgb[3] = {rgbOut[0].data(), rgbOut[1].data(), rgbOut[2].data()};
-  (cpuFeatures().avx2 ? filteredToRgbAvx : filteredToRgbSse2)(ch, n, rgb);
+  (cpuFeatures().avx2 ? yccToRgbAvx : yccToRgbSse2)(rgb, n);
 }
 
 /// Edge and point responses of the luminance y ((Y' + 16) / 116 = Y) with the first and second derivatives of a
@@ -176,15 +186,23 @@ void features(const std::vector<double>& y, int w, int h, double ppd, FlipLinear
     d2p[k + r] = std::max(s, 0.0), d2n[k + r] = std::min(s, 0.0);
     pos2 += d2p[k + r], neg2 += d2n[k + r];
   }
-  // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other)
-  FeatureSums s;
-  const std::vector<double> smoothX = convolveX(y, w, h, g);  // shared by the three y-derivative planes
-  s.ex = convolveClamped(y, w, h, d1, g), s.ey = convolveY(smoothX, w, h, d1);
-  s.pxp = convolveClamped(y, w, h, d2p, g), s.pxn = convolveClamped(y, w, h, d2n, g);
-  s.pyp = convolveY(smoothX, w, h, d2p), s.pyn = convolveY(smoothX, w, h, d2n);
-  s.edge = pos1 * sg, s.pos = pos2 * sg, s.neg = -neg2 * sg;
+  // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other), each row
+  // divided as it is made: g = sum / (pos1 sg), p = positive sum / (pos2 sg) + negative sum / (-neg2 sg)
   out.gx.resize(n), out.gy.resize(n), out.px.resize(n), out.py.resize(n);
-  (cpuFeatures().avx2 ? featurePlanesAvx : featurePlanesSse2)(s, n, out);
+  const double edge = pos1 * sg, pos = pos2 * sg, neg = -neg2 * sg;
+  const auto ratio = cpuFeatures().avx2 ? ratioRowAvx : ratioRowSse2;
+  const auto at = [&](std::vector<double>& p, int row) { return p.data() + static_cast<size_t>(row) * w; };
+  // the y derivatives share the x pass with g
+  convolveClampedRows(y, w, h, g, {&d1, &d2p, &d2n}, [&](int row, const double* const* s) {
+    ratio(at(out.gy, row), s[0], edge, false, w);
+    ratio(at(out.py, row), s[1], pos, false, w), ratio(at(out.py, row), s[2], neg, true, w);
+  });
+  // the x derivatives, then smoothed along y (the negative point sums added to the positive ones' rows)
+  const auto xDerivative = [&](const std::vector<double>& kx, std::vector<double>& plane, double d, bool add) {
+    convolveClampedRows(y, w, h, kx, {&g},
+                        [&](int row, const double* const* s) { ratio(at(plane, row), s[0], d, add, w); });
+  };
+  xDerivative(d1, out.gx, edge, false), xDerivative(d2p, out.px, pos, false), xDerivative(d2n, out.px, neg, true);
 }
 
 }  // namespace

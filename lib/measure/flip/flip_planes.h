@@ -14,6 +14,7 @@
 // definition to about 1e-12 per pixel (documented tolerance: 1e-6 per image mean, tests/unit/measure/flip/flip_test).
 #pragma once
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/image.h"
@@ -47,5 +48,10 @@ double flipColourMax();
 /// The separable passes of flip_convolve.cpp (convolveClamped = convolveY(convolveX(.))).
 std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx);
 std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky);
+/// convolveClamped(in, w, h, kx, *ky[j]) for every j, one output row y = 0 .. h - 1 at a time: sink(y, rows) gets
+/// row y of each (rows[j], valid during the call), the same bits, without a plane for any of them.
+void convolveClampedRows(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                         const std::vector<const std::vector<double>*>& ky,
+                         const std::function<void(int y, const double* const* rows)>& sink);
 
 }  // namespace aliaslab
