@@ -97,36 +97,12 @@ class XPass {
   std::vector<const double*> taps_;
 };
 
-/// The y pass of output row y from the rows rowOf(j) of its input, j = 0 .. h - 1 (clamped at the edges).
-template <class RowOf>
-void yRow(const NonZeroTaps& nz, int ry, int y, int w, int h, RowOf rowOf, std::vector<const double*>& rows,
-          double* out) {
-  for (int j = 0; j < nz.size(); ++j) rows[j] = rowOf(std::clamp(y + nz.offset[j] - ry, 0, h - 1));
-  weightedRows(out, rows.data(), nz.c.data(), nz.size(), w);
-}
 }  // namespace
 
-std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx) {
-  std::vector<double> out(in.size());
-  XPass pass(kx, w);
-  for (int y = 0; y < h; ++y) pass.row(in.data() + static_cast<size_t>(y) * w, out.data() + static_cast<size_t>(y) * w);
-  return out;
-}
-
-std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky) {
-  const NonZeroTaps nz(ky);
-  std::vector<double> out(in.size());
-  std::vector<const double*> rows(nz.size());
-  const auto rowOf = [&](int j) { return in.data() + static_cast<size_t>(j) * w; };
-  for (int y = 0; y < h; ++y)
-    yRow(nz, static_cast<int>(ky.size()) / 2, y, w, h, rowOf, rows, out.data() + static_cast<size_t>(y) * w);
-  return out;
-}
-
-/// The rows of convolveY(convolveX(in, kx), ky[j]) for every j, made one output row at a time: the x pass's rows
-/// are made as the y passes first need them, into a ring of min(2 ry + 1, h) rows (the clamped window of any
-/// output row spans no more), so no intermediate plane is allocated and the ring stays in cache; every sum is
-/// the one the two passes take.
+/// The rows of the separable sums (kx along x, then ky[j] along y) for every j, made one output row at a time:
+/// the x pass's rows are made as the y passes first need them, into a ring of min(2 ry + 1, h) rows (the
+/// clamped window of any output row spans no more), so no intermediate plane is allocated and the ring stays
+/// in cache; every sum is the one the two passes over whole planes would take.
 void convolveClampedRows(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
                          const std::vector<const std::vector<double>*>& ky,
                          const std::function<void(int y, const double* const* rows)>& sink) {
@@ -143,14 +119,16 @@ void convolveClampedRows(const std::vector<double>& in, int w, int h, const std:
   std::vector<double*> outs(ky.size());
   for (size_t j = 0; j < ky.size(); ++j) outs[j] = outRows.data() + j * w;
   std::vector<const double*> rows;
-  const auto rowOf = [&](int j) { return ring.data() + static_cast<size_t>(j % slots) * w; };
+  const auto ringRow = [&](int j) { return ring.data() + static_cast<size_t>(j % slots) * w; };
   int made = 0;  // rows of the x pass made so far
   for (int y = 0; y < h; ++y) {
     for (; made <= std::min<int>(h - 1, y + ryMax); ++made)
-      pass.row(in.data() + static_cast<size_t>(made) * w, ring.data() + static_cast<size_t>(made % slots) * w);
-    for (size_t j = 0; j < ky.size(); ++j) {
+      pass.row(in.data() + static_cast<size_t>(made) * w, ringRow(made));
+    for (size_t j = 0; j < ky.size(); ++j) {  // taps over the x pass's rows, clamped at the edges
+      const int ry = static_cast<int>(ky[j]->size()) / 2;
       rows.resize(nz[j].size());
-      yRow(nz[j], static_cast<int>(ky[j]->size()) / 2, y, w, h, rowOf, rows, outs[j]);
+      for (int t = 0; t < nz[j].size(); ++t) rows[t] = ringRow(std::clamp(y + nz[j].offset[t] - ry, 0, h - 1));
+      weightedRows(outs[j], rows.data(), nz[j].c.data(), nz[j].size(), w);
     }
     sink(y, outs.data());
   }

@@ -45,9 +45,6 @@ void flipCombineFast(const FlipPlanes& test, const FlipPlanes& ref, float* out);
 /// The largest colour difference of the gamut, pure green against pure blue, raised to 0.7 (the definition's).
 double flipColourMax();
 
-/// The separable passes of flip_convolve.cpp (convolveClamped = convolveY(convolveX(.))).
-std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx);
-std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky);
 /// convolveClamped(in, w, h, kx, *ky[j]) for every j, one output row y = 0 .. h - 1 at a time: sink(y, rows) gets
 /// row y of each (rows[j], valid during the call), the same bits, without a plane for any of them.
 void convolveClampedRows(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
