@@ -141,22 +141,9 @@ void filteredRgb(const std::array<std::vector<double>, 3>& ycc, int w, int h, do
   const size_t n = static_cast<size_t>(w) * h;
   for (auto& p : rgbOut) p.resize(n);
   const auto csfRows = cpuFeatures().avx2 ? csfRowAvx : csfRowSse2;
-  // CSF of each channel as a sum of two Gaussians a sqrt(pi / b) exp(-pi^2 x^2 / b), x in degrees
-  struct Csf { double a1, b1, a2, b2; };
-  const Csf csf[3] = {{1, 0.0047, 0, 1e-5}, {1, 0.0053, 0, 1e-5}, {34.1, 0.04, 13.5, 0.025}};
-  const double bMax = 0.04;
-  const int r = static_cast<int>(std::ceil(3 * std::sqrt(bMax / (2 * M_PI * M_PI)) * ppd));
+  const std::array<FlipCsfKernel, 3> csf = flipCsfKernels(ppd);
   for (int c = 0; c < 3; ++c) {
-    std::vector<double> e1(2 * r + 1), e2(2 * r + 1);
-    double s1 = 0, s2 = 0;
-    for (int k = -r; k <= r; ++k) {
-      const double x = k / ppd;
-      e1[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b1), s1 += e1[k + r];
-      e2[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b2), s2 += e2[k + r];
-    }
-    // kernel = A1 e1(x) e1(y) + A2 e2(x) e2(y), normalised to sum 1
-    const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
-    const double total = A1 * s1 * s1 + A2 * s2 * s2;
+    const auto& [e1, e2, A1, A2, total] = csf[c];
     const auto into = [&](const RowScale& scale) {
       return [&, scale](int y, const double* const* rows) {
         csfRows(rgbOut[c].data() + static_cast<size_t>(y) * w, rows[0], scale, w);
@@ -173,23 +160,9 @@ void filteredRgb(const std::array<std::vector<double>, 3>& ycc, int w, int h, do
 /// Gaussian of sd = 0.5 * 0.082 deg * ppd; each kernel's positive weights sum to 1 and its negative ones to -1.
 void features(const std::vector<double>& y, int w, int h, double ppd, FlipLinear& out) {
   const size_t n = static_cast<size_t>(w) * h;
-  const double sd = 0.5 * kFeatureWidth * ppd;
-  const int r = static_cast<int>(std::ceil(3 * sd));
-  std::vector<double> g(2 * r + 1), d1(2 * r + 1), d2p(2 * r + 1), d2n(2 * r + 1);
-  double sg = 0, pos1 = 0, pos2 = 0, neg2 = 0;
-  for (int k = -r; k <= r; ++k) {
-    const double e = std::exp(-(k * k) / (2 * sd * sd));
-    g[k + r] = e, sg += e;
-    d1[k + r] = -k * e;
-    if (d1[k + r] > 0) pos1 += d1[k + r];
-    const double s = (k * k / (sd * sd) - 1) * e;
-    d2p[k + r] = std::max(s, 0.0), d2n[k + r] = std::min(s, 0.0);
-    pos2 += d2p[k + r], neg2 += d2n[k + r];
-  }
-  // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other), each row
-  // divided as it is made: g = sum / (pos1 sg), p = positive sum / (pos2 sg) + negative sum / (-neg2 sg)
+  const auto [g, d1, d2p, d2n, edge, pos, neg] = flipFeatureKernels(ppd);
+  // each row divided as it is made: g = sum / edge, p = positive sum / pos + negative sum / neg
   out.gx.resize(n), out.gy.resize(n), out.px.resize(n), out.py.resize(n);
-  const double edge = pos1 * sg, pos = pos2 * sg, neg = -neg2 * sg;
   const auto ratio = cpuFeatures().avx2 ? ratioRowAvx : ratioRowSse2;
   const auto at = [&](std::vector<double>& p, int row) { return p.data() + static_cast<size_t>(row) * w; };
   // the y derivatives share the x pass with g
@@ -206,6 +179,46 @@ void features(const std::vector<double>& y, int w, int h, double ppd, FlipLinear
 }
 
 }  // namespace
+
+std::array<FlipCsfKernel, 3> flipCsfKernels(double ppd) {
+  // CSF of each channel as a sum of two Gaussians a sqrt(pi / b) exp(-pi^2 x^2 / b), x in degrees
+  struct Csf { double a1, b1, a2, b2; };
+  const Csf csf[3] = {{1, 0.0047, 0, 1e-5}, {1, 0.0053, 0, 1e-5}, {34.1, 0.04, 13.5, 0.025}};
+  const double bMax = 0.04;
+  const int r = static_cast<int>(std::ceil(3 * std::sqrt(bMax / (2 * M_PI * M_PI)) * ppd));
+  std::array<FlipCsfKernel, 3> out;
+  for (int c = 0; c < 3; ++c) {
+    std::vector<double> e1(2 * r + 1), e2(2 * r + 1);
+    double s1 = 0, s2 = 0;
+    for (int k = -r; k <= r; ++k) {
+      const double x = k / ppd;
+      e1[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b1), s1 += e1[k + r];
+      e2[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b2), s2 += e2[k + r];
+    }
+    // kernel = A1 e1(x) e1(y) + A2 e2(x) e2(y), normalised to sum 1
+    const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
+    out[c] = {std::move(e1), std::move(e2), A1, A2, A1 * s1 * s1 + A2 * s2 * s2};
+  }
+  return out;
+}
+
+FlipFeatureKernels flipFeatureKernels(double ppd) {
+  const double sd = 0.5 * kFeatureWidth * ppd;
+  const int r = static_cast<int>(std::ceil(3 * sd));
+  std::vector<double> g(2 * r + 1), d1(2 * r + 1), d2p(2 * r + 1), d2n(2 * r + 1);
+  double sg = 0, pos1 = 0, pos2 = 0, neg2 = 0;
+  for (int k = -r; k <= r; ++k) {
+    const double e = std::exp(-(k * k) / (2 * sd * sd));
+    g[k + r] = e, sg += e;
+    d1[k + r] = -k * e;
+    if (d1[k + r] > 0) pos1 += d1[k + r];
+    const double s = (k * k / (sd * sd) - 1) * e;
+    d2p[k + r] = std::max(s, 0.0), d2n[k + r] = std::min(s, 0.0);
+    pos2 += d2p[k + r], neg2 += d2n[k + r];
+  }
+  // 2-D sums of the separable products: (positive sum along one axis) x (sum of g along the other)
+  return {std::move(g), std::move(d1), std::move(d2p), std::move(d2n), pos1 * sg, pos2 * sg, -neg2 * sg};
+}
 
 FlipLinear flipLinear(const Image& img, double ppd) {
   FlipLinear out;

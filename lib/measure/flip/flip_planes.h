@@ -29,6 +29,20 @@ struct FlipLinear {
 };
 FlipLinear flipLinear(const Image& img, double ppd);
 
+/// Stage 1's kernels at ppd pixels per degree. A channel's CSF is (A1 e1(x) e1(y) + A2 e2(x) e2(y)) / total;
+/// the edge planes are the sums with d1 along one axis and g along the other divided by edge, the point planes
+/// the sums with d2p divided by pos plus those with d2n divided by neg.
+struct FlipCsfKernel {
+  std::vector<double> e1, e2;
+  double A1, A2, total;
+};
+std::array<FlipCsfKernel, 3> flipCsfKernels(double ppd);
+struct FlipFeatureKernels {
+  std::vector<double> g, d1, d2p, d2n;
+  double edge, pos, neg;
+};
+FlipFeatureKernels flipFeatureKernels(double ppd);
+
 /// Stage 2 of one image (row-major planes).
 struct FlipPlanes {
   int width = 0, height = 0;

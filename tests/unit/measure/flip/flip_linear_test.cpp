@@ -1,8 +1,9 @@
 // Stage 1 of LDR-FLIP (measure/flip/flip_planes.h flipLinear) bit for bit against the textbook: one pixel at a
 // time, every clamped-index sum taken over all its taps (zero ones too) in order from 0, the colour formulas of
-// flip_colour.h on scalars. The stage's vector loops, their AVX2 twins, the skipped zero taps and the fused
-// passes must not change a single bit of any output, on images with odd sizes (vector tails), negative, NaN and
-// infinite colours, at two viewing distances (two sets of kernel radii), on the SSE2 and the AVX2 path.
+// flip_colour.h on scalars, the library's kernels (flipCsfKernels, flipFeatureKernels). The stage's vector
+// loops, their AVX2 twins, the skipped zero taps and the row-by-row passes must not change a single bit of any
+// output, on images with odd sizes (vector tails), negative, NaN and infinite colours, at two viewing
+// distances (two sets of kernel radii), on the SSE2 and the AVX2 path.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -64,20 +65,10 @@ FlipLinear textbookLinear(const Image& img, double ppd) {
     for (int k = 0; k < 3; ++k) ycc[k][i] = std::isfinite(v[k]) ? v[k] : 0.0;
     lum[i] = std::isfinite(xyz[1]) ? xyz[1] : 0.0;
   }
-  struct Csf { double a1, b1, a2, b2; };
-  const Csf csf[3] = {{1, 0.0047, 0, 1e-5}, {1, 0.0053, 0, 1e-5}, {34.1, 0.04, 13.5, 0.025}};
-  const int r = static_cast<int>(std::ceil(3 * std::sqrt(0.04 / (2 * M_PI * M_PI)) * ppd));
   std::array<Plane, 3> f;
+  const std::array<FlipCsfKernel, 3> csf = flipCsfKernels(ppd);
   for (int c = 0; c < 3; ++c) {
-    Plane e1(2 * r + 1), e2(2 * r + 1);
-    double s1 = 0, s2 = 0;
-    for (int k = -r; k <= r; ++k) {
-      const double x = k / ppd;
-      e1[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b1), s1 += e1[k + r];
-      e2[k + r] = std::exp(-M_PI * M_PI * x * x / csf[c].b2), s2 += e2[k + r];
-    }
-    const double A1 = csf[c].a1 * std::sqrt(M_PI / csf[c].b1), A2 = csf[c].a2 * std::sqrt(M_PI / csf[c].b2);
-    const double total = A1 * s1 * s1 + A2 * s2 * s2;
+    const auto& [e1, e2, A1, A2, total] = csf[c];
     const Plane one = textbook(ycc[c], w, h, e1, e1), two = A2 > 0 ? textbook(ycc[c], w, h, e2, e2) : Plane(n);
     f[c].resize(n);
     for (size_t i = 0; i < n; ++i) f[c][i] = (A2 > 0 ? A1 * one[i] + A2 * two[i] : A1 * one[i]) / total;
@@ -87,19 +78,7 @@ FlipLinear textbookLinear(const Image& img, double ppd) {
     const V3 rgb = xyzToRgb(yccToXyz({f[0][i], f[1][i], f[2][i]}));
     for (int k = 0; k < 3; ++k) out.rgb[k][i] = std::clamp(rgb[k], 0.0, 1.0);
   }
-  const double sd = 0.5 * 0.082 * ppd;
-  const int rf = static_cast<int>(std::ceil(3 * sd));
-  Plane g(2 * rf + 1), d1(2 * rf + 1), d2p(2 * rf + 1), d2n(2 * rf + 1);
-  double sg = 0, pos1 = 0, pos2 = 0, neg2 = 0;
-  for (int k = -rf; k <= rf; ++k) {
-    const double e = std::exp(-(k * k) / (2 * sd * sd));
-    g[k + rf] = e, sg += e;
-    d1[k + rf] = -k * e;
-    if (d1[k + rf] > 0) pos1 += d1[k + rf];
-    const double s = (k * k / (sd * sd) - 1) * e;
-    d2p[k + rf] = std::max(s, 0.0), d2n[k + rf] = std::min(s, 0.0);
-    pos2 += d2p[k + rf], neg2 += d2n[k + rf];
-  }
+  const auto [g, d1, d2p, d2n, edge, pos, neg] = flipFeatureKernels(ppd);
   // The y-derivative planes as the library defines them: the x pass with g, then the derivative along y.
   const Plane smooth = textbook(lum, w, h, g, delta(0));
   const Plane ex = textbook(lum, w, h, d1, g), ey = textbook(smooth, w, h, delta(0), d1);
@@ -107,8 +86,8 @@ FlipLinear textbookLinear(const Image& img, double ppd) {
   const Plane pyp = textbook(smooth, w, h, delta(0), d2p), pyn = textbook(smooth, w, h, delta(0), d2n);
   out.gx.resize(n), out.gy.resize(n), out.px.resize(n), out.py.resize(n);
   for (size_t i = 0; i < n; ++i) {
-    out.gx[i] = ex[i] / (pos1 * sg), out.gy[i] = ey[i] / (pos1 * sg);
-    out.px[i] = pxp[i] / (pos2 * sg) + pxn[i] / (-neg2 * sg), out.py[i] = pyp[i] / (pos2 * sg) + pyn[i] / (-neg2 * sg);
+    out.gx[i] = ex[i] / edge, out.gy[i] = ey[i] / edge;
+    out.px[i] = pxp[i] / pos + pxn[i] / neg, out.py[i] = pyp[i] / pos + pyn[i] / neg;
   }
   return out;
 }
