@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "core/cpu.h"
 #include "measure/flip/flip.h"
@@ -42,6 +43,19 @@ template <class V>
   if (m == kLanes<V>) __builtin_memcpy(p, &v, sizeof v);
   else for (int l = 0; l < m; ++l) p[l] = v[l];
 }
+// block(i, m) for the blocks [i, i + m) of [0, n): m = L, a constant folded into the loads and stores, then
+// once m < L for the tail.
+template <int L, class Block>
+[[gnu::always_inline]] inline void forBlocks(size_t n, const Block& block) {
+  size_t i = 0;
+  for (; i + L <= n; i += L) block(i, L);
+  if (i < n) block(i, static_cast<int>(n - i));
+}
+// Channel k of pixels 0 .. L - 1 of interleaved RGB, built in registers.
+template <class V, size_t... l>
+[[gnu::always_inline]] inline V channel(const float* p, int k, std::index_sequence<l...>) {
+  return V{static_cast<double>(p[3 * l + k])...};
+}
 // std::clamp(v, 0, 1): v < 0 ? 0 : (1 < v ? 1 : v), so NaN and -0 pass through.
 template <class V>
 [[gnu::always_inline]] inline V clamp01(const V& v) {
@@ -59,12 +73,10 @@ template <class V>
 template <class V>
 [[gnu::always_inline]] inline void inputPlanes(const float* rgb, size_t n, double* const* ycc, double* lum) {
   constexpr int L = kLanes<V>;
-  for (size_t i = 0; i < n; i += L) {
-    const int m = static_cast<int>(std::min<size_t>(L, n - i));
+  forBlocks<L>(n, [&](size_t i, int m) __attribute__((always_inline)) {
     V c[3] = {};
-    if (m == L) {  // a fixed count, unrolled
-      for (int l = 0; l < L; ++l)
-        for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
+    if (m == L) {
+      for (int k = 0; k < 3; ++k) c[k] = channel<V>(rgb + 3 * i, k, std::make_index_sequence<L>());
     } else {
       for (int l = 0; l < m; ++l)
         for (int k = 0; k < 3; ++k) c[k][l] = rgb[3 * (i + l) + k];
@@ -73,7 +85,7 @@ template <class V>
     const auto v = xyzToYcc(xyz[0], xyz[1], xyz[2]);
     for (int k = 0; k < 3; ++k) store(ycc[k] + i, finiteOr0(v[k]), m);
     store(lum + i, finiteOr0(xyz[1]), m);
-  }
+  });
 }
 
 /// One row of a CSF-filtered channel: dst = [dst +] a src [/ total] (the channel is (A1 s1 + A2 s2) / total,
@@ -84,36 +96,30 @@ struct RowScale {
 };
 template <class V>
 [[gnu::always_inline]] inline void csfRow(double* dst, const double* src, const RowScale& s, int n) {
-  constexpr int L = kLanes<V>;
-  for (int i = 0; i < n; i += L) {
-    const int m = std::min(L, n - i);
+  forBlocks<kLanes<V>>(n, [&](size_t i, int m) __attribute__((always_inline)) {
     V v = s.a * load<V>(src + i, m);
     if (s.accumulate) v = load<V>(dst + i, m) + v;
     if (s.divide) v = v / s.total;
     store(dst + i, v, m);
-  }
+  });
 }
 /// The filtered channels (YCxCz) to linear RGB clamped to [0, 1], in place.
 template <class V>
 [[gnu::always_inline]] inline void yccToRgbInPlace(double* const* p, size_t n) {
-  constexpr int L = kLanes<V>;
-  for (size_t i = 0; i < n; i += L) {
-    const int m = static_cast<int>(std::min<size_t>(L, n - i));
+  forBlocks<kLanes<V>>(n, [&](size_t i, int m) __attribute__((always_inline)) {
     const auto xyz = yccToXyz(load<V>(p[0] + i, m), load<V>(p[1] + i, m), load<V>(p[2] + i, m));
     const auto c = xyzToRgb(xyz[0], xyz[1], xyz[2]);
     for (int k = 0; k < 3; ++k) store(p[k] + i, clamp01(c[k]), m);
-  }
+  });
 }
 /// One row of a feature plane: dst = [dst +] src / d (a point plane is pos / pos2 sg + neg / (-neg2 sg)).
 template <class V>
 [[gnu::always_inline]] inline void ratioRow(double* dst, const double* src, double d, bool accumulate, int n) {
-  constexpr int L = kLanes<V>;
-  for (int i = 0; i < n; i += L) {
-    const int m = std::min(L, n - i);
+  forBlocks<kLanes<V>>(n, [&](size_t i, int m) __attribute__((always_inline)) {
     V v = load<V>(src + i, m) / d;
     if (accumulate) v = load<V>(dst + i, m) + v;
     store(dst + i, v, m);
-  }
+  });
 }
 
 void inputPlanesSse2(const float* rgb, size_t n, double* const* ycc, double* lum) { inputPlanes<D2>(rgb, n, ycc, lum); }
