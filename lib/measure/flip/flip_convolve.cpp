@@ -16,7 +16,7 @@ namespace aliaslab {
 namespace {
 
 // dst[x] = sum_k c[k] src[k][x] for x in [0, n), each sum started at 0 and taken in the order of k (the
-// textbook loop's operations: a multiply, then an add, per tap). Blocks of 4 vectors of x stay in registers
+// textbook loop's operations: a multiply, then an add, per tap). Blocks of 8 vectors of x stay in registers
 // across the taps; 2 lanes per SSE2 vector, 4 per AVX one where the CPU has AVX2 (chosen at run time, built
 // without FMA, so nothing is contracted): the same IEEE operations per element on either path, so the same
 // bits.
@@ -28,22 +28,29 @@ template <class V>
   __builtin_memcpy(&v, p, sizeof v);
   return v;
 }
+// A vectors of x from x on: A independent chains of adds, enough to cover the add's latency.
+template <class V, int A>
+[[gnu::always_inline]] inline void weightedBlock(double* dst, const double* const* src, const double* c, int taps,
+                                                 int x) {
+  constexpr int L = sizeof(V) / sizeof(double);
+  V a[A] = {};
+  for (int k = 0; k < taps; ++k) {
+    V ck;
+    for (int l = 0; l < L; ++l) ck[l] = c[k];
+    const double* p = src[k] + x;
+#pragma GCC unroll 8
+    for (int j = 0; j < A; ++j) a[j] += ck * load<V>(p + j * L);
+  }
+#pragma GCC unroll 8
+  for (int j = 0; j < A; ++j) __builtin_memcpy(dst + x + j * L, &a[j], sizeof(V));
+}
 template <class V>
 [[gnu::always_inline]] inline void weightedSum(double* dst, const double* const* src, const double* c, int taps,
                                                int n) {
-  constexpr int L = sizeof(V) / sizeof(double), B = 4 * L;
+  constexpr int L = sizeof(V) / sizeof(double);
   int x = 0;
-  for (; x + B <= n; x += B) {
-    V a0 = {}, a1 = {}, a2 = {}, a3 = {};
-    for (int k = 0; k < taps; ++k) {
-      V ck;
-      for (int l = 0; l < L; ++l) ck[l] = c[k];
-      const double* p = src[k] + x;
-      a0 += ck * load<V>(p), a1 += ck * load<V>(p + L), a2 += ck * load<V>(p + 2 * L), a3 += ck * load<V>(p + 3 * L);
-    }
-    __builtin_memcpy(dst + x, &a0, sizeof a0), __builtin_memcpy(dst + x + L, &a1, sizeof a1);
-    __builtin_memcpy(dst + x + 2 * L, &a2, sizeof a2), __builtin_memcpy(dst + x + 3 * L, &a3, sizeof a3);
-  }
+  for (; x + 8 * L <= n; x += 8 * L) weightedBlock<V, 8>(dst, src, c, taps, x);
+  for (; x + L <= n; x += L) weightedBlock<V, 1>(dst, src, c, taps, x);
   for (; x < n; ++x) {
     double sum = 0;
     for (int k = 0; k < taps; ++k) sum += c[k] * src[k][x];
