@@ -118,6 +118,7 @@ void convolveClampedRows(const std::vector<double>& in, int w, int h, const std:
   for (const auto* k : ky) odd = odd && k->size() % 2 == 1, ryMax = std::max(ryMax, k->size() / 2);
   if (!odd || in.size() != static_cast<size_t>(w) * h)
     throw std::invalid_argument("convolveClamped: kernels of odd length and a w x h plane expected");
+  if (w == 0 || h == 0) return;  // no rows, or rows without an edge value to repeat
   const int slots = std::min(2 * static_cast<int>(ryMax) + 1, h);
   std::vector<NonZeroTaps> nz;
   for (const auto* k : ky) nz.emplace_back(*k);
