@@ -59,7 +59,7 @@ class FlipReference {
 /// and 2 done once. Targets must share size and viewing condition (std::invalid_argument otherwise).
 std::vector<double> meanFlips(const Image& test, const std::vector<const FlipReference*>& targets);
 
-/// The separable convolution behind both pipelines, exposed for tests: convolveY(convolveX(in, kx), ky) of a
+/// The separable convolution behind both pipelines, exposed for tests: kx along x, then ky along y, of a
 /// w x h row-major plane, kernels of odd length centred on the pixel, indices clamped at the edges; every
 /// output is the textbook sum over k = -r .. r in that order, started at 0, bit for bit.
 std::vector<double> convolveClamped(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,

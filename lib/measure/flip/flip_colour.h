@@ -21,19 +21,24 @@ inline std::array<T, 3> rgbToXyz(const T& r, const T& g, const T& b) {
           0.0193339 * r + 0.1191920 * g + 0.9503041 * b};
 }
 inline V3 rgbToXyz(const V3& c) { return rgbToXyz(c[0], c[1], c[2]); }
-inline V3 xyzToRgb(const V3& c) {
-  return {3.2404542 * c[0] - 1.5371385 * c[1] - 0.4985314 * c[2],
-          -0.9692660 * c[0] + 1.8760108 * c[1] + 0.0415560 * c[2],
-          0.0556434 * c[0] - 0.2040259 * c[1] + 1.0572252 * c[2]};
+template <class T>
+inline std::array<T, 3> xyzToRgb(const T& x, const T& y, const T& z) {
+  return {3.2404542 * x - 1.5371385 * y - 0.4985314 * z, -0.9692660 * x + 1.8760108 * y + 0.0415560 * z,
+          0.0556434 * x - 0.2040259 * y + 1.0572252 * z};
 }
+inline V3 xyzToRgb(const V3& c) { return xyzToRgb(c[0], c[1], c[2]); }
 // The opponent space YCxCz: CIELab without the cube root (linear in XYZ).
-inline V3 xyzToYcc(const V3& c) {
-  return {116 * c[1] / kWy - 16, 500 * (c[0] / kWx - c[1] / kWy), 200 * (c[1] / kWy - c[2] / kWz)};
+template <class T>
+inline std::array<T, 3> xyzToYcc(const T& x, const T& y, const T& z) {
+  return {116.0 * y / kWy - 16.0, 500.0 * (x / kWx - y / kWy), 200.0 * (y / kWy - z / kWz)};
 }
-inline V3 yccToXyz(const V3& c) {
-  const double y = (c[0] + 16) / 116;
-  return {kWx * (c[1] / 500 + y), kWy * y, kWz * (y - c[2] / 200)};
+inline V3 xyzToYcc(const V3& c) { return xyzToYcc(c[0], c[1], c[2]); }
+template <class T>
+inline std::array<T, 3> yccToXyz(const T& l, const T& cx, const T& cz) {
+  const T y = (l + 16.0) / 116.0;
+  return {kWx * (cx / 500.0 + y), kWy * y, kWz * (y - cz / 200.0)};
 }
+inline V3 yccToXyz(const V3& c) { return yccToXyz(c[0], c[1], c[2]); }
 /// CIELab's f below its threshold (the linear part).
 template <class T>
 inline T labLinear(const T& t) {

@@ -15,6 +15,7 @@
 // (documented tolerance: 1e-6 per image mean and per pixel, docs/flip.md, tests/unit/measure/flip/flip_test).
 #pragma once
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "core/image.h"
@@ -28,6 +29,20 @@ struct FlipLinear {
   std::vector<double> gx, gy, px, py;      ///< normalised edge (first) and point (second derivative) responses
 };
 FlipLinear flipLinear(const Image& img, double ppd);
+
+/// Stage 1's kernels at ppd pixels per degree. A channel's CSF is (A1 e1(x) e1(y) + A2 e2(x) e2(y)) / total;
+/// the edge planes are the sums with d1 along one axis and g along the other divided by edge, the point planes
+/// the sums with d2p divided by pos plus those with d2n divided by neg.
+struct FlipCsfKernel {
+  std::vector<double> e1, e2;
+  double A1, A2, total;
+};
+std::array<FlipCsfKernel, 3> flipCsfKernels(double ppd);
+struct FlipFeatureKernels {
+  std::vector<double> g, d1, d2p, d2n;
+  double edge, pos, neg;
+};
+FlipFeatureKernels flipFeatureKernels(double ppd);
 
 /// Stage 2 of one image (row-major planes).
 struct FlipPlanes {
@@ -45,8 +60,10 @@ void flipCombineFast(const FlipPlanes& test, const FlipPlanes& ref, float* out);
 /// The largest colour difference of the gamut, pure green against pure blue, raised to 0.7 (the definition's).
 double flipColourMax();
 
-/// The separable passes of flip_convolve.cpp (convolveClamped = convolveY(convolveX(.))).
-std::vector<double> convolveX(const std::vector<double>& in, int w, int h, const std::vector<double>& kx);
-std::vector<double> convolveY(const std::vector<double>& in, int w, int h, const std::vector<double>& ky);
+/// convolveClamped(in, w, h, kx, *ky[j]) for every j, one output row y = 0 .. h - 1 at a time: sink(y, rows) gets
+/// row y of each (rows[j], valid during the call), the same bits, without a plane for any of them.
+void convolveClampedRows(const std::vector<double>& in, int w, int h, const std::vector<double>& kx,
+                         const std::vector<const std::vector<double>*>& ky,
+                         const std::function<void(int y, const double* const* rows)>& sink);
 
 }  // namespace aliaslab
