@@ -5,8 +5,9 @@
 # 4096 spp (64 x the highest spp), the fixed grid over 8 camera offsets, three
 # targets (area, gaussian:1.5, lanczos:3: one CSV row per configuration and
 # target), no per-configuration images: `sweep --preset presented`, sharded.
-# 46 minutes on 2 otherwise idle cores from an empty cache (measured with
-# its phases in results/study_speed.md).
+# About 43 minutes on 2 otherwise idle cores from an empty cache: 14 of
+# references, 29 of rows (measured with their phases in
+# results/study_speed.md).
 #
 #   bash experiments/run_presented_study.sh [N] [extra sweep options...]
 #       GNU parallel on this machine: N shards (default: the number of cores),
